@@ -1,0 +1,58 @@
+# Finds raylab's libraries. Where one is missing, the error says how to install it on each system.
+
+function(raylab_missing what debian homebrew vcpkg)
+  message(FATAL_ERROR "raylab needs ${what}, which was not found. Install it with\n"
+                      "  Debian/Ubuntu: sudo apt-get install ${debian}\n"
+                      "  macOS:         brew install ${homebrew}\n"
+                      "  Windows:       vcpkg install ${vcpkg}   (then configure with the vcpkg toolchain file)\n")
+endfunction()
+
+find_package(glm CONFIG QUIET)
+if(NOT TARGET glm::glm)
+  raylab_missing("GLM (vector maths)" libglm-dev glm glm)
+endif()
+
+find_package(tomlplusplus CONFIG QUIET)
+if(NOT TARGET tomlplusplus::tomlplusplus)
+  raylab_missing("toml++ (scene files)" libtomlplusplus-dev tomlplusplus tomlplusplus)
+endif()
+
+find_package(CLI11 CONFIG QUIET)
+if(NOT TARGET CLI11::CLI11)
+  raylab_missing("CLI11 (command line)" libcli11-dev cli11 cli11)
+endif()
+
+# stb_image_write / stb_image: Debian ships them compiled (pkg-config stb); elsewhere they are
+# header-only and framework/src/stb_implementation.cpp compiles them.
+find_package(PkgConfig QUIET)
+if(PkgConfig_FOUND)
+  pkg_check_modules(STB QUIET IMPORTED_TARGET stb)
+endif()
+if(STB_FOUND)
+  add_library(raylab_stb INTERFACE)
+  target_link_libraries(raylab_stb INTERFACE PkgConfig::STB)
+else()
+  find_path(STB_INCLUDE_DIR stb_image_write.h PATH_SUFFIXES stb)
+  if(NOT STB_INCLUDE_DIR)
+    raylab_missing("stb (image files)" libstb-dev "stb" stb)
+  endif()
+  add_library(raylab_stb STATIC ${CMAKE_SOURCE_DIR}/framework/src/stb_implementation.cpp)
+  target_include_directories(raylab_stb SYSTEM PUBLIC ${STB_INCLUDE_DIR})
+endif()
+
+if(BUILD_TESTING)
+  find_package(doctest CONFIG QUIET)
+  if(NOT TARGET doctest::doctest)
+    raylab_missing("doctest (tests; or configure with -DBUILD_TESTING=OFF)" doctest-dev doctest doctest)
+  endif()
+endif()
+
+# Our own code compiles without warnings at these levels.
+add_library(raylab_warnings INTERFACE)
+if(MSVC)
+  target_compile_options(raylab_warnings INTERFACE /W4 /permissive-)
+else()
+  target_compile_options(raylab_warnings INTERFACE -Wall -Wextra -Wpedantic)
+  # __FILE__ relative to the source tree: "lab 2 not done yet: write ... in labs/lab2_.../file.cpp:12".
+  target_compile_options(raylab_warnings INTERFACE -fmacro-prefix-map=${CMAKE_SOURCE_DIR}/=)
+endif()

@@ -1,0 +1,78 @@
+#include "build_info.h"
+#include "commands.h"
+
+#include "raylab/figure.h"
+#include "raylab/image_io.h"
+#include "raylab/terminal.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+namespace raylab::cli {
+
+namespace {
+
+// Writes the figure's PNG and prints its line; returns false when the figure is not usable.
+bool report(const SceneDescription& d, const FigureResult& r, const std::filesystem::path& file) {
+    switch (r.status) {
+    case FigureResult::Status::NotDoneYet:
+        std::printf("  %-24s TODO    %s\n", d.id.c_str(), r.message.c_str());
+        return true;
+    case FigureResult::Status::Failed:
+        std::printf("  %-24s FAILED  %s\n", d.id.c_str(), r.message.c_str());
+        return false;
+    case FigureResult::Status::Rendered: break;
+    }
+    std::uint64_t nonFinite = 0;
+    writePng(file, quantize(*r.image, &nonFinite));
+    char speed[64] = "";
+    if (d.picture != Picture::Gradient && r.stats.seconds > 0.)
+        std::snprintf(speed, sizeof speed, "%8.1f Mrays/s", double(r.stats.primaryRays) / r.stats.seconds * 1e-6);
+    std::printf("  %-24s %7.3f s %s  -> %s\n", d.id.c_str(), r.stats.seconds, speed, file.string().c_str());
+    if (nonFinite > 0) {
+        std::printf("  %-24s FAILED  %llu pixels are NaN or infinite (magenta in the PNG)\n", d.id.c_str(),
+                    static_cast<unsigned long long>(nonFinite));
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+int runFigures(const FiguresOptions& o) {
+    std::vector<SceneDescription> scenes = loadSceneFolder(o.scenes);
+    for (const std::string& id : o.only)
+        if (std::none_of(scenes.begin(), scenes.end(), [&](const auto& d) { return d.id == id; })) {
+            std::string known;
+            for (const auto& d : scenes) known += " " + d.id;
+            throw std::invalid_argument("no figure '" + id + "' in " + o.scenes.string() + "; the figures are:" + known);
+        }
+    std::erase_if(scenes, [&](const SceneDescription& d) {
+        const bool wanted = o.only.empty() || std::find(o.only.begin(), o.only.end(), d.id) != o.only.end();
+        return !wanted || (o.lab != 0 && d.lab != o.lab);
+    });
+
+    std::printf("raylab %s build (%s) -> %s\n", build::kImpl, build::kLabOrigins, o.out.string().c_str());
+    int failed = 0, todo = 0;
+    const RenderOptions renderOptions{o.threads, stderrIsInteractive()};
+    for (const SceneDescription& d : scenes) {
+        const FigureResult r = renderScene(d, renderOptions);
+        if (!report(d, r, o.out / (d.id + ".png"))) ++failed;
+        if (r.status == FigureResult::Status::NotDoneYet) ++todo;
+    }
+    std::printf("%zu figures: %zu rendered, %d waiting for a lab not done yet, %d failed\n", scenes.size(),
+                scenes.size() - std::size_t(todo + failed), todo, failed);
+    return failed == 0 ? 0 : 1;
+}
+
+int runRender(const std::filesystem::path& scene, std::filesystem::path out, int threads) {
+    const SceneDescription d = loadSceneFile(scene);
+    if (out.empty()) out = std::filesystem::path("out") / (d.id + ".png");
+    std::printf("%s: %d x %d, %s, %d samples per pixel (%s sampler)\n", scene.string().c_str(), d.width, d.height,
+                std::string(toString(d.picture)).c_str(), d.samples, std::string(toString(d.sampler)).c_str());
+    const FigureResult r = renderScene(d, RenderOptions{threads, stderrIsInteractive()});
+    return report(d, r, out) && r.status == FigureResult::Status::Rendered ? 0 : 1;
+}
+
+} // namespace raylab::cli

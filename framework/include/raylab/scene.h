@@ -1,0 +1,23 @@
+#pragma once
+// The objects of a picture and what the rays that miss them see.
+
+#include "raylab/sphere_geometry.h"
+
+#include <limits>
+#include <vector>
+
+namespace raylab {
+
+struct Scene {
+    std::vector<SphereGeometry> spheres;
+    Color background{0.5f, 0.5f, 0.5f};
+
+    // The nearest hit over all spheres with t in [tMin, tMax]; sets hit.object.
+    bool intersect(const Ray& ray, HitRecord& hit, float tMin = 0.f,
+                   float tMax = std::numeric_limits<float>::infinity()) const;
+};
+
+// The course's scene "tp1": one blue sphere of radius 1 at (0, 0, 3) on a grey background.
+Scene makeTp1Scene();
+
+} // namespace raylab

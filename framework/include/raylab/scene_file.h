@@ -1,0 +1,60 @@
+#pragma once
+// Scene files: a TOML file says what to render and which effects it needs (scenes/README.md).
+
+#include "raylab/sampler.h"
+#include "raylab/scene.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+// What the pixels show; each asks for no more work than it needs.
+enum class Picture {
+    Gradient,          // lab 1: no camera, no rays
+    Directions,        // lab 2: the ray directions, no objects
+    Flat,              // lab 3: hit or miss, no normals
+    PlaceholderNormal, // lab 3: cosine shading with a constant normal
+    Cosine,            // lab 3: cosine shading with the true normal
+};
+
+struct CameraDescription {
+    bool lookAt = false; // false: the default camera (origin, looking along +z, up +y)
+    glm::vec3 position{0.f, 0.f, 0.f};
+    glm::vec3 target{0.f, 0.f, 1.f};
+    glm::vec3 up{0.f, 1.f, 0.f};
+    float fovy = 60.f;
+};
+
+struct SceneDescription {
+    std::filesystem::path file;
+    std::string id; // the file name without .toml: the figure id
+    int lab = 0;    // the lab whose code the picture needs most; 0 when none
+    std::string title;
+    int width = 600;
+    int height = 400;
+    CameraDescription camera;
+    Scene scene;
+    Picture picture = Picture::Cosine;
+    int samples = 1;
+    SamplerKind sampler = SamplerKind::Center;
+    std::uint64_t seed = 0;
+};
+
+// A scene file that cannot be used: what() is "FILE:LINE: [section] key: problem".
+class SceneError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+SceneDescription loadSceneFile(const std::filesystem::path& file);
+
+// Every *.toml of a folder, in the order of their lab, then of their id.
+std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folder);
+
+std::string_view toString(Picture picture);
+
+} // namespace raylab

@@ -1,0 +1,33 @@
+#pragma once
+// A width x height image of linear RGB floats. Pixel (i, j) is column i from the left, row j from the top.
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace raylab {
+
+using Color = glm::vec3;
+
+class Texture {
+public:
+    Texture(int width, int height);
+
+    int width() const { return m_width; }
+    int height() const { return m_height; }
+
+    // Throws std::out_of_range naming (i, j) and the size when the pixel is outside the image.
+    void setPixel(int i, int j, const Color& color);
+    Color getPixel(int i, int j) const;
+
+    const std::vector<Color>& pixels() const { return m_pixels; }
+
+private:
+    void checkInside(int i, int j) const;
+
+    int m_width;
+    int m_height;
+    std::vector<Color> m_pixels; // row-major: index j * width + i
+};
+
+} // namespace raylab

@@ -1,0 +1,227 @@
+#include "raylab/scene_file.h"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <optional>
+#include <string_view>
+
+namespace raylab {
+
+namespace {
+
+constexpr Picture kPictures[] = {Picture::Gradient, Picture::Directions, Picture::Flat, Picture::PlaceholderNormal,
+                                 Picture::Cosine};
+
+// Reads one file, naming the file, the line and the key in every error.
+class Reader {
+public:
+    explicit Reader(std::filesystem::path file) : m_file(std::move(file)) {}
+
+    [[noreturn]] void fail(const toml::node* node, std::string_view where, const std::string& problem) const {
+        const int line = node != nullptr ? int(node->source().begin.line) : 0;
+        std::string message = m_file.string();
+        if (line > 0) message += ":" + std::to_string(line);
+        throw SceneError(message + ": " + std::string(where) + ": " + problem);
+    }
+
+    void onlyKeys(const toml::table& table, std::string_view section, std::initializer_list<std::string_view> allowed) const {
+        for (auto&& [key, node] : table) {
+            if (std::find(allowed.begin(), allowed.end(), key.str()) == allowed.end()) {
+                std::string known;
+                for (std::string_view k : allowed) known += (known.empty() ? "" : ", ") + std::string(k);
+                fail(&node, std::string(section) + std::string(key.str()), "unknown key (known keys: " + known + ")");
+            }
+        }
+    }
+
+    std::optional<double> number(const toml::table& table, std::string_view section, std::string_view key) const {
+        const toml::node* node = table.get(key);
+        if (node == nullptr) return std::nullopt;
+        std::optional<double> value;
+        if (auto f = node->as_floating_point()) value = f->get();
+        else if (auto i = node->as_integer()) value = double(i->get());
+        else fail(node, name(section, key), "expected a number, got " + typeName(*node));
+        if (!std::isfinite(*value)) fail(node, name(section, key), "must be finite, got " + std::to_string(*value));
+        return value;
+    }
+
+    std::optional<std::int64_t> integer(const toml::table& table, std::string_view section, std::string_view key,
+                                        std::int64_t lo, std::int64_t hi) const {
+        const toml::node* node = table.get(key);
+        if (node == nullptr) return std::nullopt;
+        auto i = node->as_integer();
+        if (!i) fail(node, name(section, key), "expected an integer, got " + typeName(*node));
+        if (i->get() < lo || i->get() > hi)
+            fail(node, name(section, key),
+                 std::to_string(i->get()) + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        return i->get();
+    }
+
+    std::optional<std::string> string(const toml::table& table, std::string_view section, std::string_view key) const {
+        const toml::node* node = table.get(key);
+        if (node == nullptr) return std::nullopt;
+        auto s = node->as_string();
+        if (!s) fail(node, name(section, key), "expected a string, got " + typeName(*node));
+        return s->get();
+    }
+
+    std::optional<glm::vec3> vec3(const toml::table& table, std::string_view section, std::string_view key) const {
+        const toml::node* node = table.get(key);
+        if (node == nullptr) return std::nullopt;
+        auto array = node->as_array();
+        if (!array || array->size() != 3)
+            fail(node, name(section, key), "expected an array of 3 numbers such as [0.0, 1.0, 0.0]");
+        glm::vec3 v;
+        for (int k = 0; k < 3; ++k) {
+            const toml::node& item = *array->get(std::size_t(k));
+            if (auto f = item.as_floating_point()) v[k] = float(f->get());
+            else if (auto i = item.as_integer()) v[k] = float(i->get());
+            else fail(node, name(section, key), "item " + std::to_string(k) + " is " + typeName(item) + ", not a number");
+            if (!std::isfinite(v[k])) fail(node, name(section, key), "item " + std::to_string(k) + " is not finite");
+        }
+        return v;
+    }
+
+    const toml::table* table(const toml::table& parent, std::string_view key) const {
+        const toml::node* node = parent.get(key);
+        if (node == nullptr) return nullptr;
+        if (!node->is_table()) fail(node, key, "expected a table [" + std::string(key) + "]");
+        return node->as_table();
+    }
+
+    static std::string name(std::string_view section, std::string_view key) {
+        return std::string(section) + std::string(key);
+    }
+
+    static std::string typeName(const toml::node& node) {
+        switch (node.type()) {
+        case toml::node_type::string: return "a string";
+        case toml::node_type::integer: return "an integer";
+        case toml::node_type::floating_point: return "a number";
+        case toml::node_type::boolean: return "a boolean";
+        case toml::node_type::array: return "an array";
+        case toml::node_type::table: return "a table";
+        default: return "a date or time";
+        }
+    }
+
+private:
+    std::filesystem::path m_file;
+};
+
+void readCamera(const Reader& r, const toml::table& t, CameraDescription& camera) {
+    r.onlyKeys(t, "[camera] ", {"position", "look_at", "up", "fovy"});
+    if (auto fovy = r.number(t, "[camera] ", "fovy")) {
+        if (!(*fovy > 0. && *fovy < 180.))
+            r.fail(t.get("fovy"), "[camera] fovy", std::to_string(*fovy) + " degrees has no meaning; it must be strictly between 0 and 180");
+        camera.fovy = float(*fovy);
+    }
+    const auto position = r.vec3(t, "[camera] ", "position");
+    const auto target = r.vec3(t, "[camera] ", "look_at");
+    const auto up = r.vec3(t, "[camera] ", "up");
+    if (!position && !target && !up) return; // the default frame with this fovy
+    if (!position || !target)
+        r.fail(&t, "[camera]", "a lookAt camera needs both position and look_at (up defaults to [0, 1, 0])");
+    camera.lookAt = true;
+    camera.position = *position;
+    camera.target = *target;
+    if (up) camera.up = *up;
+}
+
+void readSpheres(const Reader& r, const toml::node& node, Scene& scene) {
+    const toml::array* spheres = node.as_array();
+    if (spheres == nullptr || !spheres->is_array_of_tables())
+        r.fail(&node, "[[sphere]]", "expected [[sphere]] tables");
+    for (const toml::node& item : *spheres) {
+        const toml::table& t = *item.as_table();
+        r.onlyKeys(t, "[[sphere]] ", {"center", "radius", "color"});
+        const auto center = r.vec3(t, "[[sphere]] ", "center");
+        const auto radius = r.number(t, "[[sphere]] ", "radius");
+        if (!center || !radius) r.fail(&t, "[[sphere]]", "a sphere needs a center and a radius");
+        if (!(*radius > 0.)) r.fail(t.get("radius"), "[[sphere]] radius", std::to_string(*radius) + " must be positive");
+        scene.spheres.emplace_back(*center, float(*radius), r.vec3(t, "[[sphere]] ", "color").value_or(Color(1.f)));
+    }
+}
+
+} // namespace
+
+std::string_view toString(Picture picture) {
+    switch (picture) {
+    case Picture::Gradient: return "gradient";
+    case Picture::Directions: return "directions";
+    case Picture::Flat: return "flat";
+    case Picture::PlaceholderNormal: return "placeholder_normal";
+    case Picture::Cosine: return "cosine";
+    }
+    return "?";
+}
+
+SceneDescription loadSceneFile(const std::filesystem::path& file) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(file, error)) throw SceneError(file.string() + ": no such scene file");
+    toml::table root;
+    try {
+        root = toml::parse_file(file.string());
+    } catch (const toml::parse_error& e) {
+        throw SceneError(file.string() + ":" + std::to_string(e.source().begin.line) + ": not valid TOML: " +
+                         std::string(e.description()));
+    }
+    const Reader r(file);
+    r.onlyKeys(root, "", {"figure", "image", "camera", "render", "background", "sphere"});
+
+    SceneDescription d;
+    d.file = file;
+    d.id = file.stem().string();
+    d.scene.spheres.clear();
+    if (const toml::table* t = r.table(root, "figure")) {
+        r.onlyKeys(*t, "[figure] ", {"lab", "title"});
+        d.lab = int(r.integer(*t, "[figure] ", "lab", 0, 99).value_or(0));
+        d.title = r.string(*t, "[figure] ", "title").value_or("");
+    }
+    if (const toml::table* t = r.table(root, "image")) {
+        r.onlyKeys(*t, "[image] ", {"width", "height"});
+        d.width = int(r.integer(*t, "[image] ", "width", 1, 16384).value_or(d.width));
+        d.height = int(r.integer(*t, "[image] ", "height", 1, 16384).value_or(d.height));
+    }
+    if (const toml::table* t = r.table(root, "camera")) readCamera(r, *t, d.camera);
+    if (const toml::table* t = r.table(root, "render")) {
+        r.onlyKeys(*t, "[render] ", {"shading", "samples", "sampler", "seed"});
+        if (auto shading = r.string(*t, "[render] ", "shading")) {
+            auto found = std::find_if(std::begin(kPictures), std::end(kPictures),
+                                      [&](Picture p) { return toString(p) == *shading; });
+            if (found == std::end(kPictures))
+                r.fail(t->get("shading"), "[render] shading",
+                       "'" + *shading + "' is not one of gradient, directions, flat, placeholder_normal, cosine");
+            d.picture = *found;
+        }
+        d.samples = int(r.integer(*t, "[render] ", "samples", 1, 1 << 20).value_or(1));
+        if (auto sampler = r.string(*t, "[render] ", "sampler")) {
+            auto kind = samplerKindFromString(*sampler);
+            if (!kind) r.fail(t->get("sampler"), "[render] sampler", "'" + *sampler + "' is not one of center, random, stratified");
+            d.sampler = *kind;
+        } else if (d.samples > 1) {
+            d.sampler = SamplerKind::Random;
+        }
+        d.seed = std::uint64_t(r.integer(*t, "[render] ", "seed", 0, INT64_MAX).value_or(0));
+    }
+    if (auto background = r.vec3(root, "", "background")) d.scene.background = *background;
+    if (const toml::node* spheres = root.get("sphere")) readSpheres(r, *spheres, d.scene);
+    return d;
+}
+
+std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folder) {
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error)) throw SceneError(folder.string() + ": no such scene folder");
+    std::vector<SceneDescription> scenes;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+        if (entry.path().extension() == ".toml") scenes.push_back(loadSceneFile(entry.path()));
+    std::sort(scenes.begin(), scenes.end(), [](const auto& a, const auto& b) {
+        return a.lab != b.lab ? a.lab < b.lab : a.id < b.id;
+    });
+    return scenes;
+}
+
+} // namespace raylab
