@@ -15,7 +15,7 @@ int runBench(const std::filesystem::path& scenes, int threads, int repeats) {
     SceneDescription d = loadSceneFile(scenes / "lab5_antialiased.toml");
     const int allThreads = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
     std::printf("raylab bench: %s, %d x %d, %s sampler, median of %d renders\n", d.id.c_str(), d.width, d.height,
-                std::string(toString(d.sampler)).c_str(), repeats);
+                std::string(samplerName(d.sampler)).c_str(), repeats);
     std::printf("  %8s %8s %12s %16s\n", "samples", "threads", "seconds", "Mrays/s");
     for (int samples : {1, 4, 16, 64}) {
         for (int t : {1, allThreads}) {

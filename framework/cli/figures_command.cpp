@@ -70,7 +70,7 @@ int runRender(const std::filesystem::path& scene, std::filesystem::path out, int
     const SceneDescription d = loadSceneFile(scene);
     if (out.empty()) out = std::filesystem::path("out") / (d.id + ".png");
     std::printf("%s: %d x %d, %s, %d samples per pixel (%s sampler)\n", scene.string().c_str(), d.width, d.height,
-                std::string(toString(d.picture)).c_str(), d.samples, std::string(toString(d.sampler)).c_str());
+                std::string(pictureName(d.picture)).c_str(), d.samples, std::string(samplerName(d.sampler)).c_str());
     const FigureResult r = renderScene(d, RenderOptions{threads, stderrIsInteractive()});
     return report(d, r, out) && r.status == FigureResult::Status::Rendered ? 0 : 1;
 }

@@ -4,7 +4,7 @@
 
 namespace raylab {
 
-std::string_view toString(SamplerKind kind) {
+std::string_view samplerName(SamplerKind kind) {
     switch (kind) {
     case SamplerKind::Center: return "center";
     case SamplerKind::Random: return "random";
@@ -15,7 +15,7 @@ std::string_view toString(SamplerKind kind) {
 
 std::optional<SamplerKind> samplerKindFromString(std::string_view name) {
     for (SamplerKind kind : {SamplerKind::Center, SamplerKind::Random, SamplerKind::Stratified})
-        if (toString(kind) == name) return kind;
+        if (samplerName(kind) == name) return kind;
     return std::nullopt;
 }
 

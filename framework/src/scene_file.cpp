@@ -148,7 +148,7 @@ void readSpheres(const Reader& r, const toml::node& node, Scene& scene) {
 
 } // namespace
 
-std::string_view toString(Picture picture) {
+std::string_view pictureName(Picture picture) {
     switch (picture) {
     case Picture::Gradient: return "gradient";
     case Picture::Directions: return "directions";
@@ -191,7 +191,7 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
         r.onlyKeys(*t, "[render] ", {"shading", "samples", "sampler", "seed"});
         if (auto shading = r.string(*t, "[render] ", "shading")) {
             auto found = std::find_if(std::begin(kPictures), std::end(kPictures),
-                                      [&](Picture p) { return toString(p) == *shading; });
+                                      [&](Picture p) { return pictureName(p) == *shading; });
             if (found == std::end(kPictures))
                 r.fail(t->get("shading"), "[render] shading",
                        "'" + *shading + "' is not one of gradient, directions, flat, placeholder_normal, cosine");

@@ -17,7 +17,7 @@ enum class SamplerKind {
     Stratified, // one jittered point in each cell of a grid of about N cells
 };
 
-std::string_view toString(SamplerKind kind);
+std::string_view samplerName(SamplerKind kind);
 std::optional<SamplerKind> samplerKindFromString(std::string_view name);
 
 class PixelSampler {

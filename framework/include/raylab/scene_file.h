@@ -55,6 +55,6 @@ SceneDescription loadSceneFile(const std::filesystem::path& file);
 // Every *.toml of a folder, in the order of their lab, then of their id.
 std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folder);
 
-std::string_view toString(Picture picture);
+std::string_view pictureName(Picture picture);
 
 } // namespace raylab

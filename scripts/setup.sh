@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs what raylab needs on Debian or Ubuntu (as root, or through sudo), and says what to
+# install elsewhere. Safe to run again: it installs only what is missing.
+set -euo pipefail
+
+packages=(cmake g++ make pkg-config libglm-dev libstb-dev doctest-dev libtomlplusplus-dev libcli11-dev)
+
+if ! command -v dpkg-query >/dev/null 2>&1; then
+  cat <<'TXT'
+setup.sh installs packages on Debian and Ubuntu only. Elsewhere, install:
+  macOS (Homebrew): brew install cmake glm stb doctest tomlplusplus cli11
+  Windows (vcpkg):  vcpkg install glm stb doctest tomlplusplus cli11
+then run the cmake commands of README.md.
+TXT
+  exit 0
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+echo "setup: all packages are installed"

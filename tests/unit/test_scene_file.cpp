@@ -1,0 +1,128 @@
+#include "raylab/scene_file.h"
+
+#include <doctest/doctest.h>
+
+#include <fstream>
+
+using namespace raylab;
+
+namespace {
+
+// Writes a scene file in the temporary folder and loads it.
+SceneDescription loadText(const std::string& text, const std::string& name = "scene.toml") {
+    const auto file = std::filesystem::temp_directory_path() / "raylab_scene_tests" / name;
+    std::filesystem::create_directories(file.parent_path());
+    std::ofstream(file) << text;
+    return loadSceneFile(file);
+}
+
+std::string errorOf(const std::string& text) {
+    try {
+        loadText(text);
+    } catch (const SceneError& e) {
+        const std::string message = e.what();
+        return message.substr(message.find("scene.toml"));
+    }
+    return "no error";
+}
+
+} // namespace
+
+TEST_SUITE("scene files") {
+
+TEST_CASE("every figure of the labs is a scene file") {
+    const auto scenes = loadSceneFolder(RAYLAB_SCENES_DIR);
+    std::vector<std::string> ids;
+    for (const auto& d : scenes) ids.push_back(d.id);
+    CHECK(ids == std::vector<std::string>{"lab1_gradient", "lab2_directions", "lab3_cosine", "lab3_flat",
+                                          "lab3_placeholder_normal", "lab4_a", "lab4_b", "lab4_c", "lab4_d",
+                                          "lab5_antialiased"});
+    for (const auto& d : scenes) {
+        CHECK(d.width == 600);
+        CHECK(d.height == 400);
+    }
+    CHECK(scenes.back().samples == 32);
+    CHECK(scenes.back().sampler == SamplerKind::Random);
+}
+
+TEST_CASE("a full scene file") {
+    const SceneDescription d = loadText(R"(
+background = [0.1, 0.2, 0.3]
+[figure]
+lab = 4
+title = "t"
+[image]
+width = 64
+height = 32
+[camera]
+position = [1, 2, 3]
+look_at = [0, 0, 0]
+fovy = 45
+[render]
+shading = "flat"
+samples = 4
+sampler = "stratified"
+seed = 9
+[[sphere]]
+center = [0, 0, 1]
+radius = 0.5
+color = [1, 0, 0]
+[[sphere]]
+center = [0, 0, 5]
+radius = 2
+)");
+    CHECK(d.id == "scene");
+    CHECK(d.lab == 4);
+    CHECK(d.width == 64);
+    CHECK(d.height == 32);
+    CHECK(d.camera.lookAt);
+    CHECK(d.camera.position == glm::vec3(1.f, 2.f, 3.f));
+    CHECK(d.camera.up == glm::vec3(0.f, 1.f, 0.f));
+    CHECK(d.camera.fovy == 45.f);
+    CHECK(d.picture == Picture::Flat);
+    CHECK(d.samples == 4);
+    CHECK(d.sampler == SamplerKind::Stratified);
+    CHECK(d.seed == 9);
+    CHECK(d.scene.background == Color(0.1f, 0.2f, 0.3f));
+    REQUIRE(d.scene.spheres.size() == 2);
+    CHECK(d.scene.spheres[1].radius() == 2.f);
+    CHECK(d.scene.spheres[1].color() == Color(1.f));
+}
+
+TEST_CASE("an empty file is the default camera on an empty scene") {
+    const SceneDescription d = loadText("");
+    CHECK_FALSE(d.camera.lookAt);
+    CHECK(d.scene.spheres.empty());
+    CHECK(d.samples == 1);
+    CHECK(d.sampler == SamplerKind::Center);
+}
+
+TEST_CASE("errors name the file, the line and the key") {
+    CHECK(errorOf("[camera]\nfovy = 60\nzoom = 2\n") ==
+          "scene.toml:3: [camera] zoom: unknown key (known keys: position, look_at, up, fovy)");
+    CHECK(errorOf("[image]\nwidth = \"600\"\n") == "scene.toml:2: [image] width: expected an integer, got a string");
+    CHECK(errorOf("[image]\nwidth = 0\n") == "scene.toml:2: [image] width: 0 is out of range [1, 16384]");
+    CHECK(errorOf("[camera]\nfovy = 180\n") ==
+          "scene.toml:2: [camera] fovy: 180.000000 degrees has no meaning; it must be strictly between 0 and 180");
+    CHECK(errorOf("[camera]\nfovy = nan\n") == "scene.toml:2: [camera] fovy: must be finite, got nan");
+    CHECK(errorOf("[[sphere]]\ncenter = [0, 0]\nradius = 1\n") ==
+          "scene.toml:2: [[sphere]] center: expected an array of 3 numbers such as [0.0, 1.0, 0.0]");
+    CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\n") == "scene.toml:1: [[sphere]]: a sphere needs a center and a radius");
+    CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\nradius = -1\n") == "scene.toml:3: [[sphere]] radius: -1.000000 must be positive");
+    CHECK(errorOf("[render]\nshading = \"phong\"\n") ==
+          "scene.toml:2: [render] shading: 'phong' is not one of gradient, directions, flat, placeholder_normal, cosine");
+    CHECK(errorOf("[render]\nsampler = \"magic\"\n") ==
+          "scene.toml:2: [render] sampler: 'magic' is not one of center, random, stratified");
+    CHECK(errorOf("[camera]\nlook_at = [0, 0, 1]\n") ==
+          "scene.toml:1: [camera]: a lookAt camera needs both position and look_at (up defaults to [0, 1, 0])");
+    CHECK(errorOf("[image\nwidth = 3\n").rfind("scene.toml:1: not valid TOML", 0) == 0);
+    CHECK(errorOf("colour = 3\n") ==
+          "scene.toml:1: colour: unknown key (known keys: figure, image, camera, render, background, sphere)");
+}
+
+TEST_CASE("a missing file or folder is named") {
+    CHECK_THROWS_WITH_AS(loadSceneFile("no/such.toml"), "no/such.toml: no such scene file", SceneError);
+    CHECK_THROWS_WITH_AS(loadSceneFolder("no/such/dir"), "no/such/dir: no such scene folder", SceneError);
+}
+
+}
