@@ -3,11 +3,14 @@
 #include "raylab/figure.h"
 
 #include <algorithm>
+#include <memory>
 #include <cstdio>
 #include <thread>
 #include <vector>
 
 namespace raylab::cli {
+
+namespace {
 
 // Primary rays per second on lab 5's scene: the median of `repeats` renders for each sample count,
 // on one thread and on all of them.
@@ -37,6 +40,19 @@ int runBench(const std::filesystem::path& scenes, int threads, int repeats) {
         }
     }
     return 0;
+}
+
+} // namespace
+
+void addBenchCommand(CLI::App& app, Context& context) {
+    auto repeats = std::make_shared<int>(3);
+    CLI::App* bench = app.add_subcommand("bench", "primary rays per second on lab 5's scene at 1, 4, 16, 64 samples");
+    context.addImplOption(bench);
+    bench->add_option("--repeats", *repeats, "renders per measurement (the median is shown)")->check(CLI::Range(1, 100));
+    context.addRenderOptions(bench);
+    bench->callback([&context, repeats] {
+        if (!context.ranInOtherImpl()) context.exitStatus = runBench(context.scenes, context.threads, *repeats);
+    });
 }
 
 } // namespace raylab::cli

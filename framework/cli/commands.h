@@ -1,31 +1,31 @@
 #pragma once
-// The raylab subcommands. Each returns the process exit status.
+// The raylab subcommands. Each file adds its own subcommands to the program's CLI11 app; their
+// callbacks set the exit status in the shared context.
 
-#include <filesystem>
+#include <CLI/CLI.hpp>
+
 #include <string>
-#include <vector>
 
 namespace raylab::cli {
 
-struct FiguresOptions {
-    std::filesystem::path scenes;   // folder of figure scene files
-    std::filesystem::path out;      // where DIR/<id>.png go
-    std::vector<std::string> only;  // figure ids; empty: all
-    int lab = 0;                    // only this lab's figures; 0: all
-    int threads = 0;
+struct Context {
+    int argc = 0;
+    char** argv = nullptr;
+    std::string impl;   // whose lab code: "student" or "reference" (--impl)
+    int threads = 0;    // --threads; 0: one per core
+    std::string scenes; // --scenes: the folder of figure scene files
+    int exitStatus = 0;
+
+    // Adds --threads and --scenes to a subcommand.
+    void addRenderOptions(CLI::App* command);
+    // Adds --impl to a subcommand.
+    void addImplOption(CLI::App* command);
+    // True when --impl names the other build: the command has then been run by that program
+    // (the student and the reference code define the same functions, so each has its own program).
+    bool ranInOtherImpl();
 };
 
-// Renders figures; prints a line per figure. 1 if a figure failed or has NaN pixels, else 0
-// (a figure waiting for a lab not done yet is reported, not a failure).
-int runFigures(const FiguresOptions& options);
-
-// Renders one scene file to a PNG.
-int runRender(const std::filesystem::path& scene, std::filesystem::path out, int threads);
-
-// Primary rays per second on lab 5's scene.
-int runBench(const std::filesystem::path& scenes, int threads, int repeats);
-
-// Runs the sibling program built with the other implementation, with the same arguments.
-int runOtherImpl(const std::string& impl, int argc, char** argv);
+void addFigureCommands(CLI::App& app, Context& context); // figures, lab, render
+void addBenchCommand(CLI::App& app, Context& context);   // bench
 
 } // namespace raylab::cli

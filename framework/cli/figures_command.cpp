@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace raylab::cli {
 
@@ -38,8 +41,16 @@ bool report(const SceneDescription& d, const FigureResult& r, const std::filesys
     return true;
 }
 
-} // namespace
+struct FiguresOptions {
+    std::filesystem::path scenes;  // folder of figure scene files
+    std::filesystem::path out;     // where DIR/<id>.png go
+    std::vector<std::string> only; // figure ids; empty: all
+    int lab = 0;                   // only this lab's figures; 0: all
+    int threads = 0;
+};
 
+// Renders figures, a line each. 1 if a figure failed or has NaN pixels, else 0: a figure waiting
+// for a lab not done yet is reported, not a failure.
 int runFigures(const FiguresOptions& o) {
     std::vector<SceneDescription> scenes = loadSceneFolder(o.scenes);
     for (const std::string& id : o.only)
@@ -66,6 +77,7 @@ int runFigures(const FiguresOptions& o) {
     return failed == 0 ? 0 : 1;
 }
 
+// Renders one scene file to a PNG.
 int runRender(const std::filesystem::path& scene, std::filesystem::path out, int threads) {
     const SceneDescription d = loadSceneFile(scene);
     if (out.empty()) out = std::filesystem::path("out") / (d.id + ".png");
@@ -73,6 +85,43 @@ int runRender(const std::filesystem::path& scene, std::filesystem::path out, int
                 std::string(pictureName(d.picture)).c_str(), d.samples, std::string(samplerName(d.sampler)).c_str());
     const FigureResult r = renderScene(d, RenderOptions{threads, stderrIsInteractive()});
     return report(d, r, out) && r.status == FigureResult::Status::Rendered ? 0 : 1;
+}
+
+} // namespace
+
+void addFigureCommands(CLI::App& app, Context& context) {
+    auto options = std::make_shared<FiguresOptions>();
+    auto renderFigures = [&context, options] {
+        if (context.ranInOtherImpl()) return;
+        options->scenes = context.scenes;
+        options->threads = context.threads;
+        if (options->out.empty()) options->out = std::filesystem::path("out") / context.impl;
+        context.exitStatus = runFigures(*options);
+    };
+
+    CLI::App* figures = app.add_subcommand("figures", "render every lab figure to DIR/<id>.png");
+    context.addImplOption(figures);
+    figures->add_option("--out", options->out, "output folder (default: out/<impl>)");
+    figures->add_option("--only", options->only, "render only these figure ids");
+    context.addRenderOptions(figures);
+    figures->callback(renderFigures);
+
+    CLI::App* lab = app.add_subcommand("lab", "render lab N's figures from your code in labs/");
+    lab->add_option("N", options->lab, "the lab number, 1 to 5")->required()->check(CLI::Range(1, 5));
+    lab->add_option("--out", options->out, "output folder (default: out/student)");
+    context.addRenderOptions(lab);
+    lab->callback(renderFigures);
+
+    auto scene = std::make_shared<std::string>();
+    auto out = std::make_shared<std::string>();
+    CLI::App* render = app.add_subcommand("render", "render one scene file (TOML) to a PNG");
+    render->add_option("FILE", *scene, "the scene file")->required();
+    render->add_option("--out", *out, "the PNG to write (default: out/<scene name>.png)");
+    context.addImplOption(render);
+    context.addRenderOptions(render);
+    render->callback([&context, scene, out] {
+        if (!context.ranInOtherImpl()) context.exitStatus = runRender(*scene, *out, context.threads);
+    });
 }
 
 } // namespace raylab::cli

@@ -13,10 +13,20 @@
 
 namespace raylab::cli {
 
-int runOtherImpl(const std::string& impl, int argc, char** argv) {
+void Context::addRenderOptions(CLI::App* command) {
+    command->add_option("--threads", threads, "render threads (0: one per core)")->check(CLI::NonNegativeNumber);
+    command->add_option("--scenes", scenes, "the folder of figure scene files")->check(CLI::ExistingDirectory);
+}
+
+void Context::addImplOption(CLI::App* command) {
+    command->add_option("--impl", impl, "whose lab code runs: student (labs/) or reference (solutions/)")
+        ->check(CLI::IsMember({"student", "reference"}));
+}
+
+bool Context::ranInOtherImpl() {
+    if (impl == build::kImpl) return false;
     namespace fs = std::filesystem;
-    const std::string name = impl == "reference" ? "raylab-reference" : "raylab";
-    fs::path program = fs::path(build::kBinaryDir) / name;
+    fs::path program = fs::path(build::kBinaryDir) / (impl == "reference" ? "raylab-reference" : "raylab");
 #ifdef _WIN32
     program += ".exe";
 #endif
@@ -25,7 +35,8 @@ int runOtherImpl(const std::string& impl, int argc, char** argv) {
         std::fprintf(stderr, "raylab: error: there is no %s build here (%s not found)%s\n", impl.c_str(),
                      program.string().c_str(),
                      impl == "reference" ? "; the reference build needs the solutions/ folder" : "");
-        return 1;
+        exitStatus = 1;
+        return true;
     }
     std::vector<std::string> args{program.string()};
     for (int k = 1; k < argc; ++k) args.emplace_back(argv[k]);
@@ -35,12 +46,13 @@ int runOtherImpl(const std::string& impl, int argc, char** argv) {
     std::fflush(stdout);
 #ifdef _WIN32
     const auto status = _spawnv(_P_WAIT, program.string().c_str(), cargs.data());
-    return status < 0 ? 1 : int(status);
+    exitStatus = status < 0 ? 1 : int(status);
 #else
     execv(program.c_str(), cargs.data());
     std::perror(("raylab: cannot run " + program.string()).c_str());
-    return 1;
+    exitStatus = 1;
 #endif
+    return true;
 }
 
 } // namespace raylab::cli
