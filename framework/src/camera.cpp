@@ -21,10 +21,19 @@ bool isFinite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p
 
 } // namespace
 
+// Pixel centres (i + 0.5) / W are computed in float, with a relative rounding error of 2^-24: for
+// W above 2^20 they drift by more than 1/32 pixel, and from 2^24 on neighbouring columns share one
+// centre (measured by `raylab numerics`, docs/numerics.md).
+constexpr int kMaxImageSide = 1 << 20;
+
 BaseCamera::BaseCamera(int width, int height) : m_width(width), m_height(height) {
     if (width < 1 || height < 1)
         throw std::invalid_argument("camera: image size " + std::to_string(width) + " x " + std::to_string(height) +
                                     " has no pixel; width and height must be at least 1");
+    if (width > kMaxImageSide || height > kMaxImageSide)
+        throw std::invalid_argument("camera: image size " + std::to_string(width) + " x " + std::to_string(height) +
+                                    ": a side above " + std::to_string(kMaxImageSide) +
+                                    " pixels puts the float pixel centres (i + 0.5) / W more than 1/32 pixel off");
 }
 
 PerspectiveCamera::PerspectiveCamera(int width, int height, float fovyDegrees)
@@ -45,8 +54,11 @@ void checkLookAtParameters(const glm::vec3& position, const glm::vec3& target, c
         throw std::invalid_argument("camera: position = look_at = " + show(position) +
                                     ": the camera looks nowhere; move the target away from the position");
     const float upLength = glm::length(up);
+    if (!(upLength > 0.f) || !isFinite(glm::normalize(up)))
+        throw std::invalid_argument("camera: up = " + show(up) + " has no direction (its length is " +
+                                    std::to_string(upLength) + "); give a vector such as (0, 1, 0)");
     // |cross(up, view)| = |up| |view| sin(angle): below 1e-6 the basis would be noise.
-    if (!(upLength > 0.f) || glm::length(glm::cross(up, glm::normalize(view))) <= 1e-6f * upLength)
+    if (glm::length(glm::cross(up, glm::normalize(view))) <= 1e-6f * upLength)
         throw std::invalid_argument("camera: up = " + show(up) + " is parallel to the view direction " +
                                     show(glm::normalize(view)) + ", so it gives no vertical; choose another up");
 }

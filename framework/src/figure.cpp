@@ -15,7 +15,9 @@ PerspectiveCamera makeCamera(const SceneDescription& d) {
     const CameraDescription& c = d.camera;
     if (!c.lookAt) return PerspectiveCamera(d.width, d.height, c.fovy);
     checkLookAtParameters(c.position, c.target, c.up);
-    return PerspectiveCamera(d.width, d.height, c.position, c.target, c.up, c.fovy);
+    // Camera-relative render space: the camera at the origin, the scene moved by relativeTo.
+    const glm::vec3 target(glm::dvec3(c.target) - glm::dvec3(c.position));
+    return PerspectiveCamera(d.width, d.height, glm::vec3(0.f), target, c.up, c.fovy);
 }
 
 std::unique_ptr<Integrator> makeIntegrator(Picture picture) {
@@ -45,7 +47,8 @@ FigureResult renderScene(const SceneDescription& d, const RenderOptions& options
         } else {
             const PerspectiveCamera camera = makeCamera(d);
             const std::unique_ptr<Integrator> integrator = makeIntegrator(d.picture);
-            Renderer renderer(d.scene, camera, *integrator);
+            const Scene scene = relativeTo(d.scene, d.camera.lookAt ? d.camera.position : glm::vec3(0.f));
+            Renderer renderer(scene, camera, *integrator);
             renderer.setThreads(options.threads);
             renderer.setProgress(options.progress);
             renderer.setSampler(d.sampler);

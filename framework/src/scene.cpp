@@ -14,7 +14,19 @@ SphereGeometry::SphereGeometry(const glm::vec3& center, float radius, const Colo
         throw std::invalid_argument("sphere: radius = " + std::to_string(radius) +
                                     " has no meaning; it must be positive and finite");
     if (!std::isfinite(center.x) || !std::isfinite(center.y) || !std::isfinite(center.z))
-        throw std::invalid_argument("sphere: center is not finite");
+        throw std::invalid_argument("sphere: center = (" + std::to_string(center.x) + ", " + std::to_string(center.y) +
+                                    ", " + std::to_string(center.z) + ") is not finite");
+}
+
+Scene relativeTo(const Scene& scene, const glm::vec3& origin) {
+    Scene moved = scene;
+    moved.spheres.clear();
+    for (const SphereGeometry& s : scene.spheres) {
+        // The difference of two floats is exact in double; one rounding to float follows.
+        const glm::vec3 centre(glm::dvec3(s.center()) - glm::dvec3(origin));
+        moved.spheres.emplace_back(centre, s.radius(), s.color());
+    }
+    return moved;
 }
 
 bool Scene::intersect(const Ray& ray, HitRecord& hit, float tMin, float tMax) const {

@@ -169,8 +169,8 @@ Table studyPixelCentres() {
                 "Pixel centres sx = (i + 0.5) / W computed in float for every column i of a W-pixel-wide image",
                 {"W", "columns sharing their sx with another", "max |sx - exact| in pixels", "raylab"},
                 {}};
-    for (std::int64_t width : {std::int64_t(1) << 20, std::int64_t(1) << 23, (std::int64_t(1) << 23) + 1,
-                               std::int64_t(1) << 24, std::int64_t(1) << 25}) {
+    for (std::int64_t width : {std::int64_t(16384), std::int64_t(100003), std::int64_t(1048573), std::int64_t(1) << 23,
+                               (std::int64_t(1) << 23) + 1, std::int64_t(1) << 24, std::int64_t(1) << 25}) {
         std::int64_t shared = 0;
         double worst = 0.;
         float previous = -1.f;
