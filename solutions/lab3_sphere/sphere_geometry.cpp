@@ -21,7 +21,8 @@ bool SphereGeometry::intersect(const Ray& ray, float tMin, float tMax, HitRecord
     const glm::vec3 l = oc - (bPrime / a) * d;
     const float lLength = glm::length(l);
     const float disc = a * (m_radius - lLength) * (m_radius + lLength);
-    if (disc < 0.f) return false;
+    // Written !(disc >= 0) so that NaN (a ray with a NaN, infinite or zero direction) misses too.
+    if (!(disc >= 0.f)) return false;
 
     const float q = -bPrime - std::copysign(std::sqrt(disc), bPrime);
     float tNear = 0.f, tFar = 0.f; // q = 0 only when b' = disc = 0, so c' = 0: a tangent at t = 0
@@ -31,9 +32,9 @@ bool SphereGeometry::intersect(const Ray& ray, float tMin, float tMax, HitRecord
         if (tNear > tFar) std::swap(tNear, tFar);
     }
     float t = tNear;
-    if (t < tMin || t > tMax) {
+    if (!(t >= tMin && t <= tMax)) {
         t = tFar;
-        if (t < tMin || t > tMax) return false;
+        if (!(t >= tMin && t <= tMax)) return false;
     }
     hit.t = t;
     hit.position = ray.at(t);
