@@ -50,9 +50,12 @@ void checkLookAtParameters(const glm::vec3& position, const glm::vec3& target, c
     if (!isFinite(target)) throw std::invalid_argument("camera: look_at = " + show(target) + " is not finite");
     if (!isFinite(up)) throw std::invalid_argument("camera: up = " + show(up) + " is not finite");
     const glm::vec3 view = target - position;
-    if (!(glm::length(view) > 0.f) || !isFinite(glm::normalize(view)))
+    if (!(glm::length(view) > 0.f))
         throw std::invalid_argument("camera: position = look_at = " + show(position) +
                                     ": the camera looks nowhere; move the target away from the position");
+    if (!isFinite(glm::normalize(view)))
+        throw std::invalid_argument("camera: look_at - position = " + show(view) +
+                                    " overflows float: the camera looks nowhere; bring position and look_at closer");
     const float upLength = glm::length(up);
     if (!(upLength > 0.f) || !isFinite(glm::normalize(up)))
         throw std::invalid_argument("camera: up = " + show(up) + " has no direction (its length is " +

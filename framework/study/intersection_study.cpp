@@ -99,6 +99,7 @@ const std::vector<NamedMethod>& methods() {
 
 struct Errors {
     std::int64_t misclassified = 0, rays = 0;
+    double wrongBand = 0.; // the widest | |l| - r | / r of a misclassified ray: how near the silhouette
     std::vector<double> t, normal;
 };
 
@@ -118,7 +119,12 @@ Errors measure(const RaySet& set, const Method& method) {
         const Answer truth = formula<LD, true>(set, d);
         const Answer got = method(set, d);
         ++e.rays;
-        if (got.hit != truth.hit) ++e.misclassified;
+        if (got.hit != truth.hit) {
+            ++e.misclassified;
+            const V3<LD> o = V3<LD>::from(set.origin), c = V3<LD>::from(set.centre);
+            const LD l = closestDistance(o, V3<LD>::from(d), c);
+            e.wrongBand = std::max(e.wrongBand, double(std::abs(l - LD(set.radius)) / LD(set.radius)));
+        }
         if (!got.hit || !truth.hit) continue;
         e.t.push_back(double(std::abs(got.t - truth.t) / truth.t));
         e.normal.push_back(double(angleBetween(got.normal, truth.normal)));
@@ -143,7 +149,8 @@ Table studyFarSpheres(const StudyOptions& options) {
     Table table{"far_spheres",
                 "Rays aimed uniformly over a disc of twice the radius around the sphere, camera at the origin; "
                 "errors against a long double evaluation on the same float inputs",
-                {"radius", "distance / radius", "method", "hit/miss wrong %", "median t rel. error",
+                {"radius", "distance / radius", "method", "hit/miss wrong %", "wrong rays within (radii of the silhouette)",
+                 "median t rel. error",
                  "max t rel. error", "median normal error (rad)", "max normal error (rad)"},
                 {}};
     for (double radius : {1e-3, 1., 1e3})
@@ -153,11 +160,11 @@ Table studyFarSpheres(const StudyOptions& options) {
                 Errors e;
                 std::string note;
                 if (!runLab([&] { e = measure(set, m.method); }, note)) {
-                    table.add({sci(radius, 0), sci(ratio, 0), m.name, note, "", "", "", ""});
+                    table.add({sci(radius, 0), sci(ratio, 0), m.name, note, "", "", "", "", ""});
                     continue;
                 }
                 table.add({sci(radius, 0), sci(ratio, 0), m.name, fixed(100. * double(e.misclassified) / double(e.rays), 3),
-                           sci(median(e.t)), sci(maximum(e.t)), sci(median(e.normal)), sci(maximum(e.normal))});
+                           e.misclassified ? sci(e.wrongBand) : "-", sci(median(e.t)), sci(maximum(e.t)), sci(median(e.normal)), sci(maximum(e.normal))});
             }
         }
     return table;

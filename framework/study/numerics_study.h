@@ -11,7 +11,7 @@ namespace raylab::study {
 
 struct StudyOptions {
     int rays = 200000;                  // rays per configuration
-    int repeats = 7;                    // timing runs; the median is kept
+    int repeats = 11;                   // timing runs; the median is kept
     std::int64_t maxSamples = 100000000; // accumulation study: up to this many samples per pixel
 };
 

@@ -90,6 +90,13 @@ SphereHit<T> stableIntersect(const V3<T>& o, const V3<T>& d, const V3<T>& centre
     return nearestIn(c / q, q / a, tMin, tMax);
 }
 
+// How far the ray's line passes from the centre: |oc - (oc.d / d.d) d|.
+template <class T>
+T closestDistance(const V3<T>& o, const V3<T>& d, const V3<T>& centre) {
+    const V3<T> oc = o - centre;
+    return length(oc - d * (dot(oc, d) / dot(d, d)));
+}
+
 // The outward unit normal at the hit, (o + t d - centre) / radius, all in T.
 template <class T>
 V3<T> normalAt(const V3<T>& o, const V3<T>& d, const V3<T>& centre, T radius, T t) {
