@@ -100,7 +100,7 @@ const std::vector<NamedMethod>& methods() {
 struct Errors {
     std::int64_t misclassified = 0, rays = 0;
     double wrongBand = 0.; // the widest | |l| - r | / r of a misclassified ray: how near the silhouette
-    std::vector<double> t, normal;
+    std::vector<double> t, normal, shading; // shading: | max(-d.n, 0) - the exact one |
 };
 
 double median(std::vector<double> v) {
@@ -128,6 +128,8 @@ Errors measure(const RaySet& set, const Method& method) {
         if (!got.hit || !truth.hit) continue;
         e.t.push_back(double(std::abs(got.t - truth.t) / truth.t));
         e.normal.push_back(double(angleBetween(got.normal, truth.normal)));
+        const V3<LD> dd = V3<LD>::from(d);
+        e.shading.push_back(double(std::abs(std::max(-dot(dd, got.normal), LD(0)) - std::max(-dot(dd, truth.normal), LD(0)))));
     }
     return e;
 }
@@ -151,7 +153,7 @@ Table studyFarSpheres(const StudyOptions& options) {
                 "errors against a long double evaluation on the same float inputs",
                 {"radius", "distance / radius", "method", "hit/miss wrong %", "wrong rays within (radii of the silhouette)",
                  "median t rel. error",
-                 "max t rel. error", "median normal error (rad)", "max normal error (rad)"},
+                 "max t rel. error", "median normal error (rad)", "max normal error (rad)", "max cosine shading error"},
                 {}};
     for (double radius : {1e-3, 1., 1e3})
         for (double ratio : {1e1, 1e2, 1e3, 1e4, 1e5}) {
@@ -160,11 +162,11 @@ Table studyFarSpheres(const StudyOptions& options) {
                 Errors e;
                 std::string note;
                 if (!runLab([&] { e = measure(set, m.method); }, note)) {
-                    table.add({sci(radius, 0), sci(ratio, 0), m.name, note, "", "", "", "", ""});
+                    table.add({sci(radius, 0), sci(ratio, 0), m.name, note, "", "", "", "", "", ""});
                     continue;
                 }
                 table.add({sci(radius, 0), sci(ratio, 0), m.name, fixed(100. * double(e.misclassified) / double(e.rays), 3),
-                           e.misclassified ? sci(e.wrongBand) : "-", sci(median(e.t)), sci(maximum(e.t)), sci(median(e.normal)), sci(maximum(e.normal))});
+                           e.misclassified ? sci(e.wrongBand) : "-", sci(median(e.t)), sci(maximum(e.t)), sci(median(e.normal)), sci(maximum(e.normal)), sci(maximum(e.shading))});
             }
         }
     return table;
