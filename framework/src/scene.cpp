@@ -13,6 +13,9 @@ SphereGeometry::SphereGeometry(const glm::vec3& center, float radius, const Colo
     if (!(radius > 0.f) || !std::isfinite(radius))
         throw std::invalid_argument("sphere: radius = " + std::to_string(radius) +
                                     " has no meaning; it must be positive and finite");
+    // The intersection needs r^2 (and |o - c|^2 of the same size): past 1.8e19 it overflows float.
+    if (!std::isfinite(radius * radius))
+        throw std::invalid_argument("sphere: radius = " + std::to_string(radius) + " is too large: its square overflows float");
     if (!std::isfinite(center.x) || !std::isfinite(center.y) || !std::isfinite(center.z))
         throw std::invalid_argument("sphere: center = (" + std::to_string(center.x) + ", " + std::to_string(center.y) +
                                     ", " + std::to_string(center.z) + ") is not finite");

@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <string>
-#include <vector>
 
 namespace raylab::study {
 
@@ -39,26 +38,25 @@ Table studyAccumulation(const StudyOptions& options) {
                 {}};
     const Scene scene = makeTp1Scene();
     const RayCastIntegrator integrator(Shading::Cosine);
-    std::vector<std::int64_t> checkpoints;
-    for (std::int64_t n = 1000; n <= options.maxSamples; n *= 10) checkpoints.push_back(n);
     try {
         const PerspectiveCamera camera(width, height);
-        PixelSampler sampler(SamplerKind::Random, 1, seed, i, j, width);
-        float naive = 0.f;
-        KahanSum kahan;
-        double dsum = 0.;
-        long double exact = 0.L;
-        std::size_t next = 0;
-        for (std::int64_t n = 1; next < checkpoints.size(); ++n) {
-            // The sample as lab 5 computes it (same offsets, same float expressions).
-            const glm::vec2 offset = sampler.next2D();
-            const float b = integrator.Li(scene, camera.generateRay((float(i) + offset.x) / float(width),
-                                                                    (float(j) + offset.y) / float(height))).b;
-            naive += b;
-            kahan.add(b);
-            dsum += b;
-            exact += b;
-            if (n != checkpoints[next]) continue;
+        for (std::int64_t n = 1000; n <= options.maxSamples; n *= 10) {
+            // The samples as lab 5 takes them: the sampler of an n-sample pixel, the same float
+            // expressions for the screen point.
+            PixelSampler sampler(SamplerKind::Random, int(n), seed, i, j, width);
+            float naive = 0.f;
+            KahanSum kahan;
+            double dsum = 0.;
+            long double exact = 0.L;
+            for (std::int64_t k = 0; k < n; ++k) {
+                const glm::vec2 offset = sampler.next2D();
+                const float b = integrator.Li(scene, camera.generateRay((float(i) + offset.x) / float(width),
+                                                                        (float(j) + offset.y) / float(height))).b;
+                naive += b;
+                kahan.add(b);
+                dsum += b;
+                exact += b;
+            }
             const long double mean = exact / n;
             auto err = [&](long double sum) { return double(std::abs(sum / n - mean) / mean); };
             std::string lab;
@@ -71,7 +69,6 @@ Table studyAccumulation(const StudyOptions& options) {
                 lab = e.what();
             }
             table.add({sci(double(n), 0), sci(err(naive)), sci(err(kahan.s)), sci(err(dsum)), lab});
-            ++next;
         }
     } catch (const NotDoneYet& e) {
         table.add({"", e.what(), "", "", ""});
