@@ -2,6 +2,7 @@
 #include "numerics_study.h"
 #include "sphere_formulas.h"
 
+#include "raylab/integrator.h"
 #include "raylab/perspective_camera.h"
 #include "raylab/scene.h"
 #include "raylab/todo.h"
@@ -9,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -37,9 +39,10 @@ Table studyFarDisc() {
     Table table{"far_disc",
                 "A radius-1 sphere on the axis of the default camera, " + std::to_string(kDiscImage) + " x " +
                     std::to_string(kDiscImage) + " pixels, fovy chosen for a disc of radius 80 px; one ray per pixel "
-                    "centre from the lab 2 code; pixels counted against the analytic disc area",
+                    "centre from the lab 2 code; pixels counted against the analytic disc area; cosine shading "
+                    "(lab 3's RayCastIntegrator for the lab code) against long double, in 8-bit levels",
                 {"distance", "fovy (deg)", "method", "pixels hit", "analytic area (px)", "area error %",
-                 "pixels wrong vs long double"},
+                 "pixels wrong vs long double", "max cosine error (8-bit levels)"},
                 {}};
     for (double distance : {1e2, 1e3, 1e4, 1e5}) {
         const float fovy = float(fovyForDisc(distance, kDiscPixels, kDiscImage));
@@ -53,31 +56,41 @@ Table studyFarDisc() {
             const LD radiusPx = screenRadius / (LD(camera.viewportHeight()) / 2) * (kDiscImage / 2.L);
             const double area = double(3.14159265358979323846L * radiusPx * radiusPx);
             const SphereGeometry sphere(centre, 1.f, Color(1.f));
-            std::int64_t hits[3] = {0, 0, 0}, wrong[3] = {0, 0, 0};
+            Scene scene;
+            scene.spheres.push_back(sphere);
+            const RayCastIntegrator cosine(Shading::Cosine);
+            std::int64_t hits[3] = {0, 0, 0}, wrong[3] = {0, 0, 0}, levels[3] = {0, 0, 0};
+            auto level = [](LD v) { return std::int64_t(std::llround(255.L * std::clamp(v, LD(0), LD(1)))); };
             for (int j = 0; j < kDiscImage; ++j)
                 for (int i = 0; i < kDiscImage; ++i) {
                     const Ray ray = camera.generateRay((float(i) + 0.5f) / float(kDiscImage), (float(j) + 0.5f) / float(kDiscImage));
                     const V3<LD> o = V3<LD>::from(ray.origin), d = V3<LD>::from(ray.direction), c = V3<LD>::from(centre);
-                    const bool truth = stableIntersect(o, d, c, LD(1), LD(0), LD(kInf)).hit;
+                    const SphereHit<LD> truth = stableIntersect(o, d, c, LD(1), LD(0), LD(kInf));
+                    const V3<float> of = V3<float>::from(ray.origin), df = V3<float>::from(ray.direction),
+                                    cf = V3<float>::from(centre);
+                    const SphereHit<float> foil = textbookIntersect(of, df, cf, 1.f, 0.f, kInf);
+                    const SphereHit<float> stable = stableIntersect(of, df, cf, 1.f, 0.f, kInf);
                     HitRecord hit;
-                    const bool got[3] = {
-                        sphere.intersect(ray, 0.f, kInf, hit),
-                        textbookIntersect(V3<float>::from(ray.origin), V3<float>::from(ray.direction),
-                                          V3<float>::from(centre), 1.f, 0.f, kInf).hit,
-                        stableIntersect(V3<float>::from(ray.origin), V3<float>::from(ray.direction),
-                                        V3<float>::from(centre), 1.f, 0.f, kInf).hit,
-                    };
+                    const bool got[3] = {sphere.intersect(ray, 0.f, kInf, hit), foil.hit, stable.hit};
+                    // The cosine -d.n of each, where it and the truth both hit.
+                    auto shade = [&](const V3<float>& n) { return -LD(dot(df, n)); };
+                    const LD shades[3] = {LD(cosine.Li(scene, ray).b), shade(normalAt(of, df, cf, 1.f, foil.t)),
+                                          shade(normalAt(of, df, cf, 1.f, stable.t))};
+                    const LD exactShade = -dot(d, normalAt(o, d, c, LD(1), truth.t));
                     for (int m = 0; m < 3; ++m) {
                         hits[m] += got[m];
-                        wrong[m] += got[m] != truth;
+                        wrong[m] += got[m] != truth.hit;
+                        if (got[m] && truth.hit)
+                            levels[m] = std::max(levels[m], std::abs(level(shades[m]) - level(exactShade)));
                     }
                 }
             const char* names[3] = {"lab code (float)", "textbook float", "stable float"};
             for (int m = 0; m < 3; ++m)
                 table.add({sci(distance, 0), sci(fovy, 3), names[m], std::to_string(hits[m]), fixed(area, 1),
-                           fixed(100. * (double(hits[m]) - area) / area, 3), std::to_string(wrong[m])});
+                           fixed(100. * (double(hits[m]) - area) / area, 3), std::to_string(wrong[m]),
+                           std::to_string(levels[m])});
         } catch (const NotDoneYet& e) {
-            table.add({sci(distance, 0), sci(fovy, 3), "lab code", e.what(), "", "", ""});
+            table.add({sci(distance, 0), sci(fovy, 3), "lab code", e.what(), "", "", "", ""});
         }
     }
     return table;

@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace raylab;
@@ -70,6 +71,34 @@ TEST_CASE("the far sphere renders as a clean disc of the analytic area (within 0
         CHECK(stray == 0);
         CHECK(std::abs(disc - area) / area < 0.005);
     }
+}
+
+TEST_CASE("the far sphere's cosine shading is within one 8-bit level of the long double one, two on the rim") {
+    SceneDescription d = farSphere(glm::vec3(0.f));
+    d.picture = Picture::Cosine;
+    const FigureResult r = renderScene(d, RenderOptions{0, false});
+    REQUIRE(r.status == FigureResult::Status::Rendered);
+    const Image8 image = quantize(*r.image);
+    const glm::vec3 centre = d.scene.spheres[0].center();
+    const PerspectiveCamera camera(kSize, kSize, d.camera.position, d.camera.target, d.camera.up, d.camera.fovy);
+    const double radius = analyticRadiusPx();
+    int worstInside = 0, worstRim = 0;
+    for (int j = 0; j < kSize; ++j)
+        for (int i = 0; i < kSize; ++i) {
+            const Ray ray = camera.generateRay((float(i) + 0.5f) / kSize, (float(j) + 0.5f) / kSize);
+            const study::SphereHit<LD> truth = exact(ray, centre, 1.f);
+            if (!truth.hit) continue;
+            using V = study::V3<LD>;
+            const LD cosine = -study::dot(V::from(ray.direction), study::normalAt(V::from(ray.origin), V::from(ray.direction),
+                                                                                  V::from(centre), LD(1), truth.t));
+            const int error = std::abs(int(image.pixel(i, j)[2]) - int(std::lround(255. * double(std::max(cosine, LD(0))))));
+            // On the outermost half pixel t is ill-conditioned (section 1 of docs/numerics.md).
+            const bool rim = std::hypot(i + 0.5 - kSize / 2., j + 0.5 - kSize / 2.) > radius - 0.5;
+            int& worst = rim ? worstRim : worstInside;
+            worst = std::max(worst, error);
+        }
+    CHECK(worstInside <= 1);
+    CHECK(worstRim <= 2);
 }
 
 TEST_CASE("the textbook formula does not give the far sphere's disc") {
