@@ -1,6 +1,7 @@
 #include "raylab/scene.h"
 
 #include "raylab/integrator.h"
+#include "raylab/text.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -11,14 +12,13 @@ namespace raylab {
 SphereGeometry::SphereGeometry(const glm::vec3& center, float radius, const Color& color)
     : m_center(center), m_radius(radius), m_color(color) {
     if (!(radius > 0.f) || !std::isfinite(radius))
-        throw std::invalid_argument("sphere: radius = " + std::to_string(radius) +
+        throw std::invalid_argument("sphere: radius = " + showNumber(radius) +
                                     " has no meaning; it must be positive and finite");
     // The intersection needs r^2 (and |o - c|^2 of the same size): past 1.8e19 it overflows float.
     if (!std::isfinite(radius * radius))
-        throw std::invalid_argument("sphere: radius = " + std::to_string(radius) + " is too large: its square overflows float");
+        throw std::invalid_argument("sphere: radius = " + showNumber(radius) + " is too large: its square overflows float");
     if (!std::isfinite(center.x) || !std::isfinite(center.y) || !std::isfinite(center.z))
-        throw std::invalid_argument("sphere: center = (" + std::to_string(center.x) + ", " + std::to_string(center.y) +
-                                    ", " + std::to_string(center.z) + ") is not finite");
+        throw std::invalid_argument("sphere: center = " + showVector(center) + " is not finite");
 }
 
 Scene relativeTo(const Scene& scene, const glm::vec3& origin) {

@@ -1,5 +1,7 @@
 #include "raylab/scene_file.h"
 
+#include "raylab/text.h"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -44,7 +46,7 @@ public:
         if (auto f = node->as_floating_point()) value = f->get();
         else if (auto i = node->as_integer()) value = double(i->get());
         else fail(node, name(section, key), "expected a number, got " + typeName(*node));
-        if (!std::isfinite(*value)) fail(node, name(section, key), "must be finite, got " + std::to_string(*value));
+        if (!std::isfinite(*value)) fail(node, name(section, key), "must be finite, got " + showNumber(*value));
         return value;
     }
 
@@ -116,7 +118,7 @@ void readCamera(const Reader& r, const toml::table& t, CameraDescription& camera
     r.onlyKeys(t, "[camera] ", {"position", "look_at", "up", "fovy"});
     if (auto fovy = r.number(t, "[camera] ", "fovy")) {
         if (!(*fovy > 0. && *fovy < 180.))
-            r.fail(t.get("fovy"), "[camera] fovy", std::to_string(*fovy) + " degrees has no meaning; it must be strictly between 0 and 180");
+            r.fail(t.get("fovy"), "[camera] fovy", showNumber(*fovy) + " degrees has no meaning; it must be strictly between 0 and 180");
         camera.fovy = float(*fovy);
     }
     const auto position = r.vec3(t, "[camera] ", "position");
@@ -141,7 +143,7 @@ void readSpheres(const Reader& r, const toml::node& node, Scene& scene) {
         const auto center = r.vec3(t, "[[sphere]] ", "center");
         const auto radius = r.number(t, "[[sphere]] ", "radius");
         if (!center || !radius) r.fail(&t, "[[sphere]]", "a sphere needs a center and a radius");
-        if (!(*radius > 0.)) r.fail(t.get("radius"), "[[sphere]] radius", std::to_string(*radius) + " must be positive");
+        if (!(*radius > 0.)) r.fail(t.get("radius"), "[[sphere]] radius", showNumber(*radius) + " must be positive");
         scene.spheres.emplace_back(*center, float(*radius), r.vec3(t, "[[sphere]] ", "color").value_or(Color(1.f)));
     }
 }
