@@ -11,13 +11,12 @@ namespace raylab {
 
 namespace {
 
-PerspectiveCamera makeCamera(const SceneDescription& d) {
+// `origin`: the render space's (renderOrigin in scene.h); the camera is placed relative to it.
+PerspectiveCamera makeCamera(const SceneDescription& d, const glm::vec3& origin) {
     const CameraDescription& c = d.camera;
     if (!c.lookAt) return PerspectiveCamera(d.width, d.height, c.fovy);
     checkLookAtParameters(c.position, c.target, c.up);
-    // Camera-relative render space: the camera at the origin, the scene moved by relativeTo.
-    const glm::vec3 target(glm::dvec3(c.target) - glm::dvec3(c.position));
-    return PerspectiveCamera(d.width, d.height, glm::vec3(0.f), target, c.up, c.fovy);
+    return PerspectiveCamera(d.width, d.height, relativeTo(c.position, origin), relativeTo(c.target, origin), c.up, c.fovy);
 }
 
 std::unique_ptr<Integrator> makeIntegrator(Picture picture) {
@@ -45,9 +44,10 @@ FigureResult renderScene(const SceneDescription& d, const RenderOptions& options
         if (d.picture == Picture::Gradient) {
             result.image = renderGradient(d, result.stats);
         } else {
-            const PerspectiveCamera camera = makeCamera(d);
+            const glm::vec3 origin = d.camera.lookAt ? renderOrigin(d.camera.position) : glm::vec3(0.f);
+            const PerspectiveCamera camera = makeCamera(d, origin);
             const std::unique_ptr<Integrator> integrator = makeIntegrator(d.picture);
-            const Scene scene = relativeTo(d.scene, d.camera.lookAt ? d.camera.position : glm::vec3(0.f));
+            const Scene scene = relativeTo(d.scene, origin);
             Renderer renderer(scene, camera, *integrator);
             renderer.setThreads(options.threads);
             renderer.setProgress(options.progress);

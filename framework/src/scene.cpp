@@ -21,14 +21,20 @@ SphereGeometry::SphereGeometry(const glm::vec3& center, float radius, const Colo
         throw std::invalid_argument("sphere: center = " + showVector(center) + " is not finite");
 }
 
+glm::vec3 renderOrigin(const glm::vec3& cameraPosition) {
+    // x / 1024 and the product back are exact (powers of two), and so is the rounding.
+    auto cell = [](float x) { return std::round(x / kRenderCell) * kRenderCell; };
+    return {cell(cameraPosition.x), cell(cameraPosition.y), cell(cameraPosition.z)};
+}
+
+glm::vec3 relativeTo(const glm::vec3& point, const glm::vec3& origin) {
+    return glm::vec3(glm::dvec3(point) - glm::dvec3(origin));
+}
+
 Scene relativeTo(const Scene& scene, const glm::vec3& origin) {
     Scene moved = scene;
     moved.spheres.clear();
-    for (const SphereGeometry& s : scene.spheres) {
-        // The difference of two floats is exact in double; one rounding to float follows.
-        const glm::vec3 centre(glm::dvec3(s.center()) - glm::dvec3(origin));
-        moved.spheres.emplace_back(centre, s.radius(), s.color());
-    }
+    for (const SphereGeometry& s : scene.spheres) moved.spheres.emplace_back(relativeTo(s.center(), origin), s.radius(), s.color());
     return moved;
 }
 

@@ -4,6 +4,7 @@
 #include "sphere_formulas.h"
 
 #include "raylab/random.h"
+#include "raylab/scene.h"
 #include "raylab/sphere_geometry.h"
 #include "raylab/todo.h"
 
@@ -231,17 +232,18 @@ Table studyIntersectionTimes(const StudyOptions& options) {
 Table studyLargeCoordinates(const StudyOptions& options) {
     Table table{"large_coordinates",
                 "A radius-1 sphere 3 away from a camera placed `offset` from the world origin; rays over 99% of "
-                "its disc; lab code in world coordinates (hit.position = o + t d) and in raylab's camera-relative "
-                "render space (centre - camera computed in double, camera at 0)",
+                "its disc; lab code in world coordinates (hit.position = o + t d) and in raylab's render space "
+                "(renderOrigin: the world moved by a multiple of 1024 near the camera, see scene.h)",
                 {"offset", "space", "hit/miss wrong %", "max normal error (rad)", "max shading error", "median normal error (rad)"},
                 {}};
     const int rays = std::max(1, options.rays / 4);
     for (double offset : {0., 1e3, 1e4, 1e5, 1e6, 1e7}) {
         const RaySet world = aimedRays(glm::dvec3(0.6, 0., 0.8) * offset, 3., 1., 0.99, rays);
-        RaySet relative = world; // the same float scene, moved so that the camera is at the origin
-        relative.origin = glm::vec3(0.f);
-        relative.centre = glm::vec3(glm::dvec3(world.centre) - glm::dvec3(world.origin));
-        for (const auto& [space, set] : {std::pair<const char*, const RaySet*>{"world", &world}, {"camera-relative", &relative}}) {
+        RaySet relative = world; // the same float scene in raylab's render space (scene.h)
+        const glm::vec3 origin = renderOrigin(world.origin);
+        relative.origin = relativeTo(world.origin, origin);
+        relative.centre = relativeTo(world.centre, origin);
+        for (const auto& [space, set] : {std::pair<const char*, const RaySet*>{"world", &world}, {"render space", &relative}}) {
             std::int64_t wrong = 0;
             std::vector<double> normalErr, shadeErr;
             std::string note;

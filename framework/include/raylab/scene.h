@@ -17,10 +17,22 @@ struct Scene {
                    float tMax = std::numeric_limits<float>::infinity()) const;
 };
 
-// The scene as seen from `origin`: every centre moved by -origin. The renderer works in this
-// camera-relative space (pbrt-v4's "camera-world" space) with the camera at (0, 0, 0): the lab
-// code then handles hit points of the size of the distances to the camera, not of the world
-// coordinates, so normals stay accurate 10^7 away from the world origin (docs/numerics.md).
+// Large world coordinates (docs/numerics.md, section 9). Floats 10^7 from the origin are 1 apart,
+// so hit points there, and the normals taken from them, are off by up to 1. The renderer therefore
+// works in a render space whose origin is a point of a 1024-unit grid near the camera (a "floating
+// origin"): the camera stays within 512 of it, and what the camera sees keeps about 6e-5 of
+// precision wherever it is. A camera within 512 of the world origin renders in world coordinates,
+// exactly as before, so every lab sees the positions its figures were made with.
+inline constexpr float kRenderCell = 1024.f;
+
+// The render-space origin for a camera at `cameraPosition`: each coordinate rounded to a multiple
+// of kRenderCell (exact in float).
+glm::vec3 renderOrigin(const glm::vec3& cameraPosition);
+
+// `point` - `origin`, taken in double (exact for two floats) and rounded once to float.
+glm::vec3 relativeTo(const glm::vec3& point, const glm::vec3& origin);
+
+// The scene with every centre moved by -origin.
 Scene relativeTo(const Scene& scene, const glm::vec3& origin);
 
 // The course's scene "tp1": one blue sphere of radius 1 at (0, 0, 3) on a grey background.
