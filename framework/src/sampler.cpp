@@ -66,8 +66,8 @@ glm::dvec2 r2(std::uint32_t index) {
     // g is the real root of x^3 = x + 1; 1/g and 1/g^2 are badly approximable, so the points of
     // n * alpha modulo 1 fill the square evenly for every n, not only powers of two.
     constexpr double g = 1.32471795724474602596;
-    const double n = double(index);
-    return {std::fmod(n / g, 1.), std::fmod(n / (g * g), 1.)};
+    const double x = double(index) / g, y = double(index) / (g * g);
+    return {x - std::floor(x), y - std::floor(y)}; // the fractional parts, without the slow fmod
 }
 
 } // namespace lowdiscrepancy
@@ -134,7 +134,9 @@ glm::vec2 PixelSampler::next2D() {
     }
     case SamplerKind::R2: {
         const glm::dvec2 p = lowdiscrepancy::r2(m_index++);
-        const double x = std::fmod(p.x + m_shift[0], 1.), y = std::fmod(p.y + m_shift[1], 1.);
+        double x = p.x + m_shift[0], y = p.y + m_shift[1];
+        x -= x >= 1. ? 1. : 0.;
+        y -= y >= 1. ? 1. : 0.;
         return {std::min(float(x), kBelowOne), std::min(float(y), kBelowOne)};
     }
     case SamplerKind::Adaptive: break; // mapped to Stratified in the constructor
