@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     cli::addFigureCommands(app, context);
     cli::addBenchCommand(app, context);
     cli::addStudyAntialiasingCommand(app, context);
+    cli::addBenchEffectsCommand(app, context);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

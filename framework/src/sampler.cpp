@@ -120,11 +120,15 @@ glm::vec2 PixelSampler::next2D() {
     }
     case SamplerKind::Stratified:
     case SamplerKind::Grid: {
-        const int cell = int(m_index++ % std::uint32_t(m_gridWidth * m_gridHeight));
         const float jx = m_kind == SamplerKind::Grid ? 0.5f : uniform();
         const float jy = m_kind == SamplerKind::Grid ? 0.5f : uniform();
-        const float x = (float(cell % m_gridWidth) + jx) / float(m_gridWidth);
-        const float y = (float(cell / m_gridWidth) + jy) / float(m_gridHeight);
+        const float x = (float(m_cellX) + jx) / float(m_gridWidth);
+        const float y = (float(m_cellY) + jy) / float(m_gridHeight);
+        // The next cell, row by row, without an integer division per sample.
+        if (++m_cellX == m_gridWidth) {
+            m_cellX = 0;
+            if (++m_cellY == m_gridHeight) m_cellY = 0;
+        }
         return {std::min(x, kBelowOne), std::min(y, kBelowOne)};
     }
     case SamplerKind::Sobol: {

@@ -53,6 +53,8 @@ private:
     std::uint32_t m_index = 0;
     int m_gridWidth;  // stratified and grid: cells per row
     int m_gridHeight; // stratified and grid: cells per column
+    int m_cellX = 0;  // stratified and grid: the cell of the next sample
+    int m_cellY = 0;
     std::uint64_t m_seed;
     std::uint64_t m_stream;
     std::optional<Pcg32> m_rng; // seeded on the first draw: a sampler that draws nothing costs nothing
