@@ -231,6 +231,14 @@ std::vector<FailureRow> measureFailure(const AntialiasingOptions& o) {
     return rows;
 }
 
+// Timings depend on what else the machine does: say so ("" where /proc/loadavg is not).
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    double load = 0.;
+    if (!(in >> load)) return "";
+    return " (load average " + fmt("%.1f", load) + " when the study wrote this)";
+}
+
 } // namespace
 
 void writeMarkdown(const std::filesystem::path& file, const AntialiasingResult& result, const AntialiasingOptions& o);
@@ -277,7 +285,7 @@ void writeMarkdown(const std::filesystem::path& file, const AntialiasingResult& 
        << "Lab 5's scene, " << result.width << " x " << result.height << " pixels (" << result.silhouettePixels
        << " on the silhouette), rendered by the reference solutions with each sampler. Times are medians of "
        << o.repeats << " renders (" << (o.quick ? "here 1" : "1 for 1024 samples") << "), on this machine with "
-       << (o.threads == 0 ? std::string("all cores") : std::to_string(o.threads) + " threads") << ".\n\n"
+       << (o.threads == 0 ? std::string("all cores") : std::to_string(o.threads) + " threads") << loadAverage() << ".\n\n"
        << "**The reference is exact.** The silhouette of a sphere on the camera's axis is exactly a circle on the screen, "
        << "and inside it the cosine has a closed form; each pixel's average is integrated by Gauss-Legendre quadrature, "
        << "exactly in one direction after the change of variable y = h sin(phi) that removes the square root at the rim, "
@@ -358,7 +366,12 @@ void writeMarkdown(const std::filesystem::path& file, const AntialiasingResult& 
           "seen: with 4 samples a pixel, a 0.35-pixel object (a tenth of a pixel's area) escapes them most of the time. "
           "Without widening, a pixel that the object covers in part keeps its wrong first estimate while its neighbour is "
           "refined. With 16 samples and widening, the first pass sees the object in one of its pixels and the widening "
-          "brings in the others.\n";
+          "brings in the others.";
+    if (!result.failure.empty() && result.failure[0].objectsMissed > 0)
+        md << " Even then " << result.failure[0].objectsMissed << " of the " << result.failure[0].objects
+           << " objects were missed here, because no first sample hit them: adaptive sampling cannot promise to find "
+              "what is smaller than the spacing of its first samples.";
+    md << "\n";
 
     md << "\n## Every measurement\n\n| sampler | setting | samples | seconds | runs | RMSE | silhouette RMSE | PSNR (dB) | max error | refined |\n"
           "|---|---|---|---|---|---|---|---|---|---|\n";

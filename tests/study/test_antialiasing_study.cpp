@@ -89,7 +89,7 @@ TEST_CASE("the quick study writes its CSV, plots and Markdown") {
         const std::string text = read(out / svg);
         CHECK(text.rfind("<svg", 0) == 0);
         CHECK(text.find("</svg>") != std::string::npos);
-        CHECK(text.find("stratified (slope -0.") != std::string::npos);
+        CHECK(text.find("stratified (slope -") != std::string::npos); // the time slope depends on the machine
     }
     const std::string md = read(out / "accuracy.md");
     CHECK(md.find("accuracy_samples.svg") != std::string::npos);
