@@ -206,6 +206,23 @@ TEST_CASE("adaptive: more samples only at the silhouette (and one pixel around i
     CHECK(wide.rays == wide.stats.primaryRays);
 }
 
+TEST_CASE("adaptive: its passes draw the random numbers of the sampler they use, and no more") {
+    Job job;
+    job.sampler = SamplerKind::Adaptive;
+    job.samples = 4;
+    job.adaptive.maxSamples = 16;
+    job.adaptive.within = SamplerKind::Grid;
+    Counts c = render(job);
+    CHECK(c.stats.refinedPixels > 0);
+    CHECK(c.stats.randomNumbers == 0);
+    job.adaptive.within = SamplerKind::Sobol;
+    c = render(job);
+    CHECK(c.stats.randomNumbers == 2 * (kPixels + c.stats.refinedPixels));
+    job.adaptive.within = SamplerKind::Stratified;
+    c = render(job);
+    CHECK(c.stats.randomNumbers == 2 * (4 * kPixels + 16 * c.stats.refinedPixels));
+}
+
 TEST_CASE("adaptive: the same image on any number of threads") {
     Job job;
     job.sampler = SamplerKind::Adaptive;
