@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
     cli::Context context{argc, argv, build::kImpl, 0, build::kScenesDir};
     cli::addFigureCommands(app, context);
     cli::addBenchCommand(app, context);
+    cli::addStudyAntialiasingCommand(app, context);
+    cli::addBenchEffectsCommand(app, context);
     cli::addNumericsCommands(app, context);
     try {
         app.parse(argc, argv);

@@ -14,6 +14,8 @@ namespace raylab {
 
 namespace {
 
+constexpr std::int64_t kMaxSamples = 1 << 20;
+
 constexpr Picture kPictures[] = {Picture::Gradient, Picture::Directions, Picture::Flat, Picture::PlaceholderNormal,
                                  Picture::Cosine};
 
@@ -148,6 +150,44 @@ void readSpheres(const Reader& r, const toml::node& node, Scene& scene) {
     }
 }
 
+// [render.adaptive]: only with sampler = "adaptive", whose first pass needs two samples to compare
+// and whose second pass must take more samples than the first.
+void readAdaptive(const Reader& r, const toml::table& render, SceneDescription& d) {
+    const toml::table* t = r.table(render, "adaptive");
+    if (d.sampler != SamplerKind::Adaptive) {
+        if (t != nullptr)
+            r.fail(render.get("adaptive"), "[render.adaptive]",
+                   "only has a meaning with sampler = \"adaptive\" (the sampler is \"" + std::string(samplerName(d.sampler)) + "\")");
+        return;
+    }
+    if (d.samples < 2)
+        r.fail(render.get("samples") != nullptr ? render.get("samples") : &render, "[render] samples",
+               "adaptive sampling needs at least 2 samples per pixel to see them disagree (got " + std::to_string(d.samples) + ")");
+    if (t == nullptr) return;
+    const std::string_view section = "[render.adaptive] ";
+    r.onlyKeys(*t, section, {"threshold", "max_samples", "widen", "sampler"});
+    if (auto threshold = r.number(*t, section, "threshold")) {
+        if (*threshold < 0.) r.fail(t->get("threshold"), "[render.adaptive] threshold", std::to_string(*threshold) + " must be >= 0");
+        d.adaptive.threshold = float(*threshold);
+    }
+    d.adaptive.maxSamples = int(r.integer(*t, section, "max_samples", 1, kMaxSamples).value_or(d.adaptive.maxSamples));
+    if (d.adaptive.maxSamples <= d.samples)
+        r.fail(t->get("max_samples") != nullptr ? t->get("max_samples") : t, "[render.adaptive] max_samples",
+               std::to_string(d.adaptive.maxSamples) + " must be more than samples = " + std::to_string(d.samples) +
+                   ", or no pixel gets more samples");
+    if (const toml::node* widen = t->get("widen")) {
+        if (!widen->is_boolean()) r.fail(widen, "[render.adaptive] widen", "expected true or false, got " + Reader::typeName(*widen));
+        d.adaptive.widen = widen->as_boolean()->get();
+    }
+    if (auto sampler = r.string(*t, section, "sampler")) {
+        auto kind = samplerKindFromString(*sampler);
+        if (!kind || *kind == SamplerKind::Adaptive || *kind == SamplerKind::Center)
+            r.fail(t->get("sampler"), "[render.adaptive] sampler",
+                   "'" + *sampler + "' is not one of random, stratified, grid, sobol, r2");
+        d.adaptive.within = *kind;
+    }
+}
+
 } // namespace
 
 std::string_view pictureName(Picture picture) {
@@ -190,7 +230,7 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
     }
     if (const toml::table* t = r.table(root, "camera")) readCamera(r, *t, d.camera);
     if (const toml::table* t = r.table(root, "render")) {
-        r.onlyKeys(*t, "[render] ", {"shading", "samples", "sampler", "seed"});
+        r.onlyKeys(*t, "[render] ", {"shading", "samples", "sampler", "seed", "adaptive"});
         if (auto shading = r.string(*t, "[render] ", "shading")) {
             auto found = std::find_if(std::begin(kPictures), std::end(kPictures),
                                       [&](Picture p) { return pictureName(p) == *shading; });
@@ -199,14 +239,16 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
                        "'" + *shading + "' is not one of gradient, directions, flat, placeholder_normal, cosine");
             d.picture = *found;
         }
-        d.samples = int(r.integer(*t, "[render] ", "samples", 1, 1 << 20).value_or(1));
+        d.samples = int(r.integer(*t, "[render] ", "samples", 1, kMaxSamples).value_or(1));
         if (auto sampler = r.string(*t, "[render] ", "sampler")) {
             auto kind = samplerKindFromString(*sampler);
-            if (!kind) r.fail(t->get("sampler"), "[render] sampler", "'" + *sampler + "' is not one of center, random, stratified");
+            if (!kind)
+                r.fail(t->get("sampler"), "[render] sampler", "'" + *sampler + "' is not one of " + std::string(samplerNames()));
             d.sampler = *kind;
         } else if (d.samples > 1) {
             d.sampler = SamplerKind::Random;
         }
+        readAdaptive(r, *t, d);
         d.seed = std::uint64_t(r.integer(*t, "[render] ", "seed", 0, INT64_MAX).value_or(0));
     }
     if (auto background = r.vec3(root, "", "background")) d.scene.background = *background;
