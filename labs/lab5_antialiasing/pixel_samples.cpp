@@ -14,6 +14,8 @@ void Renderer::setNbPixelSamples(int nbSamples) {
 // sampler for an offset inside the pixel (sampler.next2D(), in [0, 1)^2), aim at the screen point
 //   sx = (i + offset.x) / W,  sy = (j + offset.y) / H     (W = m_camera.width(), H = m_camera.height())
 // and add m_integrator.Li(m_scene, m_camera.generateRay(sx, sy)). Return the sum / m_nbPixelSamples.
+// Tip: sum in double (glm::dvec3): a float sum drifts once a pixel has millions of samples
+// (docs/numerics.md, "accumulation").
 Color Renderer::renderPixel(int i, int j, PixelSampler& sampler) const {
     RAYLAB_TODO("lab 5", "Renderer::renderPixel");
 }

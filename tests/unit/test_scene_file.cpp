@@ -3,6 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <fstream>
+#include <random>
+#include <string>
 
 using namespace raylab;
 
@@ -10,7 +12,10 @@ namespace {
 
 // Writes a scene file in the temporary folder and loads it.
 SceneDescription loadText(const std::string& text, const std::string& name = "scene.toml") {
-    const auto file = std::filesystem::temp_directory_path() / "raylab_scene_tests" / name;
+    // One folder per test process: test runs from several build trees must not share files.
+    static const auto folder = std::filesystem::temp_directory_path() /
+                               ("raylab_scene_tests_" + std::to_string(std::random_device{}()));
+    const auto file = folder / name;
     std::filesystem::create_directories(file.parent_path());
     std::ofstream(file) << text;
     return loadSceneFile(file);
