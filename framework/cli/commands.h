@@ -29,3 +29,9 @@ void addFigureCommands(CLI::App& app, Context& context); // figures, lab, render
 void addBenchCommand(CLI::App& app, Context& context);   // bench
 
 } // namespace raylab::cli
+
+namespace raylab::cli {
+void addGradeCommands(CLI::App& app, Context& context);      // grade, grade-class
+void addReferencesCommand(CLI::App& app, Context& context); // references
+void addDistributeCommand(CLI::App& app, Context& context); // distribute
+} // namespace raylab::cli
