@@ -12,7 +12,9 @@ namespace fs = std::filesystem;
 
 std::string Diagnosis::text() const {
     if (!mistake) return "";
-    return "your image matches '" + mistake->name + "' (lab " + std::to_string(mistake->lab) + "): " + mistake->hint;
+    std::string text = "your image matches '" + mistake->name + "' (lab " + std::to_string(mistake->lab) + "): " + mistake->hint;
+    if (alike) text += "; or, as it draws the same picture here, '" + alike->name + "' (lab " + std::to_string(alike->lab) + "): " + alike->hint;
+    return text;
 }
 
 std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
@@ -81,17 +83,24 @@ Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figu
     const Image8 small = downsample(student);
     best.referenceDistance = meanAbsoluteDifference(small, downsample(reference));
     best.distance = std::numeric_limits<double>::infinity();
+    double alikeDistance = best.distance;
     for (const Mistake& m : mistakes)
         for (const auto& [id, signature] : m.signatures) {
             if (id != figure) continue;
             const double d = meanAbsoluteDifference(small, signature);
             if (d < best.distance) {
+                best.alike = best.mistake;
+                alikeDistance = best.distance;
                 best.distance = d;
                 best.mistake = &m;
+            } else if (d < alikeDistance) {
+                alikeDistance = d;
+                best.alike = &m;
             }
         }
+    if (!(alikeDistance <= best.distance + 0.25)) best.alike = nullptr;
     // A fit: within 3 LSB on average, and at most a third of the distance to the reference.
-    if (best.mistake && !(best.distance <= 3. && best.distance <= best.referenceDistance / 3.)) best.mistake = nullptr;
+    if (best.mistake && !(best.distance <= 3. && best.distance <= best.referenceDistance / 3.)) best.mistake = best.alike = nullptr;
     return best;
 }
 

@@ -25,6 +25,7 @@ struct Mistake {
 
 struct Diagnosis {
     const Mistake* mistake = nullptr; // null: no mistake of the catalogue fits
+    const Mistake* alike = nullptr;   // another mistake that draws the same picture (within 0.25 LSB)
     double distance = 0.;             // mean absolute difference to its signature, LSB
     double referenceDistance = 0.;    // the same to the reference
     std::string text() const;         // "your image matches 'fovy not halved': use tan(fovy / 2) ..."

@@ -48,10 +48,12 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan) {
                                       (scratch / "figures").string(), "--skip-file", (scratch / "skip.txt").string(),
                                       "--threads", std::to_string(setup.threads)};
         if (plan.lab) args.insert(args.end(), {"--lab", std::to_string(plan.lab)});
+        if (setup.seed >= 0) args.insert(args.end(), {"--seed", std::to_string(setup.seed)});
         const AgentRun run = runAgent(plan.program, args, scratch / ("run" + std::to_string(attempt)), setup.limits);
         std::string pendingCheck, pendingFigure;
         int pendingLab = plan.lab;
         bool done = false;
+        int progress = 0; // items finished in this run
         for (const std::string& line : run.lines) {
             const json j = json::parse(line, nullptr, false);
             if (!j.is_object()) continue; // not ours: ignored
@@ -68,12 +70,14 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan) {
                 if (c.lab != 0 && (plan.lab == 0 || c.lab == plan.lab)) r.checks[c.name] = c;
                 skip.insert(c.name);
                 pendingCheck.clear();
+                ++progress;
             } else if (kind == "figure-start") {
                 pendingFigure = j.value("id", "");
             } else if (kind == "figure") {
                 r.figures[j.value("id", "")] = j;
                 skip.insert("figure:" + j.value("id", ""));
                 pendingFigure.clear();
+                ++progress;
             } else if (kind == "done") {
                 done = true;
             }
@@ -88,7 +92,7 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan) {
             r.figures[pendingFigure] = json{{"kind", "figure"}, {"id", pendingFigure}, {"status", "failed"},
                                             {"message", "rendering " + why}};
             skip.insert("figure:" + pendingFigure);
-        } else {
+        } else if (progress == 0) { // nothing new: another run would do the same
             r.problems.push_back(plan.program.filename().string() + " " + why + " before it had reported everything" +
                                  (run.stderrTail.empty() ? "" : ": " + run.stderrTail));
             return r;

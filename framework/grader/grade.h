@@ -63,6 +63,7 @@ struct GradeSetup {
     std::filesystem::path scratch; // a folder of our own: agents run and write here
     SandboxLimits limits;
     int threads = 0;
+    long long seed = -1; // >= 0: the agents render with this seed instead of the scenes' own
 };
 
 GradeSetup loadGradeSetup(const std::filesystem::path& references, const std::filesystem::path& points,

@@ -155,7 +155,7 @@ AgentRun runAgent(const fs::path& program, const std::vector<std::string>& args,
     fs::create_directories(scratch);
     AgentRun run;
 #ifdef RAYLAB_POSIX_SANDBOX
-    run = runPosix(program, args, scratch, limits);
+    run = runPosix(fs::absolute(program), args, scratch, limits); // the child changes folder first
 #else
     (void)limits;
     const fs::path results = fs::absolute(scratch / "results.jsonl");

@@ -73,6 +73,9 @@ TEST_CASE("lookAt: the default camera as a lookAt camera") {
 }
 
 TEST_CASE("lookAt: a degenerate camera is refused with an error") {
+    // A constructor that refuses everything earns nothing: a valid camera must be built first.
+    const PerspectiveCamera valid(200, 100, {0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}, {0.f, 1.f, 0.f}, 60.f);
+    expectNear("a valid camera's w", valid.w(), glm::vec3(0.f, 0.f, -1.f), 1e-6f, "w = normalize(position - target)");
     expectRefused("up parallel to the view direction", {0.f, 0.f, 0.f}, {0.f, 2.f, 0.f}, {0.f, 1.f, 0.f});
     expectRefused("position equal to the target", {1.f, 2.f, 3.f}, {1.f, 2.f, 3.f}, {0.f, 1.f, 0.f});
 }
