@@ -37,8 +37,8 @@ int distribute(const fs::path& source, const fs::path& out) {
     const fs::path outAbs = fs::canonical(out);
     int files = 0;
     for (auto it = fs::recursive_directory_iterator(sourceAbs); it != fs::recursive_directory_iterator(); ++it) {
-        const fs::path relative = fs::relative(it->path(), sourceAbs);
-        if (withheld(relative) || it->path() == outAbs) {
+        const fs::path relative = it->path().lexically_relative(sourceAbs); // fs::relative would follow links
+        if (withheld(relative) || it->path() == outAbs || it->is_symlink()) {
             if (it->is_directory()) it.disable_recursion_pending();
             continue;
         }

@@ -159,7 +159,10 @@ int gradeClass(const std::string& classDir, const std::string& outDir, GradeOpti
         row << csvField(name);
         for (const LabOutcome& lab : result.labs) row << "," << lab.points;
         std::string problems;
-        for (const std::string& p : result.problems) problems += (problems.empty() ? "" : " | ") + p.substr(0, p.find('\n'));
+        for (const std::string& p : result.problems) { // its first two lines: what, and the first error
+            const std::size_t second = p.find('\n', p.find('\n') + 1);
+            problems += (problems.empty() ? "" : " | ") + p.substr(0, std::min<std::size_t>(second, 300));
+        }
         row << "," << result.score() << "," << result.maxScore() << "," << csvField(problems) << "\n";
         std::ofstream(csv, std::ios::app) << row.str() << std::flush; // a row a student: nothing lost on a stop
         std::printf("%-20s %g / %g\n", name.c_str(), result.score(), result.maxScore());

@@ -168,14 +168,14 @@ FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& refer
 void addUnbuiltLab(const GradeSetup& setup, GradeResult& result, int lab) {
     if (const auto it = setup.points.labs.find(lab); it != setup.points.labs.end())
         for (const auto& [item, points] : it->second)
-            if (isCheckItem(item)) addCheck(setup, result, CheckOutcome{lab, item, false, "the code does not build", 0., 0.});
+            if (isCheckItem(item)) addCheck(setup, result, CheckOutcome{lab, item, false, "the code does not build (the compiler's message is at the top of the report)", 0., 0.});
     for (const FigureReference& reference : setup.references.figures) {
         if (reference.lab != lab) continue;
         FigureOutcome f;
         f.id = reference.id;
         f.lab = reference.lab;
         f.maxPoints = setup.points.points(f.lab, figureItem(f.id), kDefaultFigurePoints);
-        f.reason = "the code does not build";
+        f.reason = "the code does not build (the compiler's message is at the top of the report)";
         result.figures.push_back(std::move(f));
     }
 }

@@ -32,8 +32,8 @@ std::string errorLines(const fs::path& log) {
     int count = 0;
     for (std::string line; std::getline(in, line);) {
         all += line + "\n";
-        if ((line.find("error") != std::string::npos || line.find("Error") != std::string::npos) && count++ < 40)
-            errors += line + "\n";
+        const bool error = line.find("error") != std::string::npos || line.find("Error") != std::string::npos;
+        if (error && errors.find(line + "\n") == std::string::npos && count++ < 40) errors += line + "\n"; // once each
     }
     if (!errors.empty()) return errors;
     if (all.size() > 3000) all.erase(0, all.size() - 3000).insert(0, "...");

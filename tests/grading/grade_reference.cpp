@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <cmath>
 #include <set>
 
 using namespace raylab::test;
@@ -65,6 +66,38 @@ TEST_CASE("the stubs of labs/ get zero, each check saying what to write") {
     REQUIRE(f);
     CHECK(f->reason.find("lab 3 not done yet") != std::string::npos);
     CHECK(r.labs[2].notes.front().find("other labs came from the reference") != std::string::npos);
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("grade reference") {
+
+// The course's own statistical reference rejects the broken renders of the issue: blurred, and
+// a biased average (sum / (N + 1)); the correct render itself passes.
+TEST_CASE("lab5_antialiased: blurred and biased versions of a correct render fail") {
+    const GradeSetup setup = courseSetup();
+    const FigureReference* lab5 = setup.references.find("lab5_antialiased");
+    REQUIRE(lab5);
+    REQUIRE(lab5->stats);
+    const raylab::Image8& correct = lab5->image;
+    CHECK(compareImage(*lab5, correct).passed);
+
+    raylab::Image8 blurred = correct, biased = correct;
+    for (int j = 1; j + 1 < correct.height; ++j)
+        for (int i = 1; i + 1 < correct.width; ++i)
+            for (int c = 0; c < 3; ++c) {
+                int sum = 0;
+                for (int y = -1; y <= 1; ++y)
+                    for (int x = -1; x <= 1; ++x) sum += correct.pixel(i + x, j + y)[c];
+                blurred.rgb[3 * (std::size_t(j) * correct.width + i) + c] = std::uint8_t((sum + 4) / 9);
+            }
+    for (std::uint8_t& v : biased.rgb) v = std::uint8_t(std::lround(v * 32. / 33.));
+    const ImageVerdict b = compareImage(*lab5, blurred), s = compareImage(*lab5, biased);
+    CHECK_FALSE(b.passed);
+    CHECK_FALSE(s.passed);
+    CHECK(s.reason.find("biased") != std::string::npos);
+    MESSAGE("blurred 3 x 3: " << b.reason);
+    MESSAGE("sum / (N + 1): " << s.reason);
 }
 
 } // TEST_SUITE
