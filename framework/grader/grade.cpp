@@ -23,6 +23,7 @@ bool isCheckItem(const std::string& item) { return item.rfind("figure ", 0) != 0
 // What an agent reported, over all its runs.
 struct Reported {
     std::map<std::string, CheckOutcome> checks; // by name
+    std::vector<std::string> order;             // the names in the order the checks ran (their files' order)
     std::map<std::string, json> figures;        // by id: the agent's "figure" line
     std::vector<std::string> problems;
 };
@@ -67,7 +68,10 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan) {
                 c.name = j.value("name", "");
                 c.passed = j.value("passed", false);
                 c.message = j.value("message", "");
-                if (c.lab != 0 && (plan.lab == 0 || c.lab == plan.lab)) r.checks[c.name] = c;
+                if (c.lab != 0 && (plan.lab == 0 || c.lab == plan.lab) && !r.checks.count(c.name)) {
+                    r.order.push_back(c.name);
+                    r.checks[c.name] = c;
+                }
                 skip.insert(c.name);
                 pendingCheck.clear();
                 ++progress;
@@ -86,6 +90,7 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan) {
         const std::string why = run.describe();
         if (!pendingCheck.empty()) {
             CheckOutcome c{pendingLab, pendingCheck, false, "this check " + why + (run.stderrTail.empty() ? "" : "; its error output ends with: " + run.stderrTail), 0., 0.};
+            if (!r.checks.count(c.name)) r.order.push_back(c.name);
             r.checks[c.name] = c;
             skip.insert(c.name);
         } else if (!pendingFigure.empty()) {
@@ -243,18 +248,14 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         if (planIt == agentOfLab.end()) continue;
         const AgentPlan& plan = *planIt->second;
         Reported& r = reports[&plan];
-        // Every check the table names is graded: one never reported has failed.
-        std::set<std::string> seen;
+        // Every check reported, in the order it ran; then every check the table names that was
+        // never reported, failed.
+        for (const std::string& name : r.order)
+            if (r.checks[name].lab == lab) addCheck(setup, result, r.checks[name]);
         if (const auto it = setup.points.labs.find(lab); it != setup.points.labs.end())
-            for (const auto& [item, points] : it->second) {
-                if (!isCheckItem(item)) continue;
-                seen.insert(item);
-                const auto c = r.checks.find(item);
-                addCheck(setup, result, c != r.checks.end() ? c->second
-                                                            : CheckOutcome{lab, item, false, "never ran: the code stopped before this check", 0., 0.});
-            }
-        for (const auto& [name, c] : r.checks)
-            if (c.lab == lab && !seen.count(name)) addCheck(setup, result, c);
+            for (const auto& [item, points] : it->second)
+                if (isCheckItem(item) && !r.checks.count(item))
+                    addCheck(setup, result, CheckOutcome{lab, item, false, "never ran: the code stopped before this check", 0., 0.});
         for (const FigureReference& reference : setup.references.figures) {
             if (reference.lab != lab) continue;
             const auto it = r.figures.find(reference.id);
@@ -282,7 +283,17 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         if (lab.points >= lab.maxPoints) continue;
         for (int dep : labDependencies(lab.lab)) {
             const LabOutcome& other = result.labs[std::size_t(dep - 1)];
-            if (other.points < other.maxPoints)
+            if (other.points >= other.maxPoints) continue;
+            // Only when a failure of this lab can come from that one: a figure drawn with its code,
+            // or a check whose message names it ("lab 4 not done yet").
+            const std::string name = "lab " + std::to_string(dep);
+            const bool figure = std::any_of(result.figures.begin(), result.figures.end(), [&](const FigureOutcome& f) {
+                return f.lab == lab.lab && !f.passed && dep != 4;
+            });
+            const bool check = std::any_of(result.checks.begin(), result.checks.end(), [&](const CheckOutcome& c) {
+                return c.lab == lab.lab && !c.passed && c.message.find(name + " ") != std::string::npos;
+            });
+            if (figure || check)
                 lab.notes.push_back("lab " + std::to_string(lab.lab) + " uses lab " + std::to_string(dep) +
                                     ", which has failures: fix lab " + std::to_string(dep) + " first");
         }

@@ -85,7 +85,8 @@ GradeResult gradeImages(const GradeSetup& setup, const std::filesystem::path& fo
 // A submission that did not build: every item at zero, with the compiler's message.
 GradeResult gradeBuildFailure(const GradeSetup& setup, const std::string& compilerMessage);
 
-// The labs whose code a lab's figures and checks also use (lab 4's figures use labs 2 and 3 ...).
+// The labs whose code a lab's figures and checks also use (lab 4's figures use labs 2 and 3; one
+// lab 2 check builds its camera with lab 4's lookAt).
 const std::vector<int>& labDependencies(int lab);
 
 } // namespace raylab::grader

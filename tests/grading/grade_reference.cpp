@@ -101,3 +101,18 @@ TEST_CASE("lab5_antialiased: blurred and biased versions of a correct render fai
 }
 
 } // TEST_SUITE
+
+TEST_SUITE("grade reference") {
+
+TEST_CASE("without the reference, grading is cumulative and names the earlier lab to fix first") {
+    GradeSetup setup = courseSetup();
+    const GradeResult r = gradeCode(setup, {{binDir() / "raylab-agent", 0}}, false); // labs/: all stubs
+    fs::remove_all(setup.scratch);
+    REQUIRE(r.labs.size() == 5);
+    CHECK(r.labs[0].notes.empty());
+    REQUIRE_FALSE(r.labs[2].notes.empty());
+    CHECK(r.labs[2].notes.front() == "lab 3 uses lab 2, which has failures: fix lab 2 first");
+    CHECK(r.labs[3].notes.size() == 2); // labs 2 and 3
+}
+
+} // TEST_SUITE
