@@ -27,6 +27,7 @@ struct GradeOptions {
     std::string labs, images, report = "out/report", references, points, buildDir;
     std::vector<std::string> agents; // expert: grade these agent programs (each runs every lab)
     double timeout = 180.;
+    int lab = 0; // 0: every lab
 };
 
 fs::path sourcePath(const char* relative) { return fs::path(build::kSourceDir) / relative; }
@@ -91,6 +92,11 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
         if (agents.empty())
             throw std::runtime_error(std::string("no grading agent in ") + build::kBinaryDir +
                                      "; build first: cmake --build build");
+    }
+    if (o.lab != 0) { // one lab: its own agent, or the cumulative agent asked for that lab only
+        std::erase_if(agents, [&](const AgentPlan& a) { return a.lab != 0 && a.lab != o.lab; });
+        for (AgentPlan& a : agents) a.lab = o.lab;
+        std::erase_if(unbuilt, [&](int lab) { return lab != o.lab; });
     }
     GradeResult result = gradeCode(setup, agents, isolated, unbuilt, message);
     result.title = std::move(title);
@@ -188,6 +194,7 @@ void addGradeCommands(CLI::App& app, Context& context) {
     grade->add_option("--labs", o->labs, "a submission: a copy of labs/ to build and grade")->check(CLI::ExistingDirectory);
     grade->add_option("--images", o->images, "grade pictures DIR/<figure id>.png, no code");
     grade->add_option("--report", o->report, "where the reports go (default: out/report)");
+    grade->add_option("--lab", o->lab, "grade this lab only (1 to 5)")->check(CLI::Range(1, 5));
     grade->add_option("--agent", o->agents, "expert: grade this agent program (all labs)")->group("");
     addCommonOptions(grade, *o);
     context.addRenderOptions(grade);

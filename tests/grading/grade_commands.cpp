@@ -132,3 +132,16 @@ TEST_CASE("distribute writes a tree without the solutions, with the references")
 }
 
 } // TEST_SUITE
+
+TEST_SUITE("commands") {
+
+TEST_CASE("grade --lab N grades that lab alone") {
+    const fs::path dir = freshFolder("raylab-grade-lab");
+    const Run run = runRaylab("grade --lab 5 --agent \"" + (binDir() / "raylab-mistake-i_j_swapped").string() +
+                              "\" --report \"" + (dir / "report").string() + "\"", dir);
+    CHECK_MESSAGE(run.status == 0, run.output); // the mistake is in lab 1
+    CHECK(run.output.find("lab1") == std::string::npos);
+    CHECK(hasLine(run.output, "  total: 12 / 12", ""));
+}
+
+} // TEST_SUITE
