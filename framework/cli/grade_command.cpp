@@ -182,7 +182,7 @@ int gradeClass(const std::string& classDir, const std::string& outDir, GradeOpti
 void addCommonOptions(CLI::App* command, GradeOptions& o) {
     command->add_option("--references", o.references, "the reference folder (default: tests/references)");
     command->add_option("--points", o.points, "the points table (default: tests/grading/points.toml)");
-    command->add_option("--timeout", o.timeout, "seconds an agent may run before it is stopped");
+    command->add_option("--timeout", o.timeout, "seconds a check or figure may run before it is stopped");
     command->add_option("--build-dir", o.buildDir, "where submissions are built");
 }
 

@@ -15,6 +15,7 @@
 #include <poll.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <algorithm>
 #include <thread>
 #include <unistd.h>
 #endif
@@ -102,9 +103,12 @@ AgentRun runPosix(const fs::path& program, const std::vector<std::string>& args,
     close(fds[1]);
     setpgid(pid, pid); // also here, so the group exists whoever runs first
     AgentRun run;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limits.wallSeconds);
+    using Clock = std::chrono::steady_clock;
+    const auto seconds = [](double s) { return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s)); };
+    const Clock::time_point end = Clock::now() + seconds(limits.totalSeconds);
+    Clock::time_point deadline = std::min(end, Clock::now() + seconds(limits.wallSeconds));
     auto remainingMs = [&] {
-        return int(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count());
+        return int(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count());
     };
     std::string received;
     const std::size_t maxBytes = 16u << 20; // more than any honest report
@@ -123,6 +127,7 @@ AgentRun runPosix(const fs::path& program, const std::vector<std::string>& args,
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) break; // every writer closed: the agent ended
         if (received.size() < maxBytes) received.append(buffer, std::size_t(n));
+        deadline = std::min(end, Clock::now() + seconds(limits.wallSeconds)); // it spoke: a new item's time
     }
     close(fds[0]);
     int status = 0;

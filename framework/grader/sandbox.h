@@ -12,8 +12,11 @@
 namespace raylab::grader {
 
 struct SandboxLimits {
-    int cpuSeconds = 120;
-    double wallSeconds = 180.;
+    int cpuSeconds = 600;       // CPU time of the whole run
+    double wallSeconds = 180.;  // wall-clock time without a word from the child: each check and figure
+                                // announces itself, so this is a limit per item, and a slow item
+                                // never makes the next one late
+    double totalSeconds = 1800.; // wall-clock time of the whole run
     unsigned long long memoryBytes = 4ull << 30;
     unsigned long long fileBytes = 256ull << 20;
 };
