@@ -107,7 +107,7 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan) {
     return r;
 }
 
-void scoreLabs(const GradeSetup& setup, GradeResult& result) {
+void scoreLabs(GradeResult& result) {
     std::map<int, LabOutcome> labs;
     for (int lab = 1; lab <= 5; ++lab) labs[lab].lab = lab;
     for (const CheckOutcome& c : result.checks) {
@@ -118,7 +118,6 @@ void scoreLabs(const GradeSetup& setup, GradeResult& result) {
         labs[f.lab].points += f.points;
         labs[f.lab].maxPoints += f.maxPoints;
     }
-    (void)setup;
     for (auto& [lab, outcome] : labs) result.labs.push_back(outcome);
 }
 
@@ -274,7 +273,7 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
             result.figures.push_back(std::move(f));
         }
     }
-    scoreLabs(setup, result);
+    scoreLabs(result);
     for (LabOutcome& lab : result.labs) {
         if (isolated) {
             lab.notes.push_back("graded on its own: the other labs came from the reference solutions");
@@ -311,7 +310,7 @@ GradeResult gradeImages(const GradeSetup& setup, const fs::path& folder) {
         for (const auto& entry : fs::directory_iterator(folder))
             if (entry.path().extension() == ".png" && !setup.references.find(entry.path().stem().string()))
                 result.problems.push_back("ignored " + entry.path().filename().string() + ": no figure has this id");
-    scoreLabs(setup, result);
+    scoreLabs(result);
     return result;
 }
 

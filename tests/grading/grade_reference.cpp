@@ -52,12 +52,10 @@ TEST_CASE("every check the agent runs is in the points table, and the other way 
 
 TEST_CASE("the stubs of labs/ get zero, each check saying what to write") {
     GradeSetup setup = courseSetup();
-    bool isolated = false;
     std::vector<AgentPlan> agents;
     for (int lab = 1; lab <= 5; ++lab) agents.push_back({binDir() / ("raylab-agent-lab" + std::to_string(lab)), lab});
     const GradeResult r = gradeCode(setup, agents, true);
     fs::remove_all(setup.scratch);
-    (void)isolated;
     CHECK(r.score() == 0.);
     const CheckOutcome* c = findCheck(r, "generateRay: directions are unit vectors");
     REQUIRE(c);
