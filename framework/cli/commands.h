@@ -27,6 +27,8 @@ struct Context {
 
 void addFigureCommands(CLI::App& app, Context& context); // figures, lab, render
 void addBenchCommand(CLI::App& app, Context& context);   // bench
+void addStudyAntialiasingCommand(CLI::App& app, Context& context); // study antialiasing
+void addBenchEffectsCommand(CLI::App& app, Context& context); // bench-effects
 
 } // namespace raylab::cli
 

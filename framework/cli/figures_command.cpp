@@ -1,6 +1,7 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "raylab/contact_sheet.h"
 #include "raylab/figure.h"
 #include "raylab/image_io.h"
 #include "raylab/terminal.h"
@@ -67,10 +68,18 @@ int runFigures(const FiguresOptions& o) {
     std::printf("raylab %s build (%s) -> %s\n", build::kImpl, build::kLabOrigins, o.out.string().c_str());
     int failed = 0, todo = 0;
     const RenderOptions renderOptions{o.threads, stderrIsInteractive()};
+    std::vector<ContactSheetItem> sheet;
     for (const SceneDescription& d : scenes) {
         const FigureResult r = renderScene(d, renderOptions);
         if (!report(d, r, o.out / (d.id + ".png"))) ++failed;
         if (r.status == FigureResult::Status::NotDoneYet) ++todo;
+        if (r.status == FigureResult::Status::Rendered) sheet.push_back({d.id, quantize(*r.image), ""});
+        else sheet.push_back({d.id, std::nullopt, r.status == FigureResult::Status::NotDoneYet ? "todo" : "failed"});
+    }
+    // Every figure at a glance, when all of them were asked for (`raylab figures` without --only).
+    if (o.lab == 0 && o.only.empty() && !sheet.empty()) {
+        writePng(o.out / "contact_sheet.png", makeContactSheet(sheet));
+        std::printf("  %-24s           -> %s\n", "contact_sheet", (o.out / "contact_sheet.png").string().c_str());
     }
     std::printf("%zu figures: %zu rendered, %d waiting for a lab not done yet, %d failed\n", scenes.size(),
                 scenes.size() - std::size_t(todo + failed), todo, failed);

@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
     cli::addGradeCommands(app, context);
     cli::addReferencesCommand(app, context);
     cli::addDistributeCommand(app, context);
+    cli::addStudyAntialiasingCommand(app, context);
+    cli::addBenchEffectsCommand(app, context);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

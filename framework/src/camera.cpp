@@ -1,21 +1,15 @@
 #include "raylab/perspective_camera.h"
+#include "raylab/text.h"
 
 #include <glm/geometric.hpp>
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace raylab {
 
 namespace {
-
-std::string show(const glm::vec3& p) {
-    std::ostringstream out;
-    out << "(" << p.x << ", " << p.y << ", " << p.z << ")";
-    return out.str();
-}
 
 bool isFinite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
@@ -31,24 +25,24 @@ PerspectiveCamera::PerspectiveCamera(int width, int height, float fovyDegrees)
     : BaseCamera(width, height), m_fovy(fovyDegrees) {
     // tan(fovy / 2) is 0 at 0 degrees and infinite at 180: no screen either way.
     if (!(fovyDegrees > 0.f && fovyDegrees < 180.f))
-        throw std::invalid_argument("camera: fovy = " + std::to_string(fovyDegrees) +
+        throw std::invalid_argument("camera: fovy = " + showNumber(fovyDegrees) +
                                     " degrees has no meaning; it must be strictly between 0 and 180");
     updateViewport();
 }
 
 void checkLookAtParameters(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up) {
-    if (!isFinite(position)) throw std::invalid_argument("camera: position = " + show(position) + " is not finite");
-    if (!isFinite(target)) throw std::invalid_argument("camera: look_at = " + show(target) + " is not finite");
-    if (!isFinite(up)) throw std::invalid_argument("camera: up = " + show(up) + " is not finite");
+    if (!isFinite(position)) throw std::invalid_argument("camera: position = " + showVector(position) + " is not finite");
+    if (!isFinite(target)) throw std::invalid_argument("camera: look_at = " + showVector(target) + " is not finite");
+    if (!isFinite(up)) throw std::invalid_argument("camera: up = " + showVector(up) + " is not finite");
     const glm::vec3 view = target - position;
     if (!(glm::length(view) > 0.f) || !isFinite(glm::normalize(view)))
-        throw std::invalid_argument("camera: position = look_at = " + show(position) +
+        throw std::invalid_argument("camera: position = look_at = " + showVector(position) +
                                     ": the camera looks nowhere; move the target away from the position");
     const float upLength = glm::length(up);
     // |cross(up, view)| = |up| |view| sin(angle): below 1e-6 the basis would be noise.
     if (!(upLength > 0.f) || glm::length(glm::cross(up, glm::normalize(view))) <= 1e-6f * upLength)
-        throw std::invalid_argument("camera: up = " + show(up) + " is parallel to the view direction " +
-                                    show(glm::normalize(view)) + ", so it gives no vertical; choose another up");
+        throw std::invalid_argument("camera: up = " + showVector(up) + " is parallel to the view direction " +
+                                    showVector(glm::normalize(view)) + ", so it gives no vertical; choose another up");
 }
 
 } // namespace raylab

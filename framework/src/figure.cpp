@@ -50,6 +50,7 @@ FigureResult renderScene(const SceneDescription& d, const RenderOptions& options
             renderer.setProgress(options.progress);
             renderer.setSampler(d.sampler);
             renderer.setSeed(d.seed);
+            renderer.setAdaptive(d.adaptive);
             // Lab 5's code is only asked for when the scene wants more than one sample.
             if (d.samples != 1) renderer.setNbPixelSamples(d.samples);
             result.image = renderer.renderImage();

@@ -1,5 +1,6 @@
 #include "raylab/sampler.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace raylab {
@@ -9,15 +10,67 @@ std::string_view samplerName(SamplerKind kind) {
     case SamplerKind::Center: return "center";
     case SamplerKind::Random: return "random";
     case SamplerKind::Stratified: return "stratified";
+    case SamplerKind::Grid: return "grid";
+    case SamplerKind::Sobol: return "sobol";
+    case SamplerKind::R2: return "r2";
+    case SamplerKind::Adaptive: return "adaptive";
     }
     return "?";
 }
 
 std::optional<SamplerKind> samplerKindFromString(std::string_view name) {
-    for (SamplerKind kind : {SamplerKind::Center, SamplerKind::Random, SamplerKind::Stratified})
+    for (SamplerKind kind : kAllSamplerKinds)
         if (samplerName(kind) == name) return kind;
     return std::nullopt;
 }
+
+std::string_view samplerNames() { return "center, random, stratified, grid, sobol, r2, adaptive"; }
+
+namespace lowdiscrepancy {
+
+namespace {
+
+std::uint32_t reverseBits(std::uint32_t x) {
+    x = (x << 16) | (x >> 16);
+    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+    return ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+}
+
+} // namespace
+
+std::uint32_t sobol(std::uint32_t index, int dimension) {
+    // Dimension 0 is van der Corput in base 2: the index's bits mirrored behind the binary point.
+    if (dimension == 0) return reverseBits(index);
+    // Dimension 1 (primitive polynomial x + 1): direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1).
+    std::uint32_t x = 0;
+    for (std::uint32_t v = 0x80000000u; index != 0; index >>= 1, v ^= v >> 1)
+        if (index & 1u) x ^= v;
+    return x;
+}
+
+std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed) {
+    // Owen scrambling flips each bit by a hash of the bits above it. Reversed, "the bits above"
+    // become the lower bits, which is what a multiply-xorshift hash mixes upwards.
+    x = reverseBits(x);
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return reverseBits(x);
+}
+
+glm::dvec2 r2(std::uint32_t index) {
+    // g is the real root of x^3 = x + 1; 1/g and 1/g^2 are badly approximable, so the points of
+    // n * alpha modulo 1 fill the square evenly for every n, not only powers of two.
+    constexpr double g = 1.32471795724474602596;
+    const double x = double(index) / g, y = double(index) / (g * g);
+    return {x - std::floor(x), y - std::floor(y)}; // the fractional parts, without the slow fmod
+}
+
+} // namespace lowdiscrepancy
 
 namespace {
 
@@ -28,28 +81,69 @@ void gridFor(int n, int& columns, int& rows) {
     columns = n / rows;
 }
 
+// The largest float below 1: (k + r) / n and sums modulo 1 can round up to exactly 1 in float.
+constexpr float kBelowOne = 0x1.fffffep-1f;
+
+float toUnitFloat(std::uint32_t fraction) { return float(fraction >> 8) * 0x1p-24f; }
+
 } // namespace
 
 PixelSampler::PixelSampler(SamplerKind kind, int nbSamples, std::uint64_t seed, int i, int j, int width)
-    : m_kind(kind), m_nbSamples(nbSamples < 1 ? 1 : nbSamples),
-      m_rng(seed, std::uint64_t(j) * std::uint64_t(width) + std::uint64_t(i)) {
+    : m_kind(kind == SamplerKind::Adaptive ? SamplerKind::Stratified : kind), m_nbSamples(nbSamples < 1 ? 1 : nbSamples),
+      m_seed(seed), m_stream(std::uint64_t(j) * std::uint64_t(width) + std::uint64_t(i)) {
     gridFor(m_nbSamples, m_gridWidth, m_gridHeight);
+    if (m_kind == SamplerKind::Sobol) {
+        m_rng.emplace(m_seed, m_stream);
+        m_scramble[0] = m_rng->nextUInt();
+        m_scramble[1] = m_rng->nextUInt();
+        m_drawn += 2;
+    } else if (m_kind == SamplerKind::R2) {
+        m_rng.emplace(m_seed, m_stream);
+        m_shift[0] = double(m_rng->nextUInt()) * 0x1p-32;
+        m_shift[1] = double(m_rng->nextUInt()) * 0x1p-32;
+        m_drawn += 2;
+    }
+}
+
+float PixelSampler::uniform() {
+    if (!m_rng) m_rng.emplace(m_seed, m_stream);
+    ++m_drawn;
+    return m_rng->nextFloat();
 }
 
 glm::vec2 PixelSampler::next2D() {
     switch (m_kind) {
     case SamplerKind::Center: return {0.5f, 0.5f};
     case SamplerKind::Random: {
-        const float x = m_rng.nextFloat();
-        return {x, m_rng.nextFloat()};
+        const float x = uniform();
+        return {x, uniform()};
     }
-    case SamplerKind::Stratified: {
-        const int cell = m_index++ % (m_gridWidth * m_gridHeight);
-        const float x = (float(cell % m_gridWidth) + m_rng.nextFloat()) / float(m_gridWidth);
-        const float y = (float(cell / m_gridWidth) + m_rng.nextFloat()) / float(m_gridHeight);
-        // (k + r) / n can round up to exactly 1 in float; keep the offset inside the pixel.
-        return {std::fmin(x, 0x1.fffffep-1f), std::fmin(y, 0x1.fffffep-1f)};
+    case SamplerKind::Stratified:
+    case SamplerKind::Grid: {
+        const float jx = m_kind == SamplerKind::Grid ? 0.5f : uniform();
+        const float jy = m_kind == SamplerKind::Grid ? 0.5f : uniform();
+        const float x = (float(m_cellX) + jx) / float(m_gridWidth);
+        const float y = (float(m_cellY) + jy) / float(m_gridHeight);
+        // The next cell, row by row, without an integer division per sample.
+        if (++m_cellX == m_gridWidth) {
+            m_cellX = 0;
+            if (++m_cellY == m_gridHeight) m_cellY = 0;
+        }
+        return {std::min(x, kBelowOne), std::min(y, kBelowOne)};
     }
+    case SamplerKind::Sobol: {
+        const std::uint32_t k = m_index++;
+        return {toUnitFloat(lowdiscrepancy::owenScramble(lowdiscrepancy::sobol(k, 0), m_scramble[0])),
+                toUnitFloat(lowdiscrepancy::owenScramble(lowdiscrepancy::sobol(k, 1), m_scramble[1]))};
+    }
+    case SamplerKind::R2: {
+        const glm::dvec2 p = lowdiscrepancy::r2(m_index++);
+        double x = p.x + m_shift[0], y = p.y + m_shift[1];
+        x -= x >= 1. ? 1. : 0.;
+        y -= y >= 1. ? 1. : 0.;
+        return {std::min(float(x), kBelowOne), std::min(float(y), kBelowOne)};
+    }
+    case SamplerKind::Adaptive: break; // mapped to Stratified in the constructor
     }
     return {0.5f, 0.5f};
 }

@@ -1,6 +1,7 @@
 #include "raylab/scene.h"
 
 #include "raylab/integrator.h"
+#include "raylab/text.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -11,7 +12,7 @@ namespace raylab {
 SphereGeometry::SphereGeometry(const glm::vec3& center, float radius, const Color& color)
     : m_center(center), m_radius(radius), m_color(color) {
     if (!(radius > 0.f) || !std::isfinite(radius))
-        throw std::invalid_argument("sphere: radius = " + std::to_string(radius) +
+        throw std::invalid_argument("sphere: radius = " + showNumber(radius) +
                                     " has no meaning; it must be positive and finite");
     if (!std::isfinite(center.x) || !std::isfinite(center.y) || !std::isfinite(center.z))
         throw std::invalid_argument("sphere: center is not finite");

@@ -1,5 +1,7 @@
 #include "raylab/scene_file.h"
 
+#include "raylab/text.h"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -11,6 +13,8 @@
 namespace raylab {
 
 namespace {
+
+constexpr std::int64_t kMaxSamples = 1 << 20;
 
 constexpr Picture kPictures[] = {Picture::Gradient, Picture::Directions, Picture::Flat, Picture::PlaceholderNormal,
                                  Picture::Cosine};
@@ -44,7 +48,7 @@ public:
         if (auto f = node->as_floating_point()) value = f->get();
         else if (auto i = node->as_integer()) value = double(i->get());
         else fail(node, name(section, key), "expected a number, got " + typeName(*node));
-        if (!std::isfinite(*value)) fail(node, name(section, key), "must be finite, got " + std::to_string(*value));
+        if (!std::isfinite(*value)) fail(node, name(section, key), "must be finite, got " + showNumber(*value));
         return value;
     }
 
@@ -116,7 +120,7 @@ void readCamera(const Reader& r, const toml::table& t, CameraDescription& camera
     r.onlyKeys(t, "[camera] ", {"position", "look_at", "up", "fovy"});
     if (auto fovy = r.number(t, "[camera] ", "fovy")) {
         if (!(*fovy > 0. && *fovy < 180.))
-            r.fail(t.get("fovy"), "[camera] fovy", std::to_string(*fovy) + " degrees has no meaning; it must be strictly between 0 and 180");
+            r.fail(t.get("fovy"), "[camera] fovy", showNumber(*fovy) + " degrees has no meaning; it must be strictly between 0 and 180");
         camera.fovy = float(*fovy);
     }
     const auto position = r.vec3(t, "[camera] ", "position");
@@ -141,8 +145,46 @@ void readSpheres(const Reader& r, const toml::node& node, Scene& scene) {
         const auto center = r.vec3(t, "[[sphere]] ", "center");
         const auto radius = r.number(t, "[[sphere]] ", "radius");
         if (!center || !radius) r.fail(&t, "[[sphere]]", "a sphere needs a center and a radius");
-        if (!(*radius > 0.)) r.fail(t.get("radius"), "[[sphere]] radius", std::to_string(*radius) + " must be positive");
+        if (!(*radius > 0.)) r.fail(t.get("radius"), "[[sphere]] radius", showNumber(*radius) + " must be positive");
         scene.spheres.emplace_back(*center, float(*radius), r.vec3(t, "[[sphere]] ", "color").value_or(Color(1.f)));
+    }
+}
+
+// [render.adaptive]: only with sampler = "adaptive", whose first pass needs two samples to compare
+// and whose second pass must take more samples than the first.
+void readAdaptive(const Reader& r, const toml::table& render, SceneDescription& d) {
+    const toml::table* t = r.table(render, "adaptive");
+    if (d.sampler != SamplerKind::Adaptive) {
+        if (t != nullptr)
+            r.fail(render.get("adaptive"), "[render.adaptive]",
+                   "only has a meaning with sampler = \"adaptive\" (the sampler is \"" + std::string(samplerName(d.sampler)) + "\")");
+        return;
+    }
+    if (d.samples < 2)
+        r.fail(render.get("samples") != nullptr ? render.get("samples") : &render, "[render] samples",
+               "adaptive sampling needs at least 2 samples per pixel to see them disagree (got " + std::to_string(d.samples) + ")");
+    if (t == nullptr) return;
+    const std::string_view section = "[render.adaptive] ";
+    r.onlyKeys(*t, section, {"threshold", "max_samples", "widen", "sampler"});
+    if (auto threshold = r.number(*t, section, "threshold")) {
+        if (*threshold < 0.) r.fail(t->get("threshold"), "[render.adaptive] threshold", std::to_string(*threshold) + " must be >= 0");
+        d.adaptive.threshold = float(*threshold);
+    }
+    d.adaptive.maxSamples = int(r.integer(*t, section, "max_samples", 1, kMaxSamples).value_or(d.adaptive.maxSamples));
+    if (d.adaptive.maxSamples <= d.samples)
+        r.fail(t->get("max_samples") != nullptr ? t->get("max_samples") : t, "[render.adaptive] max_samples",
+               std::to_string(d.adaptive.maxSamples) + " must be more than samples = " + std::to_string(d.samples) +
+                   ", or no pixel gets more samples");
+    if (const toml::node* widen = t->get("widen")) {
+        if (!widen->is_boolean()) r.fail(widen, "[render.adaptive] widen", "expected true or false, got " + Reader::typeName(*widen));
+        d.adaptive.widen = widen->as_boolean()->get();
+    }
+    if (auto sampler = r.string(*t, section, "sampler")) {
+        auto kind = samplerKindFromString(*sampler);
+        if (!kind || *kind == SamplerKind::Adaptive || *kind == SamplerKind::Center)
+            r.fail(t->get("sampler"), "[render.adaptive] sampler",
+                   "'" + *sampler + "' is not one of random, stratified, grid, sobol, r2");
+        d.adaptive.within = *kind;
     }
 }
 
@@ -188,7 +230,7 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
     }
     if (const toml::table* t = r.table(root, "camera")) readCamera(r, *t, d.camera);
     if (const toml::table* t = r.table(root, "render")) {
-        r.onlyKeys(*t, "[render] ", {"shading", "samples", "sampler", "seed"});
+        r.onlyKeys(*t, "[render] ", {"shading", "samples", "sampler", "seed", "adaptive"});
         if (auto shading = r.string(*t, "[render] ", "shading")) {
             auto found = std::find_if(std::begin(kPictures), std::end(kPictures),
                                       [&](Picture p) { return pictureName(p) == *shading; });
@@ -197,14 +239,16 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
                        "'" + *shading + "' is not one of gradient, directions, flat, placeholder_normal, cosine");
             d.picture = *found;
         }
-        d.samples = int(r.integer(*t, "[render] ", "samples", 1, 1 << 20).value_or(1));
+        d.samples = int(r.integer(*t, "[render] ", "samples", 1, kMaxSamples).value_or(1));
         if (auto sampler = r.string(*t, "[render] ", "sampler")) {
             auto kind = samplerKindFromString(*sampler);
-            if (!kind) r.fail(t->get("sampler"), "[render] sampler", "'" + *sampler + "' is not one of center, random, stratified");
+            if (!kind)
+                r.fail(t->get("sampler"), "[render] sampler", "'" + *sampler + "' is not one of " + std::string(samplerNames()));
             d.sampler = *kind;
         } else if (d.samples > 1) {
             d.sampler = SamplerKind::Random;
         }
+        readAdaptive(r, *t, d);
         d.seed = std::uint64_t(r.integer(*t, "[render] ", "seed", 0, INT64_MAX).value_or(0));
     }
     if (auto background = r.vec3(root, "", "background")) d.scene.background = *background;

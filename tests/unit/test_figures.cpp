@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <numbers>
 
 using namespace raylab;
 using namespace raylab::test;
@@ -80,7 +81,7 @@ TEST_CASE("lab2_directions: (d + 1) / 2, the centre looking along +z and +x on t
 TEST_CASE("lab3_flat: the silhouette is a disc of radius 122.47 px") {
     // The sphere (radius 1 at distance 3) subtends asin(1/3); on the screen at focal 1 its
     // silhouette has radius tan(asin(1/3)) = 1 / sqrt(8), and 400 px span 2 tan(30 degrees).
-    const double radiusPx = (1. / std::sqrt(8.)) * 400. / (2. * std::tan(M_PI / 6.));
+    const double radiusPx = (1. / std::sqrt(8.)) * 400. / (2. * std::tan(std::numbers::pi / 6.));
     CHECK(radiusPx == doctest::Approx(122.47).epsilon(1e-4));
     const Image8 image = renderFigure("lab3_flat");
     checkCentredDisc(image, radiusPx);
@@ -90,7 +91,7 @@ TEST_CASE("lab3_flat: the silhouette is a disc of radius 122.47 px") {
 
 TEST_CASE("lab3_cosine: the same disc, brightest at the centre, dark at the rim") {
     const Image8 image = renderFigure("lab3_cosine");
-    checkCentredDisc(image, (1. / std::sqrt(8.)) * 400. / (2. * std::tan(M_PI / 6.)));
+    checkCentredDisc(image, (1. / std::sqrt(8.)) * 400. / (2. * std::tan(std::numbers::pi / 6.)));
     CHECK(pixelIs(image, 300, 200, 0, 0, 255));
     CHECK(image.pixel(300 + 121, 200)[2] < 100);
     const Image8 placeholder = renderFigure("lab3_placeholder_normal");
@@ -98,7 +99,7 @@ TEST_CASE("lab3_cosine: the same disc, brightest at the centre, dark at the rim"
 }
 
 TEST_CASE("lab4_a: from (0, 0, -2), the sphere is a centred disc of radius 70.71 px") {
-    const double radiusPx = (1. / std::sqrt(24.)) * 400. / (2. * std::tan(M_PI / 6.));
+    const double radiusPx = (1. / std::sqrt(24.)) * 400. / (2. * std::tan(std::numbers::pi / 6.));
     CHECK(radiusPx == doctest::Approx(70.71).epsilon(1e-4));
     checkCentredDisc(renderFigure("lab4_a"), radiusPx);
 }

@@ -103,16 +103,16 @@ TEST_CASE("errors name the file, the line and the key") {
     CHECK(errorOf("[image]\nwidth = \"600\"\n") == "scene.toml:2: [image] width: expected an integer, got a string");
     CHECK(errorOf("[image]\nwidth = 0\n") == "scene.toml:2: [image] width: 0 is out of range [1, 16384]");
     CHECK(errorOf("[camera]\nfovy = 180\n") ==
-          "scene.toml:2: [camera] fovy: 180.000000 degrees has no meaning; it must be strictly between 0 and 180");
+          "scene.toml:2: [camera] fovy: 180 degrees has no meaning; it must be strictly between 0 and 180");
     CHECK(errorOf("[camera]\nfovy = nan\n") == "scene.toml:2: [camera] fovy: must be finite, got nan");
     CHECK(errorOf("[[sphere]]\ncenter = [0, 0]\nradius = 1\n") ==
           "scene.toml:2: [[sphere]] center: expected an array of 3 numbers such as [0.0, 1.0, 0.0]");
     CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\n") == "scene.toml:1: [[sphere]]: a sphere needs a center and a radius");
-    CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\nradius = -1\n") == "scene.toml:3: [[sphere]] radius: -1.000000 must be positive");
+    CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\nradius = -1\n") == "scene.toml:3: [[sphere]] radius: -1 must be positive");
     CHECK(errorOf("[render]\nshading = \"phong\"\n") ==
           "scene.toml:2: [render] shading: 'phong' is not one of gradient, directions, flat, placeholder_normal, cosine");
     CHECK(errorOf("[render]\nsampler = \"magic\"\n") ==
-          "scene.toml:2: [render] sampler: 'magic' is not one of center, random, stratified");
+          "scene.toml:2: [render] sampler: 'magic' is not one of center, random, stratified, grid, sobol, r2, adaptive");
     CHECK(errorOf("[camera]\nlook_at = [0, 0, 1]\n") ==
           "scene.toml:1: [camera]: a lookAt camera needs both position and look_at (up defaults to [0, 1, 0])");
     CHECK(errorOf("[image\nwidth = 3\n").rfind("scene.toml:1: not valid TOML", 0) == 0);
@@ -123,6 +123,53 @@ TEST_CASE("errors name the file, the line and the key") {
 TEST_CASE("a missing file or folder is named") {
     CHECK_THROWS_WITH_AS(loadSceneFile("no/such.toml"), "no/such.toml: no such scene file", SceneError);
     CHECK_THROWS_WITH_AS(loadSceneFolder("no/such/dir"), "no/such/dir: no such scene folder", SceneError);
+}
+
+}
+
+TEST_SUITE("scene files") {
+
+TEST_CASE("the adaptive sampler's keys") {
+    const SceneDescription d = loadText(R"(
+[render]
+samples = 16
+sampler = "adaptive"
+[render.adaptive]
+threshold = 0.1
+max_samples = 64
+widen = false
+sampler = "sobol"
+)");
+    CHECK(d.sampler == SamplerKind::Adaptive);
+    CHECK(d.samples == 16);
+    CHECK(d.adaptive.threshold == 0.1f);
+    CHECK(d.adaptive.maxSamples == 64);
+    CHECK_FALSE(d.adaptive.widen);
+    CHECK(d.adaptive.within == SamplerKind::Sobol);
+    const SceneDescription defaults = loadText("[render]\nsamples = 4\nsampler = \"adaptive\"\n");
+    CHECK(defaults.adaptive.maxSamples == 256);
+    CHECK(defaults.adaptive.widen);
+    CHECK(defaults.adaptive.within == SamplerKind::Stratified);
+    for (const char* name : {"grid", "sobol", "r2"})
+        CHECK(loadText(std::string("[render]\nsamples = 4\nsampler = \"") + name + "\"\n").sampler ==
+              samplerKindFromString(name));
+}
+
+TEST_CASE("the adaptive sampler's errors name the file, the line and the key") {
+    CHECK(errorOf("[render]\nsampler = \"random\"\nsamples = 4\n[render.adaptive]\nthreshold = 0.1\n") ==
+          "scene.toml:4: [render.adaptive]: only has a meaning with sampler = \"adaptive\" (the sampler is \"random\")");
+    CHECK(errorOf("[render]\nsampler = \"adaptive\"\nsamples = 1\n") ==
+          "scene.toml:3: [render] samples: adaptive sampling needs at least 2 samples per pixel to see them disagree (got 1)");
+    CHECK(errorOf("[render]\nsampler = \"adaptive\"\nsamples = 16\n[render.adaptive]\nmax_samples = 16\n") ==
+          "scene.toml:5: [render.adaptive] max_samples: 16 must be more than samples = 16, or no pixel gets more samples");
+    CHECK(errorOf("[render]\nsampler = \"adaptive\"\nsamples = 4\n[render.adaptive]\nthreshold = -0.5\n") ==
+          "scene.toml:5: [render.adaptive] threshold: -0.500000 must be >= 0");
+    CHECK(errorOf("[render]\nsampler = \"adaptive\"\nsamples = 4\n[render.adaptive]\nwiden = 1\n") ==
+          "scene.toml:5: [render.adaptive] widen: expected true or false, got an integer");
+    CHECK(errorOf("[render]\nsampler = \"adaptive\"\nsamples = 4\n[render.adaptive]\nsampler = \"adaptive\"\n") ==
+          "scene.toml:5: [render.adaptive] sampler: 'adaptive' is not one of random, stratified, grid, sobol, r2");
+    CHECK(errorOf("[render]\nsampler = \"adaptive\"\nsamples = 4\n[render.adaptive]\nlevels = 3\n") ==
+          "scene.toml:5: [render.adaptive] levels: unknown key (known keys: threshold, max_samples, widen, sampler)");
 }
 
 }

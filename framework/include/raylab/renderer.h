@@ -7,12 +7,25 @@
 #include "raylab/texture.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace raylab {
 
 struct RenderStats {
     double seconds = 0.;
-    std::uint64_t primaryRays = 0; // camera rays: pixels x samples per pixel
+    std::uint64_t primaryRays = 0;   // camera rays: pixels x samples per pixel
+    std::uint64_t randomNumbers = 0; // numbers the pixel samplers drew from their generators
+    std::uint64_t refinedPixels = 0; // adaptive: the pixels its second pass rendered again
+};
+
+// Adaptive sampling: nbPixelSamples() samples in every pixel; where the colours of a pixel's
+// samples differ by more than `threshold` (in any channel), that pixel, and with `widen` its eight
+// neighbours, is rendered again with `maxSamples` samples, which replace the first ones.
+struct AdaptiveSettings {
+    float threshold = 0.05f;
+    int maxSamples = 256;
+    bool widen = true; // a thin object one pixel's samples caught may cover its neighbours' too
+    SamplerKind within = SamplerKind::Stratified; // how both passes place their samples
 };
 
 class Renderer {
@@ -26,15 +39,22 @@ public:
     void setSampler(SamplerKind kind) { m_sampler = kind; }
     SamplerKind sampler() const { return m_sampler; }
     void setSeed(std::uint64_t seed) { m_seed = seed; }
+    // Used when the sampler is SamplerKind::Adaptive. Throws std::invalid_argument when a setting
+    // has no meaning.
+    void setAdaptive(const AdaptiveSettings& settings);
+    const AdaptiveSettings& adaptive() const { return m_adaptive; }
     // 0 means one thread per core. The image does not depend on the number of threads.
     void setThreads(int threads);
     // A progress bar on standard error, shown only for renders that last over a second.
     void setProgress(bool progress) { m_progress = progress; }
 
     // Renders the whole image. One centred sample per pixel traces the pixel centre's ray directly;
-    // anything else goes through renderPixel. Rethrows the first exception a pixel threw.
+    // anything else goes through renderPixel (adaptive: twice, see AdaptiveSettings). Rethrows the
+    // first exception a pixel threw.
     Texture renderImage();
     const RenderStats& stats() const { return m_stats; }
+    // Adaptive: 1 for each pixel (row-major) that the last render's second pass rendered again.
+    const std::vector<std::uint8_t>& refinedPixels() const { return m_refined; }
 
     // Lab 5: the colour of pixel (i, j), the average of nbPixelSamples() samples taken at the
     // offsets that `sampler` serves.
@@ -42,6 +62,8 @@ public:
 
 private:
     Color renderPixelCentre(int i, int j) const;
+    // Adaptive sampling's second pass: which pixels to render again, from the first pass's spreads.
+    std::vector<std::uint8_t> pixelsToRefine(const std::vector<float>& spread) const;
 
     const Scene& m_scene;
     const BaseCamera& m_camera;
@@ -49,9 +71,11 @@ private:
     int m_nbPixelSamples = 1;
     SamplerKind m_sampler = SamplerKind::Center;
     std::uint64_t m_seed = 0;
+    AdaptiveSettings m_adaptive;
     int m_threads = 0;
     bool m_progress = false;
     RenderStats m_stats;
+    std::vector<std::uint8_t> m_refined;
 };
 
 } // namespace raylab

@@ -1,6 +1,7 @@
 #pragma once
 // Scene files: a TOML file says what to render and which effects it needs (scenes/README.md).
 
+#include "raylab/renderer.h"
 #include "raylab/sampler.h"
 #include "raylab/scene.h"
 
@@ -42,6 +43,7 @@ struct SceneDescription {
     int samples = 1;
     SamplerKind sampler = SamplerKind::Center;
     std::uint64_t seed = 0;
+    AdaptiveSettings adaptive; // [render.adaptive]: used when sampler is adaptive
 };
 
 // A scene file that cannot be used: what() is "FILE:LINE: [section] key: problem".

@@ -1,0 +1,43 @@
+// raylab study antialiasing: each sampler's error against time on lab 5's scene (docs/accuracy.md).
+#include "build_info.h"
+#include "commands.h"
+
+#include "../study/antialiasing_study.h"
+
+#include <cstdio>
+#include <memory>
+
+namespace raylab::cli {
+
+void addStudyAntialiasingCommand(CLI::App& app, Context& context) {
+    // `study` may already exist: other studies register their own subcommands under it.
+    CLI::App* study = nullptr;
+    try {
+        study = app.get_subcommand("study");
+    } catch (const CLI::OptionNotFound&) {
+        study = app.add_subcommand("study", "what accuracy costs in time");
+        study->require_subcommand(1);
+    }
+    auto o = std::make_shared<study::AntialiasingOptions>();
+    auto out = std::make_shared<std::string>();
+    CLI::App* command = study->add_subcommand(
+        "antialiasing", "each sampler at 1 to 1024 samples per pixel and adaptive sampling, against the exact picture: "
+                        "accuracy.csv, accuracy.md and SVG plots");
+    command->add_option("--out", *out, "output folder (default: docs/ of the source tree; with --quick, out/study-quick)");
+    command->add_flag("--quick", o->quick, "a 120 x 80 image, up to 256 samples, one timing run (seconds, for tests)");
+    command->add_option("--repeats", o->repeats, "timing runs, the median is kept")->check(CLI::Range(1, 50));
+    context.addImplOption(command);
+    context.addRenderOptions(command);
+    command->callback([&context, o, out] {
+        if (context.ranInOtherImpl()) return;
+        o->threads = context.threads;
+        o->scene = std::filesystem::path(context.scenes) / "lab5_antialiased.toml";
+        o->thinObjects = std::filesystem::path(build::kSourceDir) / "scenes" / "study" / "adaptive_thin_objects.toml";
+        o->out = !out->empty() ? std::filesystem::path(*out)
+                 : o->quick   ? std::filesystem::path("out") / "study-quick"
+                              : std::filesystem::path(build::kSourceDir) / "docs";
+        study::runAntialiasingStudy(*o);
+    });
+}
+
+} // namespace raylab::cli
