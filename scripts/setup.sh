@@ -3,7 +3,7 @@
 # install elsewhere. Safe to run again: it installs only what is missing.
 set -euo pipefail
 
-packages=(cmake g++ make pkg-config libglm-dev libstb-dev doctest-dev libtomlplusplus-dev libcli11-dev)
+packages=(cmake g++ make pkg-config libglm-dev libstb-dev doctest-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   cat <<'TXT'

@@ -32,3 +32,9 @@ void addBenchEffectsCommand(CLI::App& app, Context& context); // bench-effects
 void addNumericsCommands(CLI::App& app, Context& context); // numerics, study intersection
 
 } // namespace raylab::cli
+
+namespace raylab::cli {
+void addGradeCommands(CLI::App& app, Context& context);      // grade, grade-class
+void addReferencesCommand(CLI::App& app, Context& context); // references
+void addDistributeCommand(CLI::App& app, Context& context); // distribute
+} // namespace raylab::cli

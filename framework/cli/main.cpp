@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
     cli::Context context{argc, argv, build::kImpl, 0, build::kScenesDir};
     cli::addFigureCommands(app, context);
     cli::addBenchCommand(app, context);
+    cli::addGradeCommands(app, context);
+    cli::addReferencesCommand(app, context);
+    cli::addDistributeCommand(app, context);
     cli::addStudyAntialiasingCommand(app, context);
     cli::addBenchEffectsCommand(app, context);
     cli::addNumericsCommands(app, context);

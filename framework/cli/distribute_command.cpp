@@ -1,0 +1,68 @@
+// raylab distribute: writes the tree students receive: everything but the reference solutions and
+// what would give them away (the mistakes and valid variants of tests/ are whole lab solutions,
+// or one line from one). It builds, runs and self-grades on its own (tests/references stay).
+#include "build_info.h"
+#include "commands.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace raylab::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Paths relative to the source tree that are not handed out.
+const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/variants", ".git", "out",
+                                      "compile_commands.json", ".cache"};
+
+bool withheld(const fs::path& relative) {
+    const std::string text = relative.generic_string();
+    if (kWithheld.count(text)) return true;
+    const std::string top = relative.begin()->string();
+    return top.rfind("build", 0) == 0; // build folders
+}
+
+int distribute(const fs::path& source, const fs::path& out) {
+    std::error_code error;
+    if (fs::exists(out, error) && !fs::is_empty(out, error))
+        throw std::invalid_argument("distribute: " + out.string() + " exists and is not empty; choose a new folder");
+    const fs::path sourceAbs = fs::canonical(source);
+    fs::create_directories(out);
+    const fs::path outAbs = fs::canonical(out);
+    int files = 0;
+    for (auto it = fs::recursive_directory_iterator(sourceAbs); it != fs::recursive_directory_iterator(); ++it) {
+        const fs::path relative = it->path().lexically_relative(sourceAbs); // fs::relative would follow links
+        if (withheld(relative) || it->path() == outAbs || it->is_symlink()) {
+            if (it->is_directory()) it.disable_recursion_pending();
+            continue;
+        }
+        if (it->is_directory()) fs::create_directories(outAbs / relative);
+        else if (it->is_regular_file()) {
+            fs::copy_file(it->path(), outAbs / relative, fs::copy_options::overwrite_existing);
+            ++files;
+        }
+    }
+    std::printf("raylab distribute: %d files -> %s (without solutions/, tests/mistakes/, tests/variants/)\n"
+                "  students build it with: cmake --workflow --preset test, and grade themselves with: "
+                "build/bin/raylab grade\n",
+                files, out.string().c_str());
+    return 0;
+}
+
+} // namespace
+
+void addDistributeCommand(CLI::App& app, Context& context) {
+    auto out = std::make_shared<std::string>();
+    CLI::App* command =
+        app.add_subcommand("distribute", "instructors: write the students' tree (no solutions/) into a new folder");
+    command->add_option("OUT", *out, "the folder to create")->required();
+    command->callback([&context, out] { context.exitStatus = distribute(build::kSourceDir, *out); });
+}
+
+} // namespace raylab::cli

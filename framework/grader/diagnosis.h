@@ -1,0 +1,46 @@
+#pragma once
+// The catalogue of classic mistakes (tests/references/mistakes.toml) and their signatures: each
+// mistake's rendering of the figures it changes, a quarter of the size
+// (tests/references/mistakes/<mistake>/<figure>.png). A failing image is matched against them.
+
+#include "raylab/image_io.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab::grader {
+
+inline constexpr int kSignatureScale = 4; // signatures are averaged over 4 x 4 pixel blocks
+
+struct Mistake {
+    std::string id;    // its folder in tests/mistakes/ and tests/references/mistakes/
+    std::string name;  // "fovy not halved"
+    std::string hint;  // "use tan(fovy / 2): fovy is the full angle"
+    int lab = 0;       // the lab whose file holds the mistake
+    std::string check; // the function check expected to catch it ("lab2/...")
+    std::vector<std::pair<std::string, Image8>> signatures; // figure id, signature
+};
+
+struct Diagnosis {
+    const Mistake* mistake = nullptr; // null: no mistake of the catalogue fits
+    const Mistake* alike = nullptr;   // another mistake that draws the same picture (within 0.25 LSB)
+    double distance = 0.;             // mean absolute difference to its signature, LSB
+    double referenceDistance = 0.;    // the same to the reference
+    std::string text() const;         // "your image matches 'fovy not halved': use tan(fovy / 2) ..."
+};
+
+// Reads the catalogue and every signature present; a missing signature folder leaves it empty.
+std::vector<Mistake> loadMistakes(const std::filesystem::path& referenceFolder);
+
+// Averages kSignatureScale x kSignatureScale blocks (an image that does not divide keeps its
+// whole blocks only).
+Image8 downsample(const Image8& image);
+
+// The closest signature of this figure, when it fits: much closer to the student's image than the
+// reference is, and within a few LSB on average.
+Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figure, const Image8& student,
+                   const Image8& reference);
+
+} // namespace raylab::grader

@@ -1,0 +1,202 @@
+#include "grader/report.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace raylab::grader {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string escape(const std::string& text) {
+    std::string out;
+    for (char c : text) switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        case '\'': out += "&apos;"; break;
+        default: out += c;
+        }
+    return out;
+}
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
+
+std::ofstream openOut(const fs::path& file) {
+    std::ofstream out(file, std::ios::binary);
+    if (!out) throw std::runtime_error("cannot write the report " + file.string());
+    return out;
+}
+
+// The heat map: black where the pixel agrees, red to yellow as the error grows to `full`.
+Image8 heatMap(const ImageVerdict& v, float full) {
+    Image8 image{v.width, v.height, {}};
+    image.rgb.reserve(v.error.size() * 3);
+    for (float e : v.error) {
+        const float x = std::min(1.f, e / full);
+        image.rgb.push_back(std::uint8_t(e <= 1.f && full > 6.f ? 40.f * e : 80.f + 175.f * x));
+        image.rgb.push_back(std::uint8_t(x > 0.5f ? 255.f * (x - 0.5f) * 2.f : 0.f));
+        image.rgb.push_back(0);
+    }
+    return image;
+}
+
+std::string itemOutput(const FigureOutcome& f) {
+    std::string text = f.reason;
+    if (!f.diagnosis.empty()) text += "\n" + f.diagnosis;
+    for (const auto& [name, value] : f.verdict.metrics) text += "\n  " + name + ": " + number(value);
+    return text;
+}
+
+} // namespace
+
+void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, const fs::path& folder) {
+    const fs::path images = folder / "images";
+    fs::create_directories(images);
+    std::ofstream out = openOut(folder / "index.html");
+    out << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>" << escape(result.title)
+        << "</title>\n<style>body{font-family:sans-serif;max-width:1400px;margin:auto}"
+           "img{width:300px;image-rendering:pixelated;border:1px solid #ccc}.pass{color:#080}.fail{color:#b00}"
+           "td,th{padding:4px 8px;vertical-align:top;text-align:left}pre{white-space:pre-wrap;margin:0}</style>"
+           "</head><body>\n<h1>"
+        << escape(result.title) << "</h1>\n<p>Score: <b>" << number(result.score()) << " / "
+        << number(result.maxScore()) << "</b></p>\n<table><tr><th>lab</th><th>points</th><th>notes</th></tr>\n";
+    for (const LabOutcome& lab : result.labs) {
+        std::string notes;
+        for (const std::string& n : lab.notes) notes += escape(n) + "<br>";
+        out << "<tr><td>lab " << lab.lab << "</td><td>" << number(lab.points) << " / " << number(lab.maxPoints)
+            << "</td><td>" << notes << "</td></tr>\n";
+    }
+    out << "</table>\n";
+    for (const std::string& p : result.problems) out << "<p class=\"fail\"><pre>" << escape(p) << "</pre></p>\n";
+    out << "<h2>Figures</h2>\n<table><tr><th>figure</th><th>reference</th><th>yours</th><th>difference</th>"
+           "<th>verdict</th></tr>\n";
+    for (const FigureOutcome& f : result.figures) {
+        const FigureReference* reference = references.find(f.id);
+        out << "<tr><td>" << escape(f.id) << "<br>lab " << f.lab << "<br>" << number(f.points) << " / "
+            << number(f.maxPoints) << "</td><td>";
+        if (reference) {
+            writePng(images / (f.id + ".reference.png"), reference->image);
+            out << "<img src=\"images/" << escape(f.id) << ".reference.png\">";
+        }
+        out << "</td><td>";
+        if (!f.studentImage.empty()) {
+            fs::copy_file(f.studentImage, images / (f.id + ".student.png"), fs::copy_options::overwrite_existing);
+            out << "<img src=\"images/" << escape(f.id) << ".student.png\">";
+        }
+        out << "</td><td>";
+        if (!f.verdict.error.empty()) {
+            const bool statistical = reference && reference->stats;
+            writePng(images / (f.id + ".diff.png"), heatMap(f.verdict, statistical ? 6.f : 64.f));
+            out << "<img src=\"images/" << escape(f.id) << ".diff.png\"><br><small>"
+                << (statistical ? "|z|, yellow at 6" : "LSB, dim up to 1, yellow at 64") << "</small>";
+        }
+        out << "</td><td><b class=\"" << (f.passed ? "pass\">PASS" : "fail\">FAIL") << "</b><pre>"
+            << escape(itemOutput(f)) << "</pre></td></tr>\n";
+    }
+    out << "</table>\n<h2>Function checks</h2>\n<table><tr><th>lab</th><th>check</th><th>points</th><th>verdict</th></tr>\n";
+    for (const CheckOutcome& c : result.checks)
+        out << "<tr><td>lab " << c.lab << "</td><td>" << escape(c.name) << "</td><td>" << number(c.points) << " / "
+            << number(c.maxPoints) << "</td><td><b class=\"" << (c.passed ? "pass\">PASS" : "fail\">FAIL")
+            << "</b><pre>" << escape(c.message) << "</pre></td></tr>\n";
+    out << "</table>\n</body></html>\n";
+}
+
+void writeGradescopeJson(const GradeResult& result, const fs::path& file) {
+    nlohmann::json tests = nlohmann::json::array();
+    for (const CheckOutcome& c : result.checks)
+        tests.push_back({{"name", "lab" + std::to_string(c.lab) + ": " + c.name},
+                         {"score", c.points},
+                         {"max_score", c.maxPoints},
+                         {"status", c.passed ? "passed" : "failed"},
+                         {"output", c.message}});
+    for (const FigureOutcome& f : result.figures)
+        tests.push_back({{"name", "lab" + std::to_string(f.lab) + ": figure " + f.id},
+                         {"score", f.points},
+                         {"max_score", f.maxPoints},
+                         {"status", f.passed ? "passed" : "failed"},
+                         {"output", itemOutput(f)}});
+    std::string output;
+    for (const std::string& p : result.problems) output += p + "\n";
+    const nlohmann::json root{{"score", result.score()},
+                              {"max_score", result.maxScore()},
+                              {"output", output},
+                              {"tests", tests}};
+    openOut(file) << root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+}
+
+void writeJUnitXml(const GradeResult& result, const fs::path& file) {
+    std::ofstream out = openOut(file);
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"" << escape(result.title) << "\">\n";
+    for (int lab = 1; lab <= 5; ++lab) {
+        std::ostringstream cases;
+        int tests = 0, failures = 0;
+        auto item = [&](const std::string& name, bool passed, const std::string& message) {
+            ++tests;
+            cases << "  <testcase classname=\"lab" << lab << "\" name=\"" << escape(name) << "\">";
+            if (!passed) {
+                ++failures;
+                cases << "<failure message=\"" << escape(message.substr(0, message.find('\n'))) << "\">"
+                      << escape(message) << "</failure>";
+            }
+            cases << "</testcase>\n";
+        };
+        for (const CheckOutcome& c : result.checks)
+            if (c.lab == lab) item(c.name, c.passed, c.message);
+        for (const FigureOutcome& f : result.figures)
+            if (f.lab == lab) item("figure " + f.id, f.passed, itemOutput(f));
+        if (tests == 0) continue;
+        out << " <testsuite name=\"lab" << lab << "\" tests=\"" << tests << "\" failures=\"" << failures << "\">\n"
+            << cases.str() << " </testsuite>\n";
+    }
+    out << "</testsuites>\n";
+}
+
+void writeReports(const GradeResult& result, const ReferenceSet& references, const fs::path& folder) {
+    fs::create_directories(folder);
+    writeHtmlReport(result, references, folder);
+    writeGradescopeJson(result, folder / "results.json");
+    writeJUnitXml(result, folder / "junit.xml");
+}
+
+std::string terminalSummary(const GradeResult& result) {
+    std::ostringstream out;
+    for (int lab = 1; lab <= 5; ++lab) {
+        bool any = false;
+        for (const CheckOutcome& c : result.checks)
+            if (c.lab == lab) {
+                any = true;
+                out << "  " << (c.passed ? "PASS" : "FAIL") << "  lab" << lab << "  " << c.name << "\n";
+                if (!c.passed) {
+                    std::istringstream lines(c.message);
+                    for (std::string line; std::getline(lines, line);) out << "        " << line << "\n";
+                }
+            }
+        for (const FigureOutcome& f : result.figures)
+            if (f.lab == lab) {
+                any = true;
+                out << "  " << (f.passed ? "PASS" : "FAIL") << "  lab" << lab << "  figure " << f.id << ": " << f.reason << "\n";
+                if (!f.diagnosis.empty()) out << "        " << f.diagnosis << "\n";
+            }
+        if (!any) continue;
+        const LabOutcome& l = result.labs[std::size_t(lab - 1)];
+        out << "  lab " << lab << ": " << number(l.points) << " / " << number(l.maxPoints) << " points\n";
+        for (const std::string& n : l.notes) out << "        " << n << "\n";
+    }
+    for (const std::string& p : result.problems) out << "  problem: " << p << "\n";
+    out << "  total: " << number(result.score()) << " / " << number(result.maxScore()) << "\n";
+    return out.str();
+}
+
+} // namespace raylab::grader

@@ -1,0 +1,102 @@
+// Bad submissions get the grade they earned, with a clear reason, and the run goes on.
+#include "grading_support.h"
+
+#include <cstdlib>
+
+using namespace raylab::test;
+
+namespace {
+
+GradeResult gradeBad(const std::string& id, double wallSeconds = 20.) {
+    GradeSetup setup = courseSetup();
+    setup.limits.wallSeconds = wallSeconds;
+    setup.limits.memoryBytes = 1ull << 30;
+    return gradeAgent(setup, "raylab-bad-" + id);
+}
+
+void expectCheck(const GradeResult& r, const std::string& name, bool passed, const std::string& says = "") {
+    const CheckOutcome* c = findCheck(r, name);
+    REQUIRE_MESSAGE(c, name);
+    CHECK_MESSAGE(c->passed == passed, name << ": " << c->message);
+    if (!says.empty()) CHECK_MESSAGE(c->message.find(says) != std::string::npos, name << ": " << c->message);
+}
+
+void expectFigure(const GradeResult& r, const std::string& id, bool passed, const std::string& says = "") {
+    const FigureOutcome* f = findFigure(r, id);
+    REQUIRE_MESSAGE(f, id);
+    CHECK_MESSAGE(f->passed == passed, id << ": " << f->reason);
+    if (!says.empty()) CHECK_MESSAGE(f->reason.find(says) != std::string::npos, id << ": " << f->reason);
+}
+
+} // namespace
+
+TEST_SUITE("bad submissions") {
+
+TEST_CASE("a crash fails the check that crashed, and the others still run") {
+    const GradeResult r = gradeBad("crash");
+    expectCheck(r, "generateRay: the centre and the four corners of the default camera", false, "crash");
+    expectCheck(r, "updateViewport: the viewport of the default camera", true);
+    expectCheck(r, "generateRay: directions are unit vectors", false, "crash");
+    expectFigure(r, "lab3_cosine", true);
+}
+
+TEST_CASE("an endless loop is stopped and only its check fails") {
+    const GradeResult r = gradeBad("endless_loop", 3.);
+    expectCheck(r, "fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN", false, "time limit");
+    expectCheck(r, "fillGradient: the corners and the middle of a 5 x 3 image", true);
+    expectFigure(r, "lab1_gradient", true);
+    CHECK(r.labs[1].points == r.labs[1].maxPoints);
+}
+
+TEST_CASE("an exception fails its check and its figures with the message") {
+    const GradeResult r = gradeBad("throws");
+    expectCheck(r, "computeNormal: unit and pointing outwards", false, "bad: computeNormal throws");
+    expectFigure(r, "lab3_cosine", false, "bad: computeNormal throws");
+    expectFigure(r, "lab3_flat", true);
+}
+
+TEST_CASE("NaN pixels fail the figure and are counted") {
+    const GradeResult r = gradeBad("nan");
+    expectFigure(r, "lab3_cosine", false, "NaN");
+    expectFigure(r, "lab3_flat", true);
+}
+
+TEST_CASE("allocating without end is refused, and the other labs are graded") {
+    const GradeResult r = gradeBad("allocates");
+    expectCheck(r, "lookAt: the basis of the handout's four cameras", false);
+    expectFigure(r, "lab4_a", false);
+    expectFigure(r, "lab5_antialiased", true);
+    expectCheck(r, "renderPixel: N rays and their average", true);
+}
+
+TEST_CASE("exit(0) in the middle is no pass") {
+    const GradeResult r = gradeBad("exits_early");
+    expectCheck(r, "setNbPixelSamples: stores N and refuses fewer than 1", false, "exited");
+    expectFigure(r, "lab5_antialiased", false);
+    expectFigure(r, "lab4_d", true);
+}
+
+TEST_CASE("fake test output on stdout changes nothing") {
+    const GradeResult r = gradeBad("fake_output");
+    expectCheck(r, "fillGradient: every pixel is written", false);
+    expectFigure(r, "lab1_gradient", false);
+    CHECK(r.labs[0].points == 0.);
+}
+
+TEST_CASE("overwriting the references does not help: they were read before the code ran") {
+    const fs::path copy = fs::temp_directory_path() / "raylab-bad-references";
+    fs::remove_all(copy);
+    fs::copy(sourceDir() / "tests/references", copy, fs::copy_options::recursive);
+    const fs::path target = copy / "lab1_gradient.png";
+    const auto before = fs::file_size(target);
+#ifdef _WIN32
+    _putenv_s("RAYLAB_BAD_REFERENCE_TARGET", target.string().c_str());
+#else
+    setenv("RAYLAB_BAD_REFERENCE_TARGET", target.string().c_str(), 1);
+#endif
+    const GradeResult r = gradeAgent(courseSetup(copy), "raylab-bad-writes_references");
+    CHECK(fs::file_size(target) != before); // the attack happened
+    expectFigure(r, "lab1_gradient", false, "differ from the reference");
+}
+
+} // TEST_SUITE

@@ -1,0 +1,116 @@
+// The reference solutions pass, with any thread count and seed; the references are what the
+// solutions make; the stubs get zero and are told which function to write.
+#include "grading_support.h"
+
+#include "grader/channel.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <cmath>
+#include <set>
+
+using namespace raylab::test;
+
+TEST_SUITE("grade reference") {
+
+TEST_CASE("the reference solutions get every point, on 1 or 2 threads and several seeds") {
+    for (const auto& [threads, seed] : {std::pair{1, -1LL}, std::pair{2, 12345LL}, std::pair{2, 777LL}}) {
+        GradeSetup setup = courseSetup();
+        setup.threads = threads;
+        setup.seed = seed;
+        const GradeResult r = gradeAgent(setup, "raylab-agent-reference");
+        CHECK_MESSAGE(r.allPassed(), "threads " << threads << ", seed " << seed << failures(r));
+        CHECK(r.score() == r.maxScore());
+        std::size_t tableChecks = 0;
+        for (const auto& [lab, items] : setup.points.labs)
+            for (const auto& [item, points] : items) tableChecks += item.rfind("figure ", 0) != 0;
+        CHECK(r.checks.size() == tableChecks);
+        CHECK(r.figures.size() == setup.references.figures.size());
+    }
+}
+
+TEST_CASE("every check the agent runs is in the points table, and the other way round") {
+    const fs::path list = fs::temp_directory_path() / "raylab-agent-list.jsonl";
+    fs::remove(list);
+    const std::string command = (binDir() / "raylab-agent-reference").string() + " --list --report-file " + list.string();
+    REQUIRE(std::system(command.c_str()) == 0);
+    std::set<std::string> listed;
+    std::ifstream in(list);
+    for (std::string line; std::getline(in, line);) {
+        const nlohmann::json j = nlohmann::json::parse(line);
+        if (j["kind"] != "listed") continue;
+        const std::string suite = j["suite"], name = j["name"];
+        listed.insert(name);
+        CHECK_MESSAGE(courseSetup().points.has(suite[3] - '0', name), suite << ": \"" << name << "\" has no points");
+        CHECK_MESSAGE(name.find_first_of(",*?") == std::string::npos, name << ": doctest filters split on , * ?");
+    }
+    for (const auto& [lab, items] : courseSetup().points.labs)
+        for (const auto& [item, points] : items)
+            if (item.rfind("figure ", 0) != 0) CHECK_MESSAGE(listed.count(item), "the points table names \"" << item << "\", which no check has");
+}
+
+TEST_CASE("the stubs of labs/ get zero, each check saying what to write") {
+    GradeSetup setup = courseSetup();
+    std::vector<AgentPlan> agents;
+    for (int lab = 1; lab <= 5; ++lab) agents.push_back({binDir() / ("raylab-agent-lab" + std::to_string(lab)), lab});
+    const GradeResult r = gradeCode(setup, agents, true);
+    fs::remove_all(setup.scratch);
+    CHECK(r.score() == 0.);
+    const CheckOutcome* c = findCheck(r, "generateRay: directions are unit vectors");
+    REQUIRE(c);
+    CHECK(c->message.find("lab 2 not done yet: write PerspectiveCamera::updateViewport") != std::string::npos);
+    const FigureOutcome* f = findFigure(r, "lab3_cosine");
+    REQUIRE(f);
+    CHECK(f->reason.find("lab 3 not done yet") != std::string::npos);
+    CHECK(r.labs[2].notes.front().find("other labs came from the reference") != std::string::npos);
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("grade reference") {
+
+// The course's own statistical reference rejects the broken renders of the issue: blurred, and
+// a biased average (sum / (N + 1)); the correct render itself passes.
+TEST_CASE("lab5_antialiased: blurred and biased versions of a correct render fail") {
+    const GradeSetup setup = courseSetup();
+    const FigureReference* lab5 = setup.references.find("lab5_antialiased");
+    REQUIRE(lab5);
+    REQUIRE(lab5->stats);
+    const raylab::Image8& correct = lab5->image;
+    CHECK(compareImage(*lab5, correct).passed);
+
+    raylab::Image8 blurred = correct, biased = correct;
+    for (int j = 1; j + 1 < correct.height; ++j)
+        for (int i = 1; i + 1 < correct.width; ++i)
+            for (int c = 0; c < 3; ++c) {
+                int sum = 0;
+                for (int y = -1; y <= 1; ++y)
+                    for (int x = -1; x <= 1; ++x) sum += correct.pixel(i + x, j + y)[c];
+                blurred.rgb[3 * (std::size_t(j) * correct.width + i) + c] = std::uint8_t((sum + 4) / 9);
+            }
+    for (std::uint8_t& v : biased.rgb) v = std::uint8_t(std::lround(v * 32. / 33.));
+    const ImageVerdict b = compareImage(*lab5, blurred), s = compareImage(*lab5, biased);
+    CHECK_FALSE(b.passed);
+    CHECK_FALSE(s.passed);
+    CHECK(s.reason.find("biased") != std::string::npos);
+    MESSAGE("blurred 3 x 3: " << b.reason);
+    MESSAGE("sum / (N + 1): " << s.reason);
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("grade reference") {
+
+TEST_CASE("without the reference, grading is cumulative and names the earlier lab to fix first") {
+    GradeSetup setup = courseSetup();
+    const GradeResult r = gradeCode(setup, {{binDir() / "raylab-agent", 0}}, false); // labs/: all stubs
+    fs::remove_all(setup.scratch);
+    REQUIRE(r.labs.size() == 5);
+    CHECK(r.labs[0].notes.empty());
+    REQUIRE_FALSE(r.labs[2].notes.empty());
+    CHECK(r.labs[2].notes.front() == "lab 3 uses lab 2, which has failures: fix lab 2 first");
+    CHECK(r.labs[3].notes.size() == 2); // labs 2 and 3
+}
+
+} // TEST_SUITE

@@ -1,0 +1,137 @@
+// The image checks' policy (docs/grading.md) on small synthetic images.
+#include "grader/compare.h"
+#include "grader/diagnosis.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+using namespace raylab;
+using namespace raylab::grader;
+
+namespace {
+
+Image8 flat(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    Image8 image{w, h, {}};
+    for (int k = 0; k < w * h; ++k) image.rgb.insert(image.rgb.end(), {r, g, b});
+    return image;
+}
+
+void set(Image8& image, int i, int j, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    std::uint8_t* p = &image.rgb[3 * (std::size_t(j) * image.width + i)];
+    p[0] = r;
+    p[1] = g;
+    p[2] = b;
+}
+
+// A random figure's reference: mean 100 LSB everywhere, one sample's sd 16 LSB, 16 samples.
+FigureReference statistical(int w, int h) {
+    FigureReference f{"noisy", 5, flat(w, h, 100, 100, 100), {}, StatisticalReference{}};
+    f.stats->samples = 16;
+    f.stats->mean.assign(std::size_t(w) * h * 3, 100.f);
+    f.stats->sampleSd.assign(std::size_t(w) * h * 3, 16.f);
+    f.stats->worstCorrectRmse = 4.1;
+    f.stats->rmseLimit = 1.25 * 4.1;
+    return f;
+}
+
+// A render of `statistical` with n samples a pixel, whose mean is shifted by `bias` LSB.
+Image8 noisyRender(int w, int h, int n, double bias, unsigned seed) {
+    std::mt19937 random(seed);
+    std::normal_distribution<double> sample(100. + bias, 16. / std::sqrt(double(n)));
+    Image8 image{w, h, {}};
+    for (int k = 0; k < 3 * w * h; ++k) image.rgb.push_back(std::uint8_t(std::clamp(std::round(sample(random)), 0., 255.)));
+    return image;
+}
+
+double metric(const ImageVerdict& v, const std::string& name) {
+    for (const auto& [n, value] : v.metrics)
+        if (n == name) return value;
+    FAIL("no metric " << name);
+    return 0.;
+}
+
+} // namespace
+
+TEST_SUITE("image comparison") {
+
+TEST_CASE("deterministic: 1 LSB passes, 2 LSB fails, ambiguous pixels are excused") {
+    FigureReference reference{"d", 3, flat(8, 8, 10, 20, 30), {{5, 5}}, {}};
+    Image8 student = flat(8, 8, 11, 19, 30);
+    CHECK(compareDeterministic(reference, student).passed);
+    set(student, 5, 5, 200, 0, 0); // the ambiguous pixel
+    CHECK(compareDeterministic(reference, student).passed);
+    set(student, 1, 2, 10, 22, 30);
+    const ImageVerdict v = compareDeterministic(reference, student);
+    CHECK_FALSE(v.passed);
+    CHECK(metric(v, "pixels off by more than 1 LSB") == 1);
+    CHECK(metric(v, "largest difference (LSB)") == 2);
+    CHECK(v.error[2 * 8 + 1] == 2.f);
+}
+
+TEST_CASE("deterministic: one NaN pixel fails and is named") {
+    const FigureReference reference{"d", 3, flat(4, 4, 10, 20, 30), {}, {}};
+    Image8 student = reference.image;
+    set(student, 0, 0, 255, 0, 255);
+    const ImageVerdict v = compareDeterministic(reference, student);
+    CHECK_FALSE(v.passed);
+    CHECK(v.reason.find("NaN") != std::string::npos);
+}
+
+TEST_CASE("a wrong size fails before any metric") {
+    const FigureReference reference{"d", 3, flat(4, 4, 10, 20, 30), {}, {}};
+    const ImageVerdict v = compareImage(reference, flat(4, 3, 10, 20, 30));
+    CHECK_FALSE(v.passed);
+    CHECK(v.reason == "the image is 4 x 3, the figure is 4 x 4");
+}
+
+TEST_CASE("statistical: correct renders pass, whatever the seed") {
+    const FigureReference reference = statistical(200, 100);
+    for (unsigned seed = 1; seed <= 5; ++seed) {
+        const ImageVerdict v = compareStatistical(reference, noisyRender(200, 100, 16, 0., seed));
+        CHECK_MESSAGE(v.passed, v.reason);
+    }
+}
+
+TEST_CASE("statistical: a less noisy (stratified) render passes") {
+    const ImageVerdict v = compareStatistical(statistical(200, 100), noisyRender(200, 100, 64, 0., 3));
+    CHECK_MESSAGE(v.passed, v.reason);
+}
+
+TEST_CASE("statistical: a bias of a quarter LSB fails") {
+    const ImageVerdict v = compareStatistical(statistical(200, 100), noisyRender(200, 100, 16, 0.25, 4));
+    CHECK_FALSE(v.passed);
+    CHECK(v.reason.find("biased") != std::string::npos);
+}
+
+TEST_CASE("statistical: far fewer samples fail on noise") {
+    const ImageVerdict v = compareStatistical(statistical(200, 100), noisyRender(200, 100, 4, 0., 5));
+    CHECK_FALSE(v.passed);
+    CHECK(v.reason.find("RMSE") != std::string::npos);
+}
+
+TEST_CASE("statistical: a few wild pixels are outliers") {
+    const FigureReference reference = statistical(200, 100);
+    Image8 student = noisyRender(200, 100, 16, 0., 6);
+    for (int k = 0; k < 30; ++k) set(student, 7 * k, k, 255, 255, 255);
+    const ImageVerdict v = compareStatistical(reference, student);
+    CHECK_FALSE(v.passed);
+    CHECK(metric(v, "pixels with |z| > 6") >= 30);
+}
+
+TEST_CASE("diagnosis: the closest signature is named when it fits, and only then") {
+    Mistake dark{"dark", "too dark", "brighten it", 3, "", {{"fig", downsample(flat(16, 16, 10, 10, 10))}}};
+    Mistake red{"red", "all red", "less red", 3, "", {{"fig", downsample(flat(16, 16, 250, 0, 0))}}};
+    const std::vector<Mistake> catalogue{dark, red};
+    const Image8 reference = flat(16, 16, 100, 100, 100);
+    const Diagnosis d = diagnose(catalogue, "fig", flat(16, 16, 11, 10, 9), reference);
+    REQUIRE(d.mistake != nullptr);
+    CHECK(d.mistake->id == "dark");
+    CHECK(d.text() == "your image matches 'too dark' (lab 3): brighten it");
+    CHECK(diagnose(catalogue, "fig", flat(16, 16, 60, 60, 60), reference).mistake == nullptr);
+    CHECK(diagnose(catalogue, "other", flat(16, 16, 10, 10, 10), reference).mistake == nullptr);
+}
+
+} // TEST_SUITE

