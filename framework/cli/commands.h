@@ -25,6 +25,9 @@ struct Context {
     bool ranInOtherImpl();
 };
 
+// The `study` subcommand, made by whichever study registers first; each study adds its own under it.
+CLI::App* studyCommand(CLI::App& app);
+
 void addFigureCommands(CLI::App& app, Context& context); // figures, lab, render
 void addBenchCommand(CLI::App& app, Context& context);   // bench
 void addStudyAntialiasingCommand(CLI::App& app, Context& context); // study antialiasing

@@ -23,6 +23,16 @@ void Context::addImplOption(CLI::App* command) {
         ->check(CLI::IsMember({"student", "reference"}));
 }
 
+CLI::App* studyCommand(CLI::App& app) {
+    try {
+        return app.get_subcommand("study");
+    } catch (const CLI::OptionNotFound&) {
+        CLI::App* study = app.add_subcommand("study", "what accuracy costs in time");
+        study->require_subcommand(1);
+        return study;
+    }
+}
+
 bool Context::ranInOtherImpl() {
     if (impl == build::kImpl) return false;
     namespace fs = std::filesystem;

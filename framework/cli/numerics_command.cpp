@@ -73,14 +73,7 @@ void addNumericsCommands(CLI::App& app, Context& context) {
             *all, "numerics");
     });
 
-    // `study` may already exist: other studies register their own subcommands under it.
-    CLI::App* study = nullptr;
-    try {
-        study = app.get_subcommand("study");
-    } catch (const CLI::OptionNotFound&) {
-        study = app.add_subcommand("study", "what accuracy costs in time");
-        study->require_subcommand(1);
-    }
+    CLI::App* study = studyCommand(app);
     auto intersection = std::make_shared<NumericsOptions>();
     intersection->out = "out/study/intersection";
     CLI::App* command = study->add_subcommand("intersection", "textbook vs stable ray/sphere formula, float vs double: "

@@ -10,14 +10,7 @@
 namespace raylab::cli {
 
 void addStudyAntialiasingCommand(CLI::App& app, Context& context) {
-    // `study` may already exist: other studies register their own subcommands under it.
-    CLI::App* study = nullptr;
-    try {
-        study = app.get_subcommand("study");
-    } catch (const CLI::OptionNotFound&) {
-        study = app.add_subcommand("study", "what accuracy costs in time");
-        study->require_subcommand(1);
-    }
+    CLI::App* study = studyCommand(app);
     auto o = std::make_shared<study::AntialiasingOptions>();
     auto out = std::make_shared<std::string>();
     CLI::App* command = study->add_subcommand(
