@@ -91,8 +91,9 @@ float toUnitFloat(std::uint32_t fraction) { return float(fraction >> 8) * 0x1p-2
 PixelSampler::PixelSampler(SamplerKind kind, int nbSamples, std::uint64_t seed, int i, int j, int width)
     : m_kind(kind == SamplerKind::Adaptive ? SamplerKind::Stratified : kind), m_nbSamples(nbSamples < 1 ? 1 : nbSamples),
       m_seed(seed), m_stream(std::uint64_t(j) * std::uint64_t(width) + std::uint64_t(i)) {
-    gridFor(m_nbSamples, m_gridWidth, m_gridHeight);
-    if (m_kind == SamplerKind::Sobol) {
+    if (m_kind == SamplerKind::Stratified || m_kind == SamplerKind::Grid)
+        gridFor(m_nbSamples, m_gridWidth, m_gridHeight); // a square root and divisions: only where used
+    else if (m_kind == SamplerKind::Sobol) {
         m_rng.emplace(m_seed, m_stream);
         m_scramble[0] = m_rng->nextUInt();
         m_scramble[1] = m_rng->nextUInt();
@@ -111,7 +112,7 @@ float PixelSampler::uniform() {
     return m_rng->nextFloat();
 }
 
-glm::vec2 PixelSampler::next2D() {
+glm::vec2 PixelSampler::next2DOther() {
     switch (m_kind) {
     case SamplerKind::Center: return {0.5f, 0.5f};
     case SamplerKind::Random: {

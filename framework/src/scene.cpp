@@ -18,19 +18,6 @@ SphereGeometry::SphereGeometry(const glm::vec3& center, float radius, const Colo
         throw std::invalid_argument("sphere: center is not finite");
 }
 
-bool Scene::intersect(const Ray& ray, HitRecord& hit, float tMin, float tMax) const {
-    bool found = false;
-    for (const SphereGeometry& sphere : spheres) {
-        // Each hit narrows the interval, so the last one found is the nearest.
-        if (sphere.intersect(ray, tMin, tMax, hit)) {
-            found = true;
-            tMax = hit.t;
-            hit.object = &sphere;
-        }
-    }
-    return found;
-}
-
 Scene makeTp1Scene() {
     Scene scene;
     scene.spheres.emplace_back(glm::vec3(0.f, 0.f, 3.f), 1.f, Color(0.f, 0.f, 1.f));

@@ -40,19 +40,29 @@ public:
 
     // The next sample offset in the pixel. After nbSamples calls, stratified sampling starts over
     // with new jitter, grid repeats its points, and the sequences go on.
-    glm::vec2 next2D();
+    // The random sampler, the one lab 5 uses, is inline: it is called once per sample.
+    glm::vec2 next2D() {
+        if (m_kind == SamplerKind::Random) {
+            if (!m_rng) m_rng.emplace(m_seed, m_stream);
+            m_drawn += 2;
+            const float x = m_rng->nextFloat();
+            return {x, m_rng->nextFloat()};
+        }
+        return next2DOther();
+    }
 
     // How many numbers this sampler took from its random generator (0 for center and grid).
     std::uint64_t randomNumbersDrawn() const { return m_drawn; }
 
 private:
+    glm::vec2 next2DOther();
     float uniform();
 
     SamplerKind m_kind;
     int m_nbSamples;
     std::uint32_t m_index = 0;
-    int m_gridWidth;  // stratified and grid: cells per row
-    int m_gridHeight; // stratified and grid: cells per column
+    int m_gridWidth = 1;  // stratified and grid: cells per row
+    int m_gridHeight = 1; // stratified and grid: cells per column
     int m_cellX = 0;  // stratified and grid: the cell of the next sample
     int m_cellY = 0;
     std::uint64_t m_seed;
