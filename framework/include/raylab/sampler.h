@@ -40,16 +40,7 @@ public:
 
     // The next sample offset in the pixel. After nbSamples calls, stratified sampling starts over
     // with new jitter, grid repeats its points, and the sequences go on.
-    // The random sampler, the one lab 5 uses, is inline: it is called once per sample.
-    glm::vec2 next2D() {
-        if (m_kind == SamplerKind::Random) {
-            if (!m_rng) m_rng.emplace(m_seed, m_stream);
-            m_drawn += 2;
-            const float x = m_rng->nextFloat();
-            return {x, m_rng->nextFloat()};
-        }
-        return next2DOther();
-    }
+    glm::vec2 next2D();
 
     // How many numbers this sampler took from its random generator (0 for center and grid).
     std::uint64_t randomNumbersDrawn() const { return m_drawn; }
