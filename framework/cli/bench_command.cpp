@@ -1,5 +1,6 @@
 #include "commands.h"
 
+#include "build_info.h"
 #include "raylab/figure.h"
 
 #include <algorithm>
@@ -19,6 +20,17 @@ int runBench(const std::filesystem::path& scenes, int threads, int repeats) {
     const int allThreads = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
     std::printf("raylab bench: %s, %d x %d, %s sampler, median of %d renders\n", d.id.c_str(), d.width, d.height,
                 std::string(samplerName(d.sampler)).c_str(), repeats);
+    // What the numbers depend on besides the code: the build and the machine.
+    std::printf("  build %s (%s), %s compiler, %u hardware threads, \"all\" = %d\n",
+                build::kBuildType[0] ? build::kBuildType : "no build type", build::kImpl,
+#if defined(__clang__)
+                "clang",
+#elif defined(__GNUC__)
+                "gcc",
+#else
+                "other",
+#endif
+                std::thread::hardware_concurrency(), allThreads);
     std::printf("  %8s %8s %12s %16s\n", "samples", "threads", "seconds", "Mrays/s");
     for (int samples : {1, 4, 16, 64}) {
         for (int t : {1, allThreads}) {

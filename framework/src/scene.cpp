@@ -38,19 +38,6 @@ Scene relativeTo(const Scene& scene, const glm::vec3& origin) {
     return moved;
 }
 
-bool Scene::intersect(const Ray& ray, HitRecord& hit, float tMin, float tMax) const {
-    bool found = false;
-    for (const SphereGeometry& sphere : spheres) {
-        // Each hit narrows the interval, so the last one found is the nearest.
-        if (sphere.intersect(ray, tMin, tMax, hit)) {
-            found = true;
-            tMax = hit.t;
-            hit.object = &sphere;
-        }
-    }
-    return found;
-}
-
 Scene makeTp1Scene() {
     Scene scene;
     scene.spheres.emplace_back(glm::vec3(0.f, 0.f, 3.f), 1.f, Color(0.f, 0.f, 1.f));

@@ -13,15 +13,13 @@ Texture::Texture(int width, int height) : m_width(width), m_height(height) {
 }
 
 void Texture::checkInside(int i, int j) const {
-    if (i < 0 || i >= m_width || j < 0 || j >= m_height)
-        throw std::out_of_range("Texture: pixel (i=" + std::to_string(i) + ", j=" + std::to_string(j) +
-                                ") is outside the " + std::to_string(m_width) + " x " + std::to_string(m_height) +
-                                " image (i is the column, j the row)");
+    if (i < 0 || i >= m_width || j < 0 || j >= m_height) throwOutside(i, j);
 }
 
-void Texture::setPixel(int i, int j, const Color& color) {
-    checkInside(i, j);
-    m_pixels[std::size_t(j) * std::size_t(m_width) + std::size_t(i)] = color;
+void Texture::throwOutside(int i, int j) const {
+    throw std::out_of_range("Texture: pixel (i=" + std::to_string(i) + ", j=" + std::to_string(j) +
+                                ") is outside the " + std::to_string(m_width) + " x " + std::to_string(m_height) +
+                                " image (i is the column, j the row)");
 }
 
 Color Texture::getPixel(int i, int j) const {

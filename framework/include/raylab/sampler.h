@@ -46,13 +46,14 @@ public:
     std::uint64_t randomNumbersDrawn() const { return m_drawn; }
 
 private:
+    glm::vec2 next2DOther();
     float uniform();
 
     SamplerKind m_kind;
     int m_nbSamples;
     std::uint32_t m_index = 0;
-    int m_gridWidth;  // stratified and grid: cells per row
-    int m_gridHeight; // stratified and grid: cells per column
+    int m_gridWidth = 1;  // stratified and grid: cells per row
+    int m_gridHeight = 1; // stratified and grid: cells per column
     int m_cellX = 0;  // stratified and grid: the cell of the next sample
     int m_cellY = 0;
     std::uint64_t m_seed;

@@ -12,9 +12,21 @@ struct Scene {
     std::vector<SphereGeometry> spheres;
     Color background{0.5f, 0.5f, 0.5f};
 
-    // The nearest hit over all spheres with t in [tMin, tMax]; sets hit.object.
+    // The nearest hit over all spheres with t in [tMin, tMax]; sets hit.object. Inline: the
+    // integrators call it once per ray.
     bool intersect(const Ray& ray, HitRecord& hit, float tMin = 0.f,
-                   float tMax = std::numeric_limits<float>::infinity()) const;
+                   float tMax = std::numeric_limits<float>::infinity()) const {
+        bool found = false;
+        for (const SphereGeometry& sphere : spheres) {
+            // Each hit narrows the interval, so the last one found is the nearest.
+            if (sphere.intersect(ray, tMin, tMax, hit)) {
+                found = true;
+                tMax = hit.t;
+                hit.object = &sphere;
+            }
+        }
+        return found;
+    }
 };
 
 // Large world coordinates (docs/numerics.md, section 9). Floats 10^7 from the origin are 1 apart,

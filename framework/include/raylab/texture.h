@@ -3,6 +3,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <vector>
 
 namespace raylab {
@@ -17,13 +18,18 @@ public:
     int height() const { return m_height; }
 
     // Throws std::out_of_range naming (i, j) and the size when the pixel is outside the image.
-    void setPixel(int i, int j, const Color& color);
+    // Inline: the renderer sets every pixel; the message is built out of line, only when thrown.
+    void setPixel(int i, int j, const Color& color) {
+        if (i < 0 || i >= m_width || j < 0 || j >= m_height) throwOutside(i, j);
+        m_pixels[std::size_t(j) * std::size_t(m_width) + std::size_t(i)] = color;
+    }
     Color getPixel(int i, int j) const;
 
     const std::vector<Color>& pixels() const { return m_pixels; }
 
 private:
     void checkInside(int i, int j) const;
+    [[noreturn]] void throwOutside(int i, int j) const;
 
     int m_width;
     int m_height;
