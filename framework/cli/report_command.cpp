@@ -162,6 +162,16 @@ std::string escape(const std::string& text) {
     return out;
 }
 
+// Markdown's `code` as HTML, escaped.
+std::string htmlText(const std::string& markdown) {
+    std::string out;
+    bool code = false;
+    for (char c : markdown)
+        if (c == '`') out += (code = !code) ? "<code>" : "</code>";
+        else out += escape(std::string(1, c));
+    return out;
+}
+
 std::string seconds(double s) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3f s", s);
@@ -287,7 +297,7 @@ int runReport(const ReportOptions& o, const Context& context) {
             "    raylabErrors.join(' | ') + ']';\n"
             "});\n"
             "</script></head><body>\n<h1>"
-         << escape(w.title) << "</h1>\n<p>" << escape(w.intro) << "</p>\n<p><a href=\"grade/index.html\">"
+         << escape(w.title) << "</h1>\n<p>" << htmlText(w.intro) << "</p>\n<p><a href=\"grade/index.html\">"
          << escape(w.fullReport) << "</a></p>\n";
     md << "[" << w.fullReport << "](grade/index.html)\n\n";
 
