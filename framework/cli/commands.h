@@ -41,3 +41,7 @@ void addGradeCommands(CLI::App& app, Context& context);      // grade, grade-cla
 void addReferencesCommand(CLI::App& app, Context& context); // references
 void addDistributeCommand(CLI::App& app, Context& context); // distribute
 } // namespace raylab::cli
+
+namespace raylab::cli {
+void addReportCommand(CLI::App& app, Context& context); // report: the student's lab report kit
+} // namespace raylab::cli

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     cli::addStudyAntialiasingCommand(app, context);
     cli::addBenchEffectsCommand(app, context);
     cli::addNumericsCommands(app, context);
+    cli::addReportCommand(app, context);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
