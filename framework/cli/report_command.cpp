@@ -113,9 +113,9 @@ constexpr Words kEnglish{
 
 constexpr Words kFrench{
     "Compte rendu de TP",
-    "Produit par `raylab report` : chaque figure de l'énoncé, la vôtre à côté de la référence et une carte "
-    "de la différence, avec son temps de rendu et le verdict du correcteur. Écrivez votre propre texte dans "
-    "les sections « Votre texte ».",
+    "Ce compte rendu a été produit par `raylab report` : il présente chaque figure de l'énoncé, la vôtre à "
+    "côté de la référence et d'une carte de la différence, avec son temps de rendu et le verdict du "
+    "correcteur. Écrivez votre propre texte dans les sections « Votre texte ».",
     "TP",
     {"Première image", "Rayons primaires", "Une sphère", "Caméra lookAt", "Anticrénelage"},
     "Figure",
@@ -126,11 +126,11 @@ constexpr Words kFrench{
     "Évaluation",
     "Votre texte",
     "Écrivez ici ce que vous avez fait, ce que montrent les figures et ce qui n'a pas marché.",
-    "Anticrénelage : crénelé contre anticrénelé",
+    "Anticrénelage : avant et après",
     "La figure 3(c) (un rayon par pixel) à côté de la figure 6 (32 échantillons par pixel), et un gros plan "
     "sur la silhouette.",
-    "crénelée (figure 3(c))",
-    "anticrénelée (figure 6)",
+    "sans anticrénelage (figure 3(c))",
+    "avec anticrénelage (figure 6)",
     "gros plan sur la silhouette, chaque pixel agrandi",
     "Le rapport complet du correcteur",
     " : ",
