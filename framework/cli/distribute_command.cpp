@@ -1,6 +1,7 @@
 // raylab distribute: writes the tree students receive: everything but the reference solutions and
-// what would give them away (the mistakes and valid variants of tests/ are whole lab solutions,
-// or one line from one). It builds, runs and self-grades on its own (tests/references stay).
+// what would give them away (the mistakes, valid variants and bad submissions of tests/ are patches
+// against the solutions, which show their lines). It builds, runs and self-grades on its own
+// (tests/references stay). tests/grading/distribute_ships_no_solution.cpp checks what it writes.
 #include "build_info.h"
 #include "commands.h"
 
@@ -18,8 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // Paths relative to the source tree that are not handed out.
-const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/variants", ".git", "out",
-                                      "compile_commands.json", ".cache"};
+const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/variants", "tests/grading/bad_submissions",
+                                      ".git", "out", "compile_commands.json", ".cache"};
 
 bool withheld(const fs::path& relative) {
     const std::string text = relative.generic_string();

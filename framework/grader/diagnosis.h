@@ -15,7 +15,7 @@ namespace raylab::grader {
 inline constexpr int kSignatureScale = 4; // signatures are averaged over 4 x 4 pixel blocks
 
 struct Mistake {
-    std::string id;    // its folder in tests/mistakes/ and tests/references/mistakes/
+    std::string id;    // its patch tests/mistakes/<id>.patch, its folder in tests/references/mistakes/
     std::string name;  // "fovy not halved"
     std::string hint;  // "use tan(fovy / 2): fovy is the full angle"
     int lab = 0;       // the lab whose file holds the mistake

@@ -1,4 +1,4 @@
-// Lab 1: your first image. This file is yours to edit.
+// Lab 1: your first image. The reference solution; students write labs/lab1_first_image/gradient.cpp.
 #include "raylab/gradient.h"
 
 namespace raylab {

@@ -1,4 +1,4 @@
-// Lab 2: primary rays. This file is yours to edit.
+// Lab 2: primary rays. The reference solution; students write labs/lab2_primary_rays/perspective_camera.cpp.
 #include "raylab/perspective_camera.h"
 
 #include <glm/geometric.hpp>

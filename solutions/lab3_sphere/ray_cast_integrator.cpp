@@ -1,4 +1,4 @@
-// Lab 3: shading the sphere. This file is yours to edit.
+// Lab 3: shading the sphere. The reference solution; students write labs/lab3_sphere/ray_cast_integrator.cpp.
 #include "raylab/integrator.h"
 
 #include <glm/geometric.hpp>

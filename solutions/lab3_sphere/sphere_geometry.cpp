@@ -1,4 +1,4 @@
-// Lab 3: a sphere. This file is yours to edit.
+// Lab 3: a sphere. The reference solution; students write labs/lab3_sphere/sphere_geometry.cpp.
 #include "raylab/sphere_geometry.h"
 
 #include <glm/geometric.hpp>

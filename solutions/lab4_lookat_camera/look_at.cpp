@@ -1,4 +1,4 @@
-// Lab 4: a camera you can place. This file is yours to edit.
+// Lab 4: a camera you can place. The reference solution; students write labs/lab4_lookat_camera/look_at.cpp.
 #include "raylab/perspective_camera.h"
 
 #include <glm/geometric.hpp>

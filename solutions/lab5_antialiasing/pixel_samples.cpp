@@ -1,4 +1,4 @@
-// Lab 5: antialiasing. This file is yours to edit.
+// Lab 5: antialiasing. The reference solution; students write labs/lab5_antialiasing/pixel_samples.cpp.
 #include "raylab/renderer.h"
 
 #include <glm/vec3.hpp>
