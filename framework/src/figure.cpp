@@ -1,22 +1,26 @@
 #include "raylab/figure.h"
 
 #include "raylab/gradient.h"
-#include "raylab/perspective_camera.h"
 #include "raylab/todo.h"
 
 #include <chrono>
-#include <memory>
+#include <stdexcept>
 
 namespace raylab {
 
 namespace {
 
-// `origin`: the render space's (renderOrigin in scene.h); the camera is placed relative to it.
-PerspectiveCamera makeCamera(const SceneDescription& d, const glm::vec3& origin) {
+// The default camera sits at the world origin, so its render space is world space.
+RenderSpace renderSpaceOf(const SceneDescription& d) {
+    if (d.picture == Picture::Gradient) throw std::invalid_argument(d.id + ": a gradient is drawn without rays");
+    return RenderSpace(d.camera.lookAt ? d.camera.position : glm::vec3(0.f));
+}
+
+PerspectiveCamera makeCamera(const SceneDescription& d, const RenderSpace& space) {
     const CameraDescription& c = d.camera;
     if (!c.lookAt) return PerspectiveCamera(d.width, d.height, c.fovy);
     checkLookAtParameters(c.position, c.target, c.up);
-    return PerspectiveCamera(d.width, d.height, relativeTo(c.position, origin), relativeTo(c.target, origin), c.up, c.fovy);
+    return PerspectiveCamera(d.width, d.height, space.toRender(c.position), space.toRender(c.target), c.up, c.fovy);
 }
 
 std::unique_ptr<Integrator> makeIntegrator(Picture picture) {
@@ -38,26 +42,27 @@ Texture renderGradient(const SceneDescription& d, RenderStats& stats) {
 
 } // namespace
 
+SceneRender::SceneRender(const SceneDescription& d, const RenderOptions& options)
+    : m_space(renderSpaceOf(d)), m_scene(m_space.toRender(d.scene)), m_camera(makeCamera(d, m_space)),
+      m_integrator(makeIntegrator(d.picture)), m_renderer(m_scene, m_camera, *m_integrator) {
+    m_renderer.setThreads(options.threads);
+    m_renderer.setProgress(options.progress);
+    m_renderer.setSampler(d.sampler);
+    m_renderer.setSeed(d.seed);
+    m_renderer.setAdaptive(d.adaptive);
+    // Lab 5's code is only asked for when the scene wants more than one sample.
+    if (d.samples != 1) m_renderer.setNbPixelSamples(d.samples);
+}
+
 FigureResult renderScene(const SceneDescription& d, const RenderOptions& options) {
     FigureResult result;
     try {
         if (d.picture == Picture::Gradient) {
             result.image = renderGradient(d, result.stats);
         } else {
-            const glm::vec3 origin = d.camera.lookAt ? renderOrigin(d.camera.position) : glm::vec3(0.f);
-            const PerspectiveCamera camera = makeCamera(d, origin);
-            const std::unique_ptr<Integrator> integrator = makeIntegrator(d.picture);
-            const Scene scene = relativeTo(d.scene, origin);
-            Renderer renderer(scene, camera, *integrator);
-            renderer.setThreads(options.threads);
-            renderer.setProgress(options.progress);
-            renderer.setSampler(d.sampler);
-            renderer.setSeed(d.seed);
-            renderer.setAdaptive(d.adaptive);
-            // Lab 5's code is only asked for when the scene wants more than one sample.
-            if (d.samples != 1) renderer.setNbPixelSamples(d.samples);
-            result.image = renderer.renderImage();
-            result.stats = renderer.stats();
+            SceneRender render(d, options);
+            result.image = render.renderer().renderImage();
+            result.stats = render.renderer().stats();
         }
         result.status = FigureResult::Status::Rendered;
     } catch (const NotDoneYet& e) {

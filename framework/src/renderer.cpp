@@ -1,19 +1,16 @@
 #include "raylab/renderer.h"
 
-#include "raylab/terminal.h"
+#include "raylab/parallel.h"
 
 #include <glm/common.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <functional>
-#include <mutex>
+#include <numeric>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 namespace raylab {
 
@@ -33,52 +30,16 @@ std::vector<Tile> makeTiles(int width, int height) {
     return tiles;
 }
 
-// Runs work(tile, randomNumbers) for every tile over `threads` threads; each worker counts the
-// random numbers it drew in its own variable, added up at the end. Rethrows the first exception.
-std::uint64_t forEachTile(const std::vector<Tile>& tiles, int threadsWanted, bool progress,
-                          const std::function<void(const Tile&, std::uint64_t&)>& work) {
-    std::atomic<std::size_t> nextTile{0};
-    std::atomic<std::size_t> tilesDone{0};
-    std::atomic<bool> failed{false};
-    std::atomic<std::uint64_t> drawn{0};
-    std::exception_ptr firstError;
-    std::mutex errorMutex;
-
-    auto worker = [&] {
-        std::uint64_t myDrawn = 0;
-        try {
-            for (std::size_t t = nextTile++; t < tiles.size() && !failed; t = nextTile++) {
-                work(tiles[t], myDrawn);
-                ++tilesDone;
-            }
-        } catch (...) {
-            std::lock_guard lock(errorMutex);
-            if (!failed.exchange(true)) firstError = std::current_exception();
-        }
-        drawn += myDrawn;
-    };
-
-    unsigned threads = threadsWanted > 0 ? unsigned(threadsWanted) : std::max(1u, std::thread::hardware_concurrency());
-    threads = unsigned(std::max<std::size_t>(1, std::min<std::size_t>(threads, tiles.size())));
-    std::vector<std::thread> workers;
-    for (unsigned k = 1; k < threads; ++k) workers.emplace_back(worker);
-    if (progress) {
-        ProgressBar bar(tiles.size());
-        // The calling thread watches; the workers render.
-        workers.emplace_back(worker);
-        while (tilesDone < tiles.size() && !failed) {
-            bar.update(tilesDone);
-            std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        }
-        for (auto& w : workers) w.join();
-        bar.finish();
-    } else {
-        worker();
-        for (auto& w : workers) w.join();
-    }
-    if (firstError) std::rethrow_exception(firstError);
-    return drawn;
+// Runs work(tile, worker) for every tile on the renderer's threads (parallel.h); work returns the
+// random numbers its pixel samplers drew, and this their total.
+std::uint64_t forEachTile(const std::vector<Tile>& tiles, int threads, bool progress,
+                          const std::function<std::uint64_t(const Tile&, unsigned worker)>& work) {
+    std::vector<std::uint64_t> drawn(workerCount(threads, tiles.size()), 0);
+    parallelFor(tiles.size(), threads, progress, [&](std::size_t t, unsigned worker) { drawn[worker] += work(tiles[t], worker); });
+    return std::accumulate(drawn.begin(), drawn.end(), std::uint64_t(0));
 }
+
+std::uint64_t pixelCount(int width, int height) { return std::uint64_t(width) * std::uint64_t(height); }
 
 // The integrator seen by adaptive sampling's first pass: passes every colour through and keeps the
 // range of the colours since the last reset. One per worker thread, so nothing is shared.
@@ -130,6 +91,13 @@ void Renderer::setAdaptive(const AdaptiveSettings& s) {
     m_adaptive = s;
 }
 
+Renderer Renderer::passRenderer(const Integrator& integrator, int nbSamples) const {
+    Renderer pass(m_scene, m_camera, integrator);
+    // A new renderer averages 1 sample: lab 5's setter is only asked for more.
+    if (nbSamples != 1) pass.setNbPixelSamples(nbSamples);
+    return pass;
+}
+
 Color Renderer::renderPixelCentre(int i, int j) const {
     const float sx = (float(i) + 0.5f) / float(m_camera.width());
     const float sy = (float(j) + 0.5f) / float(m_camera.height());
@@ -151,60 +119,81 @@ std::vector<std::uint8_t> Renderer::pixelsToRefine(const std::vector<float>& spr
     return refine;
 }
 
+void Renderer::renderCentres(Texture& image) {
+    forEachTile(makeTiles(image.width(), image.height()), m_threads, m_progress, [&](const Tile& tile, unsigned) {
+        for (int j = tile.y0; j < tile.y1; ++j)
+            for (int i = tile.x0; i < tile.x1; ++i) image.setPixel(i, j, renderPixelCentre(i, j));
+        return std::uint64_t(0);
+    });
+    m_stats.primaryRays = pixelCount(image.width(), image.height());
+}
+
+void Renderer::renderSampled(Texture& image) {
+    const int width = image.width();
+    m_stats.randomNumbers = forEachTile(makeTiles(width, image.height()), m_threads, m_progress, [&](const Tile& tile, unsigned) {
+        std::uint64_t drawn = 0;
+        for (int j = tile.y0; j < tile.y1; ++j)
+            for (int i = tile.x0; i < tile.x1; ++i) {
+                PixelSampler sampler(m_sampler, m_nbPixelSamples, m_seed, i, j, width);
+                image.setPixel(i, j, renderPixel(i, j, sampler));
+                drawn += sampler.randomNumbersDrawn();
+            }
+        return drawn;
+    });
+    m_stats.primaryRays = pixelCount(width, image.height()) * std::uint64_t(m_nbPixelSamples);
+}
+
+void Renderer::renderAdaptive(Texture& image) {
+    const int width = image.width();
+    const std::vector<Tile> tiles = makeTiles(width, image.height());
+    const SamplerKind kind = m_adaptive.within;
+
+    // First pass: each worker sees the integrator through a probe of its own.
+    const unsigned workers = workerCount(m_threads, tiles.size());
+    std::vector<SpreadProbe> probes(workers, SpreadProbe(m_integrator));
+    std::vector<Renderer> probed;
+    for (const SpreadProbe& probe : probes) probed.push_back(passRenderer(probe, m_nbPixelSamples));
+    std::vector<float> spread(pixelCount(width, image.height()));
+    m_stats.randomNumbers = forEachTile(tiles, m_threads, m_progress, [&](const Tile& tile, unsigned worker) {
+        std::uint64_t drawn = 0;
+        for (int j = tile.y0; j < tile.y1; ++j)
+            for (int i = tile.x0; i < tile.x1; ++i) {
+                PixelSampler sampler(kind, m_nbPixelSamples, m_seed, i, j, width);
+                probes[worker].reset();
+                image.setPixel(i, j, probed[worker].renderPixel(i, j, sampler));
+                spread[std::size_t(j) * width + i] = probes[worker].spread();
+                drawn += sampler.randomNumbersDrawn();
+            }
+        return drawn;
+    });
+    m_stats.primaryRays = pixelCount(width, image.height()) * std::uint64_t(m_nbPixelSamples);
+
+    // Second pass: the pixels to refine, with new samples that replace the first ones.
+    m_refined = pixelsToRefine(spread);
+    m_stats.refinedPixels = std::uint64_t(std::count(m_refined.begin(), m_refined.end(), std::uint8_t(1)));
+    const Renderer more = passRenderer(m_integrator, m_adaptive.maxSamples);
+    m_stats.randomNumbers += forEachTile(tiles, m_threads, m_progress, [&](const Tile& tile, unsigned) {
+        std::uint64_t drawn = 0;
+        for (int j = tile.y0; j < tile.y1; ++j)
+            for (int i = tile.x0; i < tile.x1; ++i) {
+                if (!m_refined[std::size_t(j) * width + i]) continue;
+                PixelSampler sampler(kind, m_adaptive.maxSamples, secondPassSeed(m_seed), i, j, width);
+                image.setPixel(i, j, more.renderPixel(i, j, sampler));
+                drawn += sampler.randomNumbersDrawn();
+            }
+        return drawn;
+    });
+    m_stats.primaryRays += m_stats.refinedPixels * std::uint64_t(m_adaptive.maxSamples);
+}
+
 Texture Renderer::renderImage() {
-    const int width = m_camera.width();
-    const int height = m_camera.height();
-    Texture image(width, height);
-    const std::vector<Tile> tiles = makeTiles(width, height);
-    const bool centreOnly = m_nbPixelSamples == 1 && m_sampler == SamplerKind::Center;
-    const bool adaptive = m_sampler == SamplerKind::Adaptive;
-    const SamplerKind kind = adaptive ? m_adaptive.within : m_sampler;
     const auto start = std::chrono::steady_clock::now();
     m_stats = RenderStats{};
     m_refined.clear();
-    std::vector<float> spread(adaptive ? std::size_t(width) * std::size_t(height) : 0);
-
-    m_stats.randomNumbers = forEachTile(tiles, m_threads, m_progress, [&](const Tile& tile, std::uint64_t& drawn) {
-        // Adaptive: renderPixel sees the integrator through this worker's probe.
-        SpreadProbe probe(m_integrator);
-        Renderer probed(m_scene, m_camera, probe);
-        probed.m_nbPixelSamples = m_nbPixelSamples;
-        for (int j = tile.y0; j < tile.y1; ++j)
-            for (int i = tile.x0; i < tile.x1; ++i) {
-                if (centreOnly) {
-                    image.setPixel(i, j, renderPixelCentre(i, j));
-                    continue;
-                }
-                PixelSampler sampler(kind, m_nbPixelSamples, m_seed, i, j, width);
-                if (adaptive) {
-                    probe.reset();
-                    image.setPixel(i, j, probed.renderPixel(i, j, sampler));
-                    spread[std::size_t(j) * width + i] = probe.spread();
-                } else {
-                    image.setPixel(i, j, renderPixel(i, j, sampler));
-                }
-                drawn += sampler.randomNumbersDrawn();
-            }
-    });
-    m_stats.primaryRays = std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(centreOnly ? 1 : m_nbPixelSamples);
-
-    if (adaptive) {
-        m_refined = pixelsToRefine(spread);
-        const std::vector<std::uint8_t>& refine = m_refined;
-        m_stats.refinedPixels = std::uint64_t(std::count(refine.begin(), refine.end(), std::uint8_t(1)));
-        m_stats.randomNumbers += forEachTile(tiles, m_threads, m_progress, [&](const Tile& tile, std::uint64_t& drawn) {
-            Renderer more(m_scene, m_camera, m_integrator);
-            more.m_nbPixelSamples = m_adaptive.maxSamples;
-            for (int j = tile.y0; j < tile.y1; ++j)
-                for (int i = tile.x0; i < tile.x1; ++i) {
-                    if (!refine[std::size_t(j) * width + i]) continue;
-                    PixelSampler sampler(kind, m_adaptive.maxSamples, secondPassSeed(m_seed), i, j, width);
-                    image.setPixel(i, j, more.renderPixel(i, j, sampler));
-                    drawn += sampler.randomNumbersDrawn();
-                }
-        });
-        m_stats.primaryRays += m_stats.refinedPixels * std::uint64_t(m_adaptive.maxSamples);
-    }
+    Texture image(m_camera.width(), m_camera.height());
+    if (m_sampler == SamplerKind::Adaptive) renderAdaptive(image);
+    else if (m_nbPixelSamples == 1 && m_sampler == SamplerKind::Center) renderCentres(image);
+    else renderSampled(image);
     m_stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return image;
 }

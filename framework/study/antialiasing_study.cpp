@@ -2,15 +2,14 @@
 
 #include "svg_plot.h"
 
-#include "raylab/perspective_camera.h"
-#include "raylab/renderer.h"
-#include "raylab/scene_file.h"
+#include "raylab/figure.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -31,15 +30,13 @@ struct Rendered {
     int runs = 0;
 };
 
-Rendered render(const SceneDescription& d, const Job& job, int runs, int threads) {
-    const PerspectiveCamera camera(d.width, d.height, d.camera.fovy);
-    const RayCastIntegrator integrator(d.picture == Picture::Flat ? Shading::Flat : Shading::Cosine);
-    Renderer renderer(d.scene, camera, integrator);
-    renderer.setThreads(threads);
-    renderer.setSampler(job.kind);
-    renderer.setNbPixelSamples(job.samples);
-    renderer.setAdaptive(job.adaptive);
-    renderer.setSeed(d.seed);
+Rendered render(const SceneDescription& scene, const Job& job, int runs, int threads) {
+    SceneDescription d = scene;
+    d.sampler = job.kind;
+    d.samples = job.samples;
+    d.adaptive = job.adaptive;
+    SceneRender setup(d, RenderOptions{threads, false});
+    Renderer& renderer = setup.renderer();
     Rendered r;
     std::vector<double> seconds;
     for (int k = 0; k < runs; ++k) {
@@ -92,7 +89,7 @@ struct SamplerSeries {
 std::map<std::string, SamplerSeries> seriesOf(const std::vector<StudyRow>& rows) {
     std::map<std::string, SamplerSeries> m;
     for (const StudyRow& r : rows) {
-        if (!r.setting.empty()) continue;
+        if (r.adaptive) continue;
         SamplerSeries& s = m[r.sampler];
         s.samples.push_back(r.samples);
         s.seconds.push_back(r.seconds);
@@ -114,7 +111,7 @@ void writeCsv(const std::filesystem::path& file, const std::vector<StudyRow>& ro
     std::ofstream out(file);
     out << "sampler,setting,samples,seconds,runs,rmse,silhouette_rmse,psnr,max_error,refined_fraction\n";
     for (const StudyRow& r : rows)
-        out << r.sampler << ',' << r.setting << ',' << r.samples << ',' << r.seconds << ',' << r.runs << ','
+        out << r.sampler << ',' << settingName(r) << ',' << r.samples << ',' << r.seconds << ',' << r.runs << ','
             << r.error.rmse << ',' << r.error.silhouetteRmse << ',' << r.error.psnr << ',' << r.error.maxError << ','
             << r.refinedFraction << '\n';
     if (!out) throw std::runtime_error("cannot write " + file.string());
@@ -134,7 +131,7 @@ void writePlots(const std::filesystem::path& out, const AntialiasingResult& resu
     }
     Series adaptiveSamples{"adaptive 16+256, thresholds", {}, {}, false}, adaptiveTime = adaptiveSamples;
     for (const StudyRow& r : result.rows)
-        if (r.sampler == "adaptive" && r.setting.find("widen") != std::string::npos && r.setting.rfind("16+", 0) == 0) {
+        if (r.adaptive && r.adaptive->baseSamples == 16) {
             adaptiveSamples.x.push_back(r.samples);
             adaptiveSamples.y.push_back(r.error.silhouetteRmse);
             adaptiveTime.x.push_back(r.seconds);
@@ -154,7 +151,7 @@ std::vector<StudyRow> measureUniform(const SceneDescription& d, const ExactImage
             const Job job{*samplerKindFromString(name), n, {}};
             const int runs = o.quick ? 1 : (n >= 1024 ? 1 : o.repeats);
             const Rendered r = render(d, job, runs, o.threads);
-            rows.push_back({name, "", double(n), r.seconds, r.runs, compare(r.image, exact), 0.});
+            rows.push_back({name, std::nullopt, double(n), r.seconds, r.runs, compare(r.image, exact), 0.});
             if (o.print)
                 std::printf("  %-10s %5d spp %9.4f s  rmse %.3e  silhouette %.3e\n", name.c_str(), n, r.seconds,
                             rows.back().error.rmse, rows.back().error.silhouetteRmse);
@@ -163,30 +160,62 @@ std::vector<StudyRow> measureUniform(const SceneDescription& d, const ExactImage
     return rows;
 }
 
+AdaptiveSettings rendererSettings(const AdaptiveStudySetting& s) {
+    return AdaptiveSettings{s.threshold, kAdaptiveMaxSamples, s.widen, SamplerKind::Stratified};
+}
+
 std::vector<StudyRow> measureAdaptive(const SceneDescription& d, const ExactImage& exact, const AntialiasingOptions& o) {
-    struct Setting {
-        int base;
-        float threshold;
-        bool widen;
-    };
-    std::vector<Setting> settings;
+    std::vector<AdaptiveStudySetting> settings;
     for (float t : {0.3f, 0.1f, 0.03f, 0.01f}) settings.push_back({16, t, true});
     settings.push_back({16, 0.1f, false});
     settings.push_back({4, 0.1f, true});
     std::vector<StudyRow> rows;
     const double pixels = double(d.width) * d.height;
-    for (const Setting& s : settings) {
-        const Job job{SamplerKind::Adaptive, s.base, AdaptiveSettings{s.threshold, 256, s.widen, SamplerKind::Stratified}};
-        const Rendered r = render(d, job, o.quick ? 1 : o.repeats, o.threads);
-        const std::string setting = std::to_string(s.base) + "+256 t=" + fmt("%g", s.threshold) + (s.widen ? " widen" : " no-widen");
-        rows.push_back({"adaptive", setting, double(r.stats.primaryRays) / pixels, r.seconds, r.runs, compare(r.image, exact),
+    for (const AdaptiveStudySetting& s : settings) {
+        const Rendered r = render(d, Job{SamplerKind::Adaptive, s.baseSamples, rendererSettings(s)}, o.quick ? 1 : o.repeats, o.threads);
+        rows.push_back({"adaptive", s, double(r.stats.primaryRays) / pixels, r.seconds, r.runs, compare(r.image, exact),
                         double(r.stats.refinedPixels) / pixels});
         if (o.print)
-            std::printf("  adaptive %-22s %7.1f spp %8.4f s  rmse %.3e  silhouette %.3e  refined %.2f%%\n", setting.c_str(),
-                        rows.back().samples, r.seconds, rows.back().error.rmse, rows.back().error.silhouetteRmse,
-                        100. * rows.back().refinedFraction);
+            std::printf("  adaptive %-22s %7.1f spp %8.4f s  rmse %.3e  silhouette %.3e  refined %.2f%%\n",
+                        settingName(rows.back()).c_str(), rows.back().samples, r.seconds, rows.back().error.rmse,
+                        rows.back().error.silhouetteRmse, 100. * rows.back().refinedFraction);
     }
     return rows;
+}
+
+// How far a pixel's colour is from the background: the "ink" of what covers it.
+double inkAt(const Texture& t, const Color& background, int i, int j) {
+    const Color c = t.getPixel(i, j) - background;
+    return double(std::abs(c.r) + std::abs(c.g) + std::abs(c.b));
+}
+
+double totalInk(const Texture& t, const Color& background) {
+    double ink = 0.;
+    for (int j = 0; j < t.height(); ++j)
+        for (int i = 0; i < t.width(); ++i) ink += inkAt(t, background, i, j);
+    return ink;
+}
+
+// The pixel each sphere's centre projects to, on the default camera (whose right is -x).
+std::vector<std::pair<int, int>> projectedCentres(const SceneDescription& d) {
+    const double vh = 2. * std::tan(d.camera.fovy * std::numbers::pi / 360.), vw = vh * d.width / d.height;
+    std::vector<std::pair<int, int>> centres;
+    for (const SphereGeometry& s : d.scene.spheres)
+        centres.push_back({int((-s.center().x / s.center().z / vw + 0.5) * d.width),
+                           int((0.5 - s.center().y / s.center().z / vh) * d.height)});
+    return centres;
+}
+
+// The small objects of which no pixel around their centre shows any ink.
+int objectsMissed(const Texture& t, const Color& background, const std::vector<std::pair<int, int>>& centres) {
+    int missed = 0;
+    for (auto [ci, cj] : centres) {
+        double seen = 0.;
+        for (int j = std::max(0, cj - 1); j <= std::min(t.height() - 1, cj + 1); ++j)
+            for (int i = std::max(0, ci - 1); i <= std::min(t.width() - 1, ci + 1); ++i) seen += inkAt(t, background, i, j);
+        missed += seen == 0.;
+    }
+    return missed;
 }
 
 // Adaptive sampling on objects smaller than a pixel, against a stratified render with many samples.
@@ -194,35 +223,16 @@ std::vector<FailureRow> measureFailure(const AntialiasingOptions& o) {
     const SceneDescription d = loadSceneFile(o.thinObjects);
     const Rendered reference = render(d, Job{SamplerKind::Stratified, o.quick ? 1024 : 4096, {}}, 1, o.threads);
     const Color bg = d.scene.background;
-    auto ink = [&](const Texture& t, int i, int j) {
-        const Color c = t.getPixel(i, j) - bg;
-        return double(std::abs(c.r) + std::abs(c.g) + std::abs(c.b));
-    };
-    // Each small sphere's pixel, where its centre projects (the default camera: right is -x).
-    const double vh = 2. * std::tan(d.camera.fovy * M_PI / 360.), vw = vh * d.width / d.height;
-    std::vector<std::pair<int, int>> centres;
-    for (const SphereGeometry& s : d.scene.spheres)
-        centres.push_back({int((-s.center().x / s.center().z / vw + 0.5) * d.width),
-                           int((0.5 - s.center().y / s.center().z / vh) * d.height)});
-    double referenceInk = 0.;
-    for (int j = 0; j < d.height; ++j)
-        for (int i = 0; i < d.width; ++i) referenceInk += ink(reference.image, i, j);
+    const std::vector<std::pair<int, int>> centres = projectedCentres(d);
+    const double referenceInk = totalInk(reference.image, bg);
 
     std::vector<FailureRow> rows;
     for (int base : {16, 4})
         for (bool widen : {true, false}) {
-            const Job job{SamplerKind::Adaptive, base, AdaptiveSettings{0.05f, 256, widen, SamplerKind::Stratified}};
-            const Rendered r = render(d, job, 1, o.threads);
-            FailureRow row{base, widen, 0., 0, int(centres.size()), r.seconds};
-            for (int j = 0; j < d.height; ++j)
-                for (int i = 0; i < d.width; ++i) row.inkFound += ink(r.image, i, j);
-            row.inkFound /= referenceInk;
-            for (auto [ci, cj] : centres) {
-                double seen = 0.;
-                for (int j = std::max(0, cj - 1); j <= std::min(d.height - 1, cj + 1); ++j)
-                    for (int i = std::max(0, ci - 1); i <= std::min(d.width - 1, ci + 1); ++i) seen += ink(r.image, i, j);
-                row.objectsMissed += seen == 0.;
-            }
+            const AdaptiveStudySetting setting{base, 0.05f, widen};
+            const Rendered r = render(d, Job{SamplerKind::Adaptive, base, rendererSettings(setting)}, 1, o.threads);
+            const FailureRow row{base, widen, totalInk(r.image, bg) / referenceInk, objectsMissed(r.image, bg, centres),
+                                 int(centres.size()), r.seconds};
             if (o.print)
                 std::printf("  thin objects: adaptive %2d+256 %-9s found %5.1f%% of their contrast, missed %d of %d\n", base,
                             widen ? "widen" : "no-widen", 100. * row.inkFound, row.objectsMissed, row.objects);
@@ -239,47 +249,9 @@ std::string loadAverage() {
     return " (load average " + fmt("%.1f", load) + " when the study wrote this)";
 }
 
-} // namespace
+constexpr double kTargetRmse = 1e-3;
 
-void writeMarkdown(const std::filesystem::path& file, const AntialiasingResult& result, const AntialiasingOptions& o);
-
-AntialiasingResult runAntialiasingStudy(const AntialiasingOptions& o) {
-    SceneDescription d = loadSceneFile(o.scene);
-    if (o.quick) d.width = 120, d.height = 80;
-    const CentredSphere sphere = centredSphere(d);
-    AntialiasingResult result;
-    result.width = d.width;
-    result.height = d.height;
-    const ExactImage exact = exactCentredSphere(sphere);
-    {
-        // The reference's own error: how much a pixel moves when the quadrature nodes double.
-        const ExactImage finer = exactCentredSphere(sphere, 32);
-        for (std::size_t p = 0; p < exact.pixels.size(); ++p) {
-            for (int c = 0; c < 3; ++c)
-                result.referenceCheck = std::max(result.referenceCheck, std::abs(exact.pixels[p][c] - finer.pixels[p][c]));
-            result.silhouettePixels += exact.coverage[p] > 1e-12 && exact.coverage[p] < 1. - 1e-12;
-        }
-    }
-    if (o.print)
-        std::printf("raylab study antialiasing: %s, %d x %d, %d silhouette pixels; exact reference (quadrature, "
-                    "converged to %.1e)\n", d.id.c_str(), d.width, d.height, result.silhouettePixels, result.referenceCheck);
-    const std::vector<int> counts = o.quick ? std::vector<int>{1, 4, 16, 64, 256} : std::vector<int>{1, 4, 16, 64, 256, 1024};
-    result.rows = measureUniform(d, exact, o, counts);
-    for (StudyRow& r : measureAdaptive(d, exact, o)) result.rows.push_back(std::move(r));
-    result.failure = measureFailure(o);
-
-    std::filesystem::create_directories(o.out);
-    writeCsv(o.out / "accuracy.csv", result.rows);
-    writePlots(o.out, result);
-    writeMarkdown(o.out / "accuracy.md", result, o);
-    if (o.print) std::printf("wrote accuracy.md, accuracy.csv, accuracy_samples.svg, accuracy_time.svg in %s\n", o.out.string().c_str());
-    return result;
-}
-
-void writeMarkdown(const std::filesystem::path& file, const AntialiasingResult& result, const AntialiasingOptions& o) {
-    const auto series = seriesOf(result.rows);
-    const double target = 1e-3;
-    std::ostringstream md;
+void writeIntroduction(std::ostream& md, const AntialiasingResult& result, const AntialiasingOptions& o) {
     md << "# What accuracy costs in time: antialiasing\n\n"
        << "Generated by `raylab study antialiasing" << (o.quick ? " --quick" : "") << "` (framework/study/); do not edit by hand.\n"
        << "Lab 5's scene, " << result.width << " x " << result.height << " pixels (" << result.silhouettePixels
@@ -294,19 +266,23 @@ void writeMarkdown(const std::filesystem::path& file, const AntialiasingResult& 
        << "Sampling a reference instead would need about 10^10 samples a pixel to get there.\n\n"
        << "![RMSE on silhouette pixels against samples](accuracy_samples.svg)\n\n"
        << "![RMSE against time](accuracy_time.svg)\n\n";
+}
 
+// The convergence table; returns each sampler's seconds to kTargetRmse over the image (0 when not
+// known).
+std::map<std::string, double> writeConvergence(std::ostream& md, const std::map<std::string, SamplerSeries>& series) {
     md << "## Convergence\n\n| sampler | slope on silhouette pixels | slope of the image's RMSE against time | samples for RMSE "
-       << fmt("%g", target) << " | seconds for RMSE " << fmt("%g", target) << " | samples for silhouette RMSE "
-       << fmt("%g", target) << " |\n|---|---|---|---|---|---|\n";
+       << fmt("%g", kTargetRmse) << " | seconds for RMSE " << fmt("%g", kTargetRmse) << " | samples for silhouette RMSE "
+       << fmt("%g", kTargetRmse) << " |\n|---|---|---|---|---|---|\n";
     std::map<std::string, double> secondsToTarget;
     for (const std::string& name : kStudySamplers) {
         const auto it = series.find(name);
         if (it == series.end()) continue;
         const SamplerSeries& s = it->second;
-        const std::string seconds = reach(s.seconds, s.rmse, target, "%.3g");
+        const std::string seconds = reach(s.seconds, s.rmse, kTargetRmse, "%.3g");
         md << "| " << name << " | " << fmt("%.2f", fittedSlope(s.samples, s.silhouette)) << " | "
-           << fmt("%.2f", logLogSlope(s.seconds, s.rmse)) << " | " << reach(s.samples, s.rmse, target, "%.0f") << " | "
-           << seconds << " | " << reach(s.samples, s.silhouette, target, "%.0f") << " |\n";
+           << fmt("%.2f", logLogSlope(s.seconds, s.rmse)) << " | " << reach(s.samples, s.rmse, kTargetRmse, "%.0f") << " | "
+           << seconds << " | " << reach(s.samples, s.silhouette, kTargetRmse, "%.0f") << " |\n";
         secondsToTarget[name] = std::atof(seconds.c_str() + (seconds[0] == '~' ? 1 : 0));
     }
     md << "\nSlopes are least-squares fits of log error against log samples from 4 samples on (the first sample is not "
@@ -315,51 +291,69 @@ void writeMarkdown(const std::filesystem::path& file, const AntialiasingResult& 
           "The RMSE of the image is over all its pixels and channels (linear values, no 8-bit rounding); most pixels are "
           "inside or outside the disc, where every sampler is nearly exact, so the image reaches a given RMSE far sooner "
           "than its silhouette pixels alone (last column).\n\n";
+    return secondsToTarget;
+}
 
-    // The reading: who gets to the target first.
+// Who gets to the target error first, against uniform random sampling.
+void writeFastest(std::ostream& md, const std::map<std::string, double>& secondsToTarget) {
     std::string best;
     for (const auto& [name, seconds] : secondsToTarget)
-        if (seconds > 0. && (best.empty() || seconds < secondsToTarget[best])) best = name;
-    md << "## Reading\n\n";
-    if (!best.empty() && secondsToTarget.count("random") && secondsToTarget["random"] > 0.)
-        md << "- To reach an RMSE of " << fmt("%g", target) << " over the image, **" << best << "** gets there first, in "
-           << fmt("%.3g", secondsToTarget[best]) << " s against " << fmt("%.3g", secondsToTarget["random"])
-           << " s for uniform random sampling: " << fmt("%.0f", 100. * (1. - secondsToTarget[best] / secondsToTarget["random"]))
-           << "% of the time saved.\n";
-    const auto stratified = series.find("stratified"), random = series.find("random");
-    if (stratified != series.end() && random != series.end() && stratified->second.silhouette.size() >= 3) {
-        const SamplerSeries &s = stratified->second, &r = random->second;
-        const std::size_t k = s.samples.size() - 1;
-        md << "- What 4x more samples buy: on the silhouette, from " << fmt("%.0f", s.samples[k - 1]) << " to "
-           << fmt("%.0f", s.samples[k]) << " samples the error of random sampling falls by "
-           << fmt("%.2f", r.silhouette[k - 1] / r.silhouette[k]) << "x (theory: 2x), that of stratified sampling by "
-           << fmt("%.2f", s.silhouette[k - 1] / s.silhouette[k]) << "x (theory: 4^0.75 = 2.83x).\n";
-    }
-    const StudyRow* uniform256 = nullptr;
-    for (const StudyRow& r : result.rows)
-        if (r.sampler == "stratified" && r.setting.empty() && r.samples == 256.) uniform256 = &r;
-    const StudyRow* bestAdaptive = nullptr;
-    for (const StudyRow& r : result.rows)
-        if (r.sampler == "adaptive" && r.setting.rfind("16+", 0) == 0 && r.setting.find("no-widen") == std::string::npos &&
-            uniform256 != nullptr && r.error.rmse <= 1.1 * uniform256->error.rmse &&
-            (bestAdaptive == nullptr || r.seconds < bestAdaptive->seconds))
-            bestAdaptive = &r;
-    if (uniform256 != nullptr && bestAdaptive != nullptr)
-        md << "- Adaptive sampling (stratified, 16 samples everywhere, the pixels whose samples differ by more than the "
-              "threshold widened by one pixel, then 256 samples on them; setting " << bestAdaptive->setting << ") reaches an RMSE of "
-           << fmt("%.2e", bestAdaptive->error.rmse) << " against " << fmt("%.2e", uniform256->error.rmse)
-           << " for uniform stratified 256, in " << fmt("%.3g", bestAdaptive->seconds) << " s against "
-           << fmt("%.3g", uniform256->seconds) << " s: **" << fmt("%.2f", bestAdaptive->seconds / uniform256->seconds)
-           << " of the time** (1/" << fmt("%.1f", uniform256->seconds / bestAdaptive->seconds) << "), rendering "
-           << fmt("%.1f", 100. * bestAdaptive->refinedFraction) << "% of the pixels again.\n";
-    else if (uniform256 != nullptr)
-        md << "- No adaptive setting measured here reached the error of uniform stratified 256.\n";
+        if (seconds > 0. && (best.empty() || seconds < secondsToTarget.at(best))) best = name;
+    const auto random = secondsToTarget.find("random");
+    if (best.empty() || random == secondsToTarget.end() || !(random->second > 0.)) return;
+    const double fastest = secondsToTarget.at(best);
+    md << "- To reach an RMSE of " << fmt("%g", kTargetRmse) << " over the image, **" << best << "** gets there first, in "
+       << fmt("%.3g", fastest) << " s against " << fmt("%.3g", random->second)
+       << " s for uniform random sampling: " << fmt("%.0f", 100. * (1. - fastest / random->second)) << "% of the time saved.\n";
+}
 
+// What 4x more samples buy at the largest counts, random against stratified, on the silhouette.
+void writeFourTimesMore(std::ostream& md, const std::map<std::string, SamplerSeries>& series) {
+    const auto stratified = series.find("stratified"), random = series.find("random");
+    if (stratified == series.end() || random == series.end() || stratified->second.silhouette.size() < 3) return;
+    const SamplerSeries &s = stratified->second, &r = random->second;
+    const std::size_t k = s.samples.size() - 1;
+    md << "- What 4x more samples buy: on the silhouette, from " << fmt("%.0f", s.samples[k - 1]) << " to "
+       << fmt("%.0f", s.samples[k]) << " samples the error of random sampling falls by "
+       << fmt("%.2f", r.silhouette[k - 1] / r.silhouette[k]) << "x (theory: 2x), that of stratified sampling by "
+       << fmt("%.2f", s.silhouette[k - 1] / s.silhouette[k]) << "x (theory: 4^0.75 = 2.83x).\n";
+}
+
+// The fastest widened 16+256 setting within 10% of uniform stratified 256's error, or none.
+const StudyRow* bestAdaptiveAgainst(const std::vector<StudyRow>& rows, const StudyRow& uniform) {
+    const StudyRow* best = nullptr;
+    for (const StudyRow& r : rows)
+        if (r.adaptive && r.adaptive->baseSamples == 16 && r.adaptive->widen && r.error.rmse <= 1.1 * uniform.error.rmse &&
+            (best == nullptr || r.seconds < best->seconds))
+            best = &r;
+    return best;
+}
+
+void writeAdaptiveAgainstUniform(std::ostream& md, const std::vector<StudyRow>& rows) {
+    const auto uniform = std::find_if(rows.begin(), rows.end(), [](const StudyRow& r) {
+        return r.sampler == "stratified" && !r.adaptive && r.samples == 256.;
+    });
+    if (uniform == rows.end()) return;
+    const StudyRow* best = bestAdaptiveAgainst(rows, *uniform);
+    if (best == nullptr) {
+        md << "- No adaptive setting measured here reached the error of uniform stratified 256.\n";
+        return;
+    }
+    md << "- Adaptive sampling (stratified, 16 samples everywhere, the pixels whose samples differ by more than the "
+          "threshold widened by one pixel, then 256 samples on them; setting " << settingName(*best) << ") reaches an RMSE of "
+       << fmt("%.2e", best->error.rmse) << " against " << fmt("%.2e", uniform->error.rmse)
+       << " for uniform stratified 256, in " << fmt("%.3g", best->seconds) << " s against "
+       << fmt("%.3g", uniform->seconds) << " s: **" << fmt("%.2f", best->seconds / uniform->seconds)
+       << " of the time** (1/" << fmt("%.1f", uniform->seconds / best->seconds) << "), rendering "
+       << fmt("%.1f", 100. * best->refinedFraction) << "% of the pixels again.\n";
+}
+
+void writeFailure(std::ostream& md, const std::vector<FailureRow>& failure, const AntialiasingOptions& o) {
     md << "\n## The failure case: objects smaller than a pixel\n\n"
        << "`scenes/study/adaptive_thin_objects.toml`: 24 spheres 0.35 pixel across. Adaptive sampling (threshold 0.05, "
           "256 samples on the pixels it refines) against a stratified render with " << (o.quick ? 1024 : 4096) << " samples:\n\n"
        << "| first pass | widened by one pixel | contrast of the small objects found | objects missed entirely |\n|---|---|---|---|\n";
-    for (const FailureRow& f : result.failure)
+    for (const FailureRow& f : failure)
         md << "| " << f.baseSamples << " samples | " << (f.widen ? "yes" : "no") << " | " << fmt("%.0f", 100. * f.inkFound)
            << "% | " << f.objectsMissed << " of " << f.objects << " |\n";
     md << "\nA pixel is refined only when its first samples disagree, so an object that no first sample hits is never "
@@ -367,23 +361,83 @@ void writeMarkdown(const std::filesystem::path& file, const AntialiasingResult& 
           "Without widening, a pixel that the object covers in part keeps its wrong first estimate while its neighbour is "
           "refined. With 16 samples and widening, the first pass sees the object in one of its pixels and the widening "
           "brings in the others.";
-    if (!result.failure.empty() && result.failure[0].objectsMissed > 0)
-        md << " Even then " << result.failure[0].objectsMissed << " of the " << result.failure[0].objects
+    if (!failure.empty() && failure[0].objectsMissed > 0)
+        md << " Even then " << failure[0].objectsMissed << " of the " << failure[0].objects
            << " objects were missed here, because no first sample hit them: adaptive sampling cannot promise to find "
               "what is smaller than the spacing of its first samples.";
     md << "\n";
+}
 
+void writeMeasurements(std::ostream& md, const std::vector<StudyRow>& rows) {
     md << "\n## Every measurement\n\n| sampler | setting | samples | seconds | runs | RMSE | silhouette RMSE | PSNR (dB) | max error | refined |\n"
           "|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const StudyRow& r : result.rows)
-        md << "| " << r.sampler << " | " << r.setting << " | " << fmt("%.1f", r.samples) << " | " << fmt("%.4f", r.seconds)
+    for (const StudyRow& r : rows)
+        md << "| " << r.sampler << " | " << settingName(r) << " | " << fmt("%.1f", r.samples) << " | " << fmt("%.4f", r.seconds)
            << " | " << r.runs << " | " << fmt("%.3e", r.error.rmse) << " | " << fmt("%.3e", r.error.silhouetteRmse) << " | "
            << fmt("%.1f", r.error.psnr) << " | " << fmt("%.3e", r.error.maxError) << " | "
-           << (r.sampler == "adaptive" ? fmt("%.2f%%", 100. * r.refinedFraction) : std::string()) << " |\n";
+           << (r.adaptive ? fmt("%.2f%%", 100. * r.refinedFraction) : std::string()) << " |\n";
     md << "\nThe same numbers are in [accuracy.csv](accuracy.csv).\n";
+}
+
+void writeMarkdown(const std::filesystem::path& file, const AntialiasingResult& result, const AntialiasingOptions& o) {
+    const auto series = seriesOf(result.rows);
+    std::ostringstream md;
+    writeIntroduction(md, result, o);
+    const std::map<std::string, double> secondsToTarget = writeConvergence(md, series);
+    md << "## Reading\n\n";
+    writeFastest(md, secondsToTarget);
+    writeFourTimesMore(md, series);
+    writeAdaptiveAgainstUniform(md, result.rows);
+    writeFailure(md, result.failure, o);
+    writeMeasurements(md, result.rows);
     std::ofstream out(file);
     out << md.str();
     if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+// The exact reference's own error (how much a pixel moves when the quadrature nodes double) and
+// its silhouette pixels.
+void checkReference(const CentredSphere& sphere, const ExactImage& exact, AntialiasingResult& result) {
+    const ExactImage finer = exactCentredSphere(sphere, 32);
+    for (std::size_t p = 0; p < exact.pixels.size(); ++p) {
+        for (int c = 0; c < 3; ++c)
+            result.referenceCheck = std::max(result.referenceCheck, std::abs(exact.pixels[p][c] - finer.pixels[p][c]));
+        result.silhouettePixels += exact.coverage[p] > 1e-12 && exact.coverage[p] < 1. - 1e-12;
+    }
+}
+
+} // namespace
+
+std::string settingName(const StudyRow& row) {
+    if (!row.adaptive) return "";
+    const AdaptiveStudySetting& s = *row.adaptive;
+    return std::to_string(s.baseSamples) + "+" + std::to_string(kAdaptiveMaxSamples) + " t=" + fmt("%g", s.threshold) +
+           (s.widen ? " widen" : " no-widen");
+}
+
+AntialiasingResult runAntialiasingStudy(const AntialiasingOptions& o) {
+    SceneDescription d = loadSceneFile(o.scene);
+    if (o.quick) d.width = 120, d.height = 80;
+    const CentredSphere sphere = centredSphere(d);
+    AntialiasingResult result;
+    result.width = d.width;
+    result.height = d.height;
+    const ExactImage exact = exactCentredSphere(sphere);
+    checkReference(sphere, exact, result);
+    if (o.print)
+        std::printf("raylab study antialiasing: %s, %d x %d, %d silhouette pixels; exact reference (quadrature, "
+                    "converged to %.1e)\n", d.id.c_str(), d.width, d.height, result.silhouettePixels, result.referenceCheck);
+    const std::vector<int> counts = o.quick ? std::vector<int>{1, 4, 16, 64, 256} : std::vector<int>{1, 4, 16, 64, 256, 1024};
+    result.rows = measureUniform(d, exact, o, counts);
+    for (StudyRow& r : measureAdaptive(d, exact, o)) result.rows.push_back(std::move(r));
+    result.failure = measureFailure(o);
+
+    std::filesystem::create_directories(o.out);
+    writeCsv(o.out / "accuracy.csv", result.rows);
+    writePlots(o.out, result);
+    writeMarkdown(o.out / "accuracy.md", result, o);
+    if (o.print) std::printf("wrote accuracy.md, accuracy.csv, accuracy_samples.svg, accuracy_time.svg in %s\n", o.out.string().c_str());
+    return result;
 }
 
 } // namespace raylab::study

@@ -5,6 +5,7 @@
 #include "image_error.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,9 +21,18 @@ struct AntialiasingOptions {
     bool print = true; // a line a measurement on standard output
 };
 
+// Adaptive sampling as the study runs it: `baseSamples` stratified samples in every pixel, then 256
+// in the pixels whose samples differ by more than `threshold` (with `widen`, and their neighbours).
+struct AdaptiveStudySetting {
+    int baseSamples = 16;
+    float threshold = 0.1f;
+    bool widen = true;
+};
+inline constexpr int kAdaptiveMaxSamples = 256;
+
 struct StudyRow {
     std::string sampler;
-    std::string setting;    // adaptive: "16+256 t=0.05 widen"; empty otherwise
+    std::optional<AdaptiveStudySetting> adaptive; // adaptive rows only
     double samples = 0.;    // mean samples per pixel
     double seconds = 0.;    // median render time
     int runs = 0;
@@ -45,6 +55,9 @@ struct AntialiasingResult {
     double referenceCheck = 0.; // the largest change of a reference pixel when the quadrature nodes double
     int width = 0, height = 0, silhouettePixels = 0;
 };
+
+// An adaptive row's setting as its tables show it, "16+256 t=0.05 widen"; "" for a uniform sampler.
+std::string settingName(const StudyRow& row);
 
 // Runs the study and writes its files; throws std::runtime_error when a scene does not fit.
 AntialiasingResult runAntialiasingStudy(const AntialiasingOptions& options);

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -28,7 +29,7 @@ struct Rule {
 Rule gaussLegendre(int n) {
     Rule rule{std::vector<double>(std::size_t(n)), std::vector<double>(std::size_t(n))};
     for (int k = 0; k < n; ++k) {
-        double x = std::cos(M_PI * (k + 0.75) / (n + 0.5));
+        double x = std::cos(std::numbers::pi * (k + 0.75) / (n + 0.5));
         double dp = 0.;
         for (int iteration = 0; iteration < 100; ++iteration) {
             double p0 = 1., p1 = x;
@@ -127,7 +128,7 @@ ExactImage exactCentredSphere(const CentredSphere& s, int nodes) {
     const double rho = s.radius / std::sqrt(s.distance * s.distance - s.radius * s.radius);
     const double k = (s.distance * s.distance - s.radius * s.radius) / (s.radius * s.radius);
     const PixelIntegrator integrator(rho, k, s.cosine, nodes);
-    const double vh = 2. * std::tan(s.fovyDegrees * M_PI / 360.), vw = vh * s.width / s.height;
+    const double vh = 2. * std::tan(s.fovyDegrees * std::numbers::pi / 360.), vw = vh * s.width / s.height;
     const double dx = vw / s.width, dy = vh / s.height, area = dx * dy;
     ExactImage image;
     image.pixels.resize(std::size_t(s.width) * std::size_t(s.height));

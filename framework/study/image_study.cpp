@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +34,54 @@ double fovyForDisc(double distance, double pixels, int size) {
     return glm::degrees(2. * std::atan(screenRadius * (size / 2.) / pixels));
 }
 
+// The far disc's three methods (the lab code, the textbook float formula, the stable float one):
+// pixels hit, pixels whose hit or miss the long double truth contradicts, and the worst cosine
+// error in 8-bit levels.
+struct DiscCounts {
+    static constexpr const char* kMethods[3] = {"lab code (float)", "textbook float", "stable float"};
+    std::int64_t hits[3] = {0, 0, 0}, wrong[3] = {0, 0, 0}, levels[3] = {0, 0, 0};
+};
+
+// The disc's analytic area in pixels, from the camera's own float viewport: the silhouette's radius
+// on the screen over half the screen's height, times half the image's height.
+double analyticDiscArea(const PerspectiveCamera& camera, const glm::vec3& centre) {
+    const LD screenRadius = std::tan(std::asin(LD(1) / LD(centre.z)));
+    const LD radiusPx = screenRadius / (LD(camera.viewportHeight()) / 2) * (kDiscImage / 2.L);
+    return double(std::numbers::pi_v<LD> * radiusPx * radiusPx);
+}
+
+// One ray per pixel centre of the camera through the three methods, against long double.
+DiscCounts measureDisc(const PerspectiveCamera& camera, const glm::vec3& centre) {
+    const SphereGeometry sphere(centre, 1.f, Color(1.f));
+    Scene scene;
+    scene.spheres.push_back(sphere);
+    const RayCastIntegrator cosine(Shading::Cosine);
+    DiscCounts counts;
+    auto level = [](LD v) { return std::int64_t(std::llround(255.L * std::clamp(v, LD(0), LD(1)))); };
+    for (int j = 0; j < kDiscImage; ++j)
+        for (int i = 0; i < kDiscImage; ++i) {
+            const Ray ray = camera.generateRay((float(i) + 0.5f) / float(kDiscImage), (float(j) + 0.5f) / float(kDiscImage));
+            const V3<LD> o = V3<LD>::from(ray.origin), d = V3<LD>::from(ray.direction), c = V3<LD>::from(centre);
+            const SphereHit<LD> truth = stableIntersect(o, d, c, LD(1), LD(0), LD(kInf));
+            const V3<float> of = V3<float>::from(ray.origin), df = V3<float>::from(ray.direction), cf = V3<float>::from(centre);
+            const SphereHit<float> foil = textbookIntersect(of, df, cf, 1.f, 0.f, kInf);
+            const SphereHit<float> stable = stableIntersect(of, df, cf, 1.f, 0.f, kInf);
+            HitRecord hit;
+            const bool got[3] = {sphere.intersect(ray, 0.f, kInf, hit), foil.hit, stable.hit};
+            // The cosine -d.n of each, where it and the truth both hit.
+            auto shade = [&](const V3<float>& n) { return -LD(dot(df, n)); };
+            const LD shades[3] = {LD(cosine.Li(scene, ray).b), shade(normalAt(of, df, cf, 1.f, foil.t)),
+                                  shade(normalAt(of, df, cf, 1.f, stable.t))};
+            const LD exactShade = -dot(d, normalAt(o, d, c, LD(1), truth.t));
+            for (int m = 0; m < 3; ++m) {
+                counts.hits[m] += got[m];
+                counts.wrong[m] += got[m] != truth.hit;
+                if (got[m] && truth.hit) counts.levels[m] = std::max(counts.levels[m], std::abs(level(shades[m]) - level(exactShade)));
+            }
+        }
+    return counts;
+}
+
 } // namespace
 
 Table studyFarDisc() {
@@ -47,48 +96,14 @@ Table studyFarDisc() {
     for (double distance : {1e2, 1e3, 1e4, 1e5}) {
         const float fovy = float(fovyForDisc(distance, kDiscPixels, kDiscImage));
         const glm::vec3 centre(0.f, 0.f, float(distance));
-        std::string note;
         try {
             const PerspectiveCamera camera(kDiscImage, kDiscImage, fovy);
-            // The analytic area from the camera's own float viewport: the silhouette's radius on the
-            // screen over half the screen's height, times half the image's height.
-            const LD screenRadius = std::tan(std::asin(LD(1) / LD(centre.z)));
-            const LD radiusPx = screenRadius / (LD(camera.viewportHeight()) / 2) * (kDiscImage / 2.L);
-            const double area = double(3.14159265358979323846L * radiusPx * radiusPx);
-            const SphereGeometry sphere(centre, 1.f, Color(1.f));
-            Scene scene;
-            scene.spheres.push_back(sphere);
-            const RayCastIntegrator cosine(Shading::Cosine);
-            std::int64_t hits[3] = {0, 0, 0}, wrong[3] = {0, 0, 0}, levels[3] = {0, 0, 0};
-            auto level = [](LD v) { return std::int64_t(std::llround(255.L * std::clamp(v, LD(0), LD(1)))); };
-            for (int j = 0; j < kDiscImage; ++j)
-                for (int i = 0; i < kDiscImage; ++i) {
-                    const Ray ray = camera.generateRay((float(i) + 0.5f) / float(kDiscImage), (float(j) + 0.5f) / float(kDiscImage));
-                    const V3<LD> o = V3<LD>::from(ray.origin), d = V3<LD>::from(ray.direction), c = V3<LD>::from(centre);
-                    const SphereHit<LD> truth = stableIntersect(o, d, c, LD(1), LD(0), LD(kInf));
-                    const V3<float> of = V3<float>::from(ray.origin), df = V3<float>::from(ray.direction),
-                                    cf = V3<float>::from(centre);
-                    const SphereHit<float> foil = textbookIntersect(of, df, cf, 1.f, 0.f, kInf);
-                    const SphereHit<float> stable = stableIntersect(of, df, cf, 1.f, 0.f, kInf);
-                    HitRecord hit;
-                    const bool got[3] = {sphere.intersect(ray, 0.f, kInf, hit), foil.hit, stable.hit};
-                    // The cosine -d.n of each, where it and the truth both hit.
-                    auto shade = [&](const V3<float>& n) { return -LD(dot(df, n)); };
-                    const LD shades[3] = {LD(cosine.Li(scene, ray).b), shade(normalAt(of, df, cf, 1.f, foil.t)),
-                                          shade(normalAt(of, df, cf, 1.f, stable.t))};
-                    const LD exactShade = -dot(d, normalAt(o, d, c, LD(1), truth.t));
-                    for (int m = 0; m < 3; ++m) {
-                        hits[m] += got[m];
-                        wrong[m] += got[m] != truth.hit;
-                        if (got[m] && truth.hit)
-                            levels[m] = std::max(levels[m], std::abs(level(shades[m]) - level(exactShade)));
-                    }
-                }
-            const char* names[3] = {"lab code (float)", "textbook float", "stable float"};
+            const double area = analyticDiscArea(camera, centre);
+            const DiscCounts counts = measureDisc(camera, centre);
             for (int m = 0; m < 3; ++m)
-                table.add({sci(distance, 0), sci(fovy, 3), names[m], std::to_string(hits[m]), fixed(area, 1),
-                           fixed(100. * (double(hits[m]) - area) / area, 3), std::to_string(wrong[m]),
-                           std::to_string(levels[m])});
+                table.add({sci(distance, 0), sci(fovy, 3), DiscCounts::kMethods[m], std::to_string(counts.hits[m]),
+                           fixed(area, 1), fixed(100. * (double(counts.hits[m]) - area) / area, 3),
+                           std::to_string(counts.wrong[m]), std::to_string(counts.levels[m])});
         } catch (const NotDoneYet& e) {
             table.add({sci(distance, 0), sci(fovy, 3), "lab code", e.what(), "", "", "", ""});
         }

@@ -4,7 +4,7 @@
 #include "sphere_formulas.h"
 
 #include "raylab/random.h"
-#include "raylab/scene.h"
+#include "raylab/render_space.h"
 #include "raylab/sphere_geometry.h"
 #include "raylab/todo.h"
 
@@ -229,43 +229,51 @@ Table studyIntersectionTimes(const StudyOptions& options) {
     return table;
 }
 
+namespace {
+
+// One row of the large-coordinates table: the lab code on `set` (the world's rays, in `spaceName`)
+// against the exact answer on the world's.
+void addLargeCoordinatesRow(Table& table, double offset, const char* spaceName, const RaySet& world, const RaySet& set) {
+    std::int64_t wrong = 0;
+    std::vector<double> normalErr, shadeErr;
+    std::string note;
+    const bool done = runLab([&] {
+        for (const glm::vec3& d : world.directions) {
+            const Answer truth = formula<LD, true>(world, d); // always the world inputs
+            const Answer got = labCode(set, d);
+            if (got.hit != truth.hit) ++wrong;
+            if (!got.hit || !truth.hit) continue;
+            normalErr.push_back(double(angleBetween(got.normal, truth.normal)));
+            const V3<LD> dd = V3<LD>::from(d);
+            shadeErr.push_back(double(std::abs(std::max(-dot(dd, got.normal), LD(0)) - std::max(-dot(dd, truth.normal), LD(0)))));
+        }
+    }, note);
+    if (!done) {
+        table.add({sci(offset, 0), spaceName, note, "", "", ""});
+        return;
+    }
+    table.add({offset == 0. ? "0" : sci(offset, 0), spaceName, fixed(100. * double(wrong) / double(world.directions.size()), 3),
+               sci(maximum(normalErr)), sci(maximum(shadeErr)), sci(median(normalErr))});
+}
+
+} // namespace
+
 Table studyLargeCoordinates(const StudyOptions& options) {
     Table table{"large_coordinates",
                 "A radius-1 sphere 3 away from a camera placed `offset` from the world origin; rays over 99% of "
                 "its disc; lab code in world coordinates (hit.position = o + t d) and in raylab's render space "
-                "(renderOrigin: the world moved by a multiple of 1024 near the camera, see scene.h)",
+                "(RenderSpace: the world moved by a multiple of 1024 near the camera, see render_space.h)",
                 {"offset", "space", "hit/miss wrong %", "max normal error (rad)", "max shading error", "median normal error (rad)"},
                 {}};
     const int rays = std::max(1, options.rays / 4);
     for (double offset : {0., 1e3, 1e4, 1e5, 1e6, 1e7}) {
         const RaySet world = aimedRays(glm::dvec3(0.6, 0., 0.8) * offset, 3., 1., 0.99, rays);
-        RaySet relative = world; // the same float scene in raylab's render space (scene.h)
-        const glm::vec3 origin = renderOrigin(world.origin);
-        relative.origin = relativeTo(world.origin, origin);
-        relative.centre = relativeTo(world.centre, origin);
-        for (const auto& [space, set] : {std::pair<const char*, const RaySet*>{"world", &world}, {"render space", &relative}}) {
-            std::int64_t wrong = 0;
-            std::vector<double> normalErr, shadeErr;
-            std::string note;
-            const bool done = runLab([&] {
-                for (const glm::vec3& d : world.directions) {
-                    const Answer truth = formula<LD, true>(world, d); // always the world inputs
-                    const Answer got = labCode(*set, d);
-                    if (got.hit != truth.hit) ++wrong;
-                    if (!got.hit || !truth.hit) continue;
-                    normalErr.push_back(double(angleBetween(got.normal, truth.normal)));
-                    const V3<LD> dd = V3<LD>::from(d);
-                    shadeErr.push_back(double(std::abs(std::max(-dot(dd, got.normal), LD(0)) -
-                                                       std::max(-dot(dd, truth.normal), LD(0)))));
-                }
-            }, note);
-            if (!done) {
-                table.add({sci(offset, 0), space, note, "", "", ""});
-                continue;
-            }
-            table.add({offset == 0. ? "0" : sci(offset, 0), space, fixed(100. * double(wrong) / double(rays), 3),
-                       sci(maximum(normalErr)), sci(maximum(shadeErr)), sci(median(normalErr))});
-        }
+        RaySet relative = world; // the same float scene in raylab's render space
+        const RenderSpace space(world.origin);
+        relative.origin = space.toRender(world.origin);
+        relative.centre = space.toRender(world.centre);
+        addLargeCoordinatesRow(table, offset, "world", world, world);
+        addLargeCoordinatesRow(table, offset, "render space", world, relative);
     }
     return table;
 }

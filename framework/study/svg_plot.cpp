@@ -35,9 +35,16 @@ std::string decade(int e) {
     return "1e" + std::to_string(e);
 }
 
-} // namespace
+// The plot's area: whole decades on both axes, from the positive points of every series.
+struct LogFrame {
+    int ex0 = 0, ex1 = 1, ey0 = 0, ey1 = 1; // decades: 10^ex0 ... 10^ex1 across, 10^ey0 ... 10^ey1 up
+    double plotW = kWidth - kLeft - kRight, plotH = kHeight - kTop - kBottom;
 
-std::string toSvg(const LogLogPlot& plot) {
+    double x(double v) const { return kLeft + (std::log10(v) - ex0) / (ex1 - ex0) * plotW; }
+    double y(double v) const { return kTop + (ey1 - std::log10(v)) / (ey1 - ey0) * plotH; }
+};
+
+LogFrame frameOf(const LogLogPlot& plot) {
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
     for (const Series& s : plot.series)
         for (std::size_t k = 0; k < s.x.size(); ++k)
@@ -46,56 +53,65 @@ std::string toSvg(const LogLogPlot& plot) {
                 ymin = std::min(ymin, s.y[k]), ymax = std::max(ymax, s.y[k]);
             }
     if (!(xmin < INFINITY)) xmin = 1, xmax = 10, ymin = 1, ymax = 10;
-    const int ex0 = int(std::floor(std::log10(xmin))), ex1 = std::max(ex0 + 1, int(std::ceil(std::log10(xmax))));
-    const int ey0 = int(std::floor(std::log10(ymin))), ey1 = std::max(ey0 + 1, int(std::ceil(std::log10(ymax))));
-    const double plotW = kWidth - kLeft - kRight, plotH = kHeight - kTop - kBottom;
-    auto px = [&](double x) { return kLeft + (std::log10(x) - ex0) / (ex1 - ex0) * plotW; };
-    auto py = [&](double y) { return kTop + (ey1 - std::log10(y)) / (ey1 - ey0) * plotH; };
+    LogFrame f;
+    f.ex0 = int(std::floor(std::log10(xmin))), f.ex1 = std::max(f.ex0 + 1, int(std::ceil(std::log10(xmax))));
+    f.ey0 = int(std::floor(std::log10(ymin))), f.ey1 = std::max(f.ey0 + 1, int(std::ceil(std::log10(ymax))));
+    return f;
+}
 
+// Grid and ticks: every decade labelled, the 2..9 in between as light lines.
+void writeGrid(std::ostream& svg, const LogFrame& f) {
+    for (int e = f.ex0; e <= f.ex1; ++e)
+        for (int m = 1; m <= 9 && (e < f.ex1 || m == 1); ++m) {
+            const double x = f.x(m * std::pow(10., e));
+            svg << "<line x1=\"" << num(x) << "\" y1=\"" << kTop << "\" x2=\"" << num(x) << "\" y2=\"" << kTop + f.plotH
+                << "\" stroke=\"" << (m == 1 ? "#bbb" : "#eee") << "\"/>\n";
+            if (m == 1)
+                svg << "<text x=\"" << num(x) << "\" y=\"" << kTop + f.plotH + 18 << "\" text-anchor=\"middle\">" << decade(e) << "</text>\n";
+        }
+    for (int e = f.ey0; e <= f.ey1; ++e)
+        for (int m = 1; m <= 9 && (e < f.ey1 || m == 1); ++m) {
+            const double y = f.y(m * std::pow(10., e));
+            svg << "<line x1=\"" << kLeft << "\" y1=\"" << num(y) << "\" x2=\"" << kLeft + f.plotW << "\" y2=\"" << num(y)
+                << "\" stroke=\"" << (m == 1 ? "#bbb" : "#eee") << "\"/>\n";
+            if (m == 1)
+                svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << num(y + 4) << "\" text-anchor=\"end\">" << decade(e) << "</text>\n";
+        }
+}
+
+// The s-th series: its points, the line between them if it has one, and its legend entry.
+void writeSeries(std::ostream& svg, const LogFrame& f, const Series& series, std::size_t s) {
+    const char* color = kColors[s % std::size(kColors)];
+    std::string points;
+    for (std::size_t k = 0; k < series.x.size(); ++k) {
+        if (!(series.x[k] > 0 && series.y[k] > 0)) continue;
+        points += num(f.x(series.x[k])) + "," + num(f.y(series.y[k])) + " ";
+        svg << "<circle cx=\"" << num(f.x(series.x[k])) << "\" cy=\"" << num(f.y(series.y[k])) << "\" r=\"3\" fill=\"" << color << "\"/>\n";
+    }
+    if (series.linesBetween)
+        svg << "<polyline points=\"" << points << "\" fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.8\"/>\n";
+    const double ly = kTop + 14 + 20 * double(s), lx = kLeft + f.plotW + 15;
+    svg << "<line x1=\"" << lx << "\" y1=\"" << ly - 4 << "\" x2=\"" << lx + 22 << "\" y2=\"" << ly - 4 << "\" stroke=\""
+        << color << "\" stroke-width=\"" << (series.linesBetween ? 2 : 0) << "\"/><circle cx=\"" << lx + 11 << "\" cy=\""
+        << ly - 4 << "\" r=\"3\" fill=\"" << color << "\"/>\n";
+    svg << "<text x=\"" << lx + 28 << "\" y=\"" << ly << "\">" << escape(series.label) << "</text>\n";
+}
+
+} // namespace
+
+std::string toSvg(const LogLogPlot& plot) {
+    const LogFrame f = frameOf(plot);
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
         << "\" viewBox=\"0 0 " << kWidth << ' ' << kHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
     svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     svg << "<text x=\"" << kWidth / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << escape(plot.title) << "</text>\n";
-    // Grid and ticks: every decade labelled, the 2..9 in between as light lines.
-    for (int e = ex0; e <= ex1; ++e)
-        for (int m = 1; m <= 9 && (e < ex1 || m == 1); ++m) {
-            const double x = px(m * std::pow(10., e));
-            svg << "<line x1=\"" << num(x) << "\" y1=\"" << kTop << "\" x2=\"" << num(x) << "\" y2=\"" << kTop + plotH
-                << "\" stroke=\"" << (m == 1 ? "#bbb" : "#eee") << "\"/>\n";
-            if (m == 1)
-                svg << "<text x=\"" << num(x) << "\" y=\"" << kTop + plotH + 18 << "\" text-anchor=\"middle\">" << decade(e) << "</text>\n";
-        }
-    for (int e = ey0; e <= ey1; ++e)
-        for (int m = 1; m <= 9 && (e < ey1 || m == 1); ++m) {
-            const double y = py(m * std::pow(10., e));
-            svg << "<line x1=\"" << kLeft << "\" y1=\"" << num(y) << "\" x2=\"" << kLeft + plotW << "\" y2=\"" << num(y)
-                << "\" stroke=\"" << (m == 1 ? "#bbb" : "#eee") << "\"/>\n";
-            if (m == 1)
-                svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << num(y + 4) << "\" text-anchor=\"end\">" << decade(e) << "</text>\n";
-        }
-    svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plotW << "\" height=\"" << plotH
+    writeGrid(svg, f);
+    svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << f.plotW << "\" height=\"" << f.plotH
         << "\" fill=\"none\" stroke=\"black\"/>\n";
-    svg << "<text x=\"" << kLeft + plotW / 2 << "\" y=\"" << kHeight - 15 << "\" text-anchor=\"middle\">" << escape(plot.xLabel) << "</text>\n";
-    svg << "<text transform=\"translate(18," << kTop + plotH / 2 << ") rotate(-90)\" text-anchor=\"middle\">" << escape(plot.yLabel) << "</text>\n";
-
-    for (std::size_t s = 0; s < plot.series.size(); ++s) {
-        const Series& series = plot.series[s];
-        const char* color = kColors[s % std::size(kColors)];
-        std::string points;
-        for (std::size_t k = 0; k < series.x.size(); ++k) {
-            if (!(series.x[k] > 0 && series.y[k] > 0)) continue;
-            points += num(px(series.x[k])) + "," + num(py(series.y[k])) + " ";
-            svg << "<circle cx=\"" << num(px(series.x[k])) << "\" cy=\"" << num(py(series.y[k])) << "\" r=\"3\" fill=\"" << color << "\"/>\n";
-        }
-        if (series.linesBetween)
-            svg << "<polyline points=\"" << points << "\" fill=\"none\" stroke=\"" << color << "\" stroke-width=\"1.8\"/>\n";
-        const double ly = kTop + 14 + 20 * double(s), lx = kLeft + plotW + 15;
-        svg << "<line x1=\"" << lx << "\" y1=\"" << ly - 4 << "\" x2=\"" << lx + 22 << "\" y2=\"" << ly - 4 << "\" stroke=\""
-            << color << "\" stroke-width=\"" << (series.linesBetween ? 2 : 0) << "\"/><circle cx=\"" << lx + 11 << "\" cy=\""
-            << ly - 4 << "\" r=\"3\" fill=\"" << color << "\"/>\n";
-        svg << "<text x=\"" << lx + 28 << "\" y=\"" << ly << "\">" << escape(series.label) << "</text>\n";
-    }
+    svg << "<text x=\"" << kLeft + f.plotW / 2 << "\" y=\"" << kHeight - 15 << "\" text-anchor=\"middle\">" << escape(plot.xLabel) << "</text>\n";
+    svg << "<text transform=\"translate(18," << kTop + f.plotH / 2 << ") rotate(-90)\" text-anchor=\"middle\">" << escape(plot.yLabel) << "</text>\n";
+    for (std::size_t s = 0; s < plot.series.size(); ++s) writeSeries(svg, f, plot.series[s], s);
     svg << "</svg>\n";
     return svg.str();
 }

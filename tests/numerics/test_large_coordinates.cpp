@@ -64,19 +64,19 @@ TEST_CASE("large world coordinates: 10^4 ... 10^7 from the origin, the image see
         CHECK(worst <= 1); // one 8-bit level: the render space keeps 6e-5 of precision near the camera
     }
     // A camera within 512 of the world origin renders in world coordinates, untouched.
-    CHECK(renderOrigin({511.f, -300.f, 2.f}) == glm::vec3(0.f));
-    CHECK(renderOrigin({1e7f, -1e4f, 600.f}) == glm::vec3(10000384.f, -10240.f, 1024.f));
+    CHECK(RenderSpace({511.f, -300.f, 2.f}).origin() == glm::vec3(0.f));
+    CHECK(RenderSpace({1e7f, -1e4f, 600.f}).origin() == glm::vec3(10000384.f, -10240.f, 1024.f));
 }
 
 TEST_CASE("large world coordinates: normals from world-space hit points are off, render-space ones are not") {
     const glm::vec3 camera(1e7f, 0.f, 0.f), centre = camera + glm::vec3(0.f, 0.f, 3.f);
     // The foil: o + t d rounded to float's spacing of 1 at 10^7, then (p - c) / r.
     CHECK(worstNormalError(camera, centre) > 0.05);
-    // What the renderer hands the lab code: the same rays and sphere moved by -renderOrigin(camera).
-    const glm::vec3 origin = renderOrigin(camera);
-    const Scene moved = relativeTo(Scene{{SphereGeometry(centre, 1.f, Color(1.f))}, Color(0.f)}, origin);
-    CHECK(moved.spheres[0].center() == relativeTo(camera, origin) + glm::vec3(0.f, 0.f, 3.f));
-    CHECK(worstNormalError(relativeTo(camera, origin), moved.spheres[0].center()) < 1e-4);
+    // What the renderer hands the lab code: the same rays and sphere in the camera's render space.
+    const RenderSpace space(camera);
+    const Scene moved = space.toRender(Scene{{SphereGeometry(centre, 1.f, Color(1.f))}, Color(0.f)});
+    CHECK(moved.spheres[0].center() == space.toRender(camera) + glm::vec3(0.f, 0.f, 3.f));
+    CHECK(worstNormalError(space.toRender(camera), moved.spheres[0].center()) < 1e-4);
 }
 
 }

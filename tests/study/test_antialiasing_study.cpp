@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -31,7 +32,7 @@ const AntialiasingResult& quickStudy() {
 std::map<std::string, std::vector<const StudyRow*>> bySampler() {
     std::map<std::string, std::vector<const StudyRow*>> m;
     for (const StudyRow& r : quickStudy().rows)
-        if (r.setting.empty()) m[r.sampler].push_back(&r);
+        if (!r.adaptive) m[r.sampler].push_back(&r);
     return m;
 }
 
@@ -58,8 +59,8 @@ TEST_CASE("the exact reference: a pixel's average, checked against its own refin
     }
     CHECK(worst < 1e-6);
     // The disc's area in pixels: pi r^2, r = tan(asin(1/3)) = 1 / sqrt(8) screen units, 40 px for 2 tan(30 degrees).
-    const double r = (1. / std::sqrt(8.)) * 40. / (2. * std::tan(M_PI / 6.));
-    CHECK(covered == doctest::Approx(M_PI * r * r).epsilon(1e-9));
+    const double r = (1. / std::sqrt(8.)) * 40. / (2. * std::tan(std::numbers::pi / 6.));
+    CHECK(covered == doctest::Approx(std::numbers::pi * r * r).epsilon(1e-9));
     CHECK(coarse.pixels[0] == glm::dvec3(0.5)); // a corner sees the background only
     // The centre pixel: fully covered, blue, as bright as the cosine near the axis.
     const glm::dvec3 centre = coarse.pixels[20 * 60 + 30];
@@ -125,7 +126,7 @@ TEST_CASE("adaptive sampling reaches stratified 256's error with fewer samples; 
     REQUIRE(uniform != nullptr);
     bool reached = false;
     for (const StudyRow& r : quickStudy().rows)
-        if (r.sampler == "adaptive" && r.setting.rfind("16+256", 0) == 0 && r.setting.find("no-widen") == std::string::npos) {
+        if (r.adaptive && r.adaptive->baseSamples == 16 && r.adaptive->widen) {
             CHECK(r.samples < 0.5 * uniform->samples);
             reached = reached || r.error.rmse <= 1.1 * uniform->error.rmse;
         }

@@ -1,10 +1,18 @@
 // The reference figures show what the table of figures says (README, docs/conventions.md).
 #include "support/figures.h"
 
+#include "raylab/parallel.h"
+
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+#include <vector>
 
 using namespace raylab;
 using namespace raylab::test;
@@ -141,6 +149,61 @@ TEST_CASE("the same scene and seed give the same image with any number of thread
     d.sampler = SamplerKind::Random;
     d.seed = 2;
     CHECK(renderFigure(d, 2).rgb != one.rgb);
+}
+
+}
+
+TEST_SUITE("figures") {
+
+TEST_CASE("SceneRender: a far lookAt camera and its scene are moved into the camera's render space") {
+    SceneDescription d = figureScene("lab4_a");
+    const glm::vec3 far(1e7f, -3000.f, 700.f);
+    d.camera.position = far;
+    d.camera.target = far + glm::vec3(0.f, 0.f, 1.f);
+    d.scene.spheres = {SphereGeometry(far + glm::vec3(0.f, 0.f, 3.f), 1.f, Color(1.f))};
+    const SceneRender render(d);
+    CHECK(render.space().origin() == glm::vec3(10000384.f, -3072.f, 1024.f));
+    CHECK(render.camera().position() == glm::vec3(-384.f, 72.f, -324.f));
+    CHECK(render.scene().spheres[0].center() == render.camera().position() + glm::vec3(0.f, 0.f, 3.f));
+}
+
+TEST_CASE("SceneRender: the default camera renders in world space, with the scene file's sampling") {
+    const SceneDescription d = figureScene("lab5_antialiased");
+    SceneRender render(d, RenderOptions{2, false});
+    CHECK(render.space().origin() == glm::vec3(0.f));
+    CHECK(render.scene().spheres[0].center() == d.scene.spheres[0].center());
+    CHECK(render.renderer().nbPixelSamples() == d.samples);
+    CHECK(render.renderer().sampler() == d.sampler);
+    CHECK_THROWS_AS(SceneRender(figureScene("lab1_gradient")), std::invalid_argument);
+}
+
+}
+
+TEST_SUITE("framework") {
+
+TEST_CASE("parallelFor runs every item once, on at most the threads asked for, and rethrows the first error") {
+    for (int threads : {0, 1, 3}) {
+        CAPTURE(threads);
+        std::vector<std::atomic<int>> runs(100);
+        std::atomic<unsigned> highestWorker{0};
+        parallelFor(runs.size(), threads, false, [&](std::size_t item, unsigned worker) {
+            ++runs[item];
+            for (unsigned seen = highestWorker; worker > seen && !highestWorker.compare_exchange_weak(seen, worker);) {}
+        });
+        CHECK(std::all_of(runs.begin(), runs.end(), [](const std::atomic<int>& n) { return n == 1; }));
+        CHECK(highestWorker < workerCount(threads, runs.size()));
+    }
+    CHECK(workerCount(8, 3) == 3);
+    CHECK(workerCount(2, 0) == 1);
+    std::atomic<int> started{0};
+    CHECK_THROWS_WITH_AS(parallelFor(1000, 2, false,
+                                     [&](std::size_t item, unsigned) {
+                                         ++started;
+                                         if (item == 5) throw std::runtime_error("item 5");
+                                         std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                                     }),
+                         "item 5", std::runtime_error);
+    CHECK(started < 100); // no new item starts after the error: each thread ends the one it has
 }
 
 }

@@ -80,6 +80,11 @@ TEST_CASE("the scene keeps the nearest of several hits") {
     REQUIRE(scene.intersect(Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, hit));
     CHECK(hit.t == 4.f);
     CHECK(hit.object == &scene.spheres[1]);
+    // Bounded like SphereGeometry::intersect(ray, tMin, tMax, hit): past the first sphere, the second.
+    REQUIRE(scene.intersect(Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 7.f, 100.f, hit));
+    CHECK(hit.t == 9.f);
+    CHECK(hit.object == &scene.spheres[0]);
+    CHECK_FALSE(scene.intersect(Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 0.f, 3.5f, hit));
 }
 
 TEST_CASE("the integrator's shadings") {

@@ -61,6 +61,18 @@ public:
     Color renderPixel(int i, int j, PixelSampler& sampler) const;
 
 private:
+    // The strategies of renderImage, one each; they fill `image` and m_stats' ray and number counts.
+    // One centred sample per pixel: the centre's ray, without the lab 5 code.
+    void renderCentres(Texture& image);
+    // nbPixelSamples() samples per pixel, placed by the sampler, through renderPixel.
+    void renderSampled(Texture& image);
+    // Adaptive sampling (AdaptiveSettings): a first pass that measures each pixel's spread, then a
+    // second pass on the pixels to refine.
+    void renderAdaptive(Texture& image);
+
+    // A renderer of this one's scene and camera that sees `integrator` and averages `nbSamples`
+    // samples, set through the public interface like any caller's.
+    Renderer passRenderer(const Integrator& integrator, int nbSamples) const;
     Color renderPixelCentre(int i, int j) const;
     // Adaptive sampling's second pass: which pixels to render again, from the first pass's spreads.
     std::vector<std::uint8_t> pixelsToRefine(const std::vector<float>& spread) const;
