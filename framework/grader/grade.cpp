@@ -1,110 +1,212 @@
 #include "grader/grade.h"
 
-#include <nlohmann/json.hpp>
+#include "checks/checks.h"
+#include "grader/protocol.h"
+
+#include "raylab/image_io.h"
+#include "raylab/todo.h"
 
 #include <algorithm>
 #include <array>
 #include <fstream>
 #include <map>
-#include <set>
+#include <optional>
+#include <random>
 
 namespace raylab::grader {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
 
 namespace {
 
 constexpr double kDefaultCheckPoints = 1.;
 constexpr double kDefaultFigurePoints = 2.;
 
+// A figure as the agent answered it: its pixels, or why there are none.
+struct RenderedFigure {
+    std::optional<Image8> image;
+    std::string reason;
+};
+
 bool isCheckItem(const std::string& item) { return item.rfind("figure ", 0) != 0; }
 
-// What an agent reported, over all its runs.
+// What an agent answered, over all its runs, judged.
 struct Reported {
-    std::map<std::string, CheckOutcome> checks; // by name
-    std::vector<std::string> order;             // the names in the order the checks ran (their files' order)
-    std::map<std::string, json> figures;        // by id: the agent's "figure" line
+    std::map<std::string, CheckOutcome> checks;  // by name
+    std::vector<std::string> order;              // the names in the order the checks ran
+    std::map<std::string, RenderedFigure> figures; // by id
     std::vector<std::string> problems;
 };
 
-int labOfSuite(const std::string& suite) {
-    return suite.size() == 4 && suite.rfind("lab", 0) == 0 ? suite[3] - '0' : 0;
+// One item the parent starts: a function check, or a figure to render.
+struct Item {
+    std::uint64_t id = 0;
+    const FunctionCheck* check = nullptr;
+    const FigureReference* figure = nullptr;
+    bool resolved = false;
+};
+
+protocol::Request requestFor(const GradeSetup& setup, const Item& item) {
+    if (item.check) return protocol::CheckRequest{item.id, item.check->calls};
+    return protocol::RenderRequest{item.id, fs::absolute(setup.scenes / (item.figure->id + ".toml")).string(), setup.seed,
+                                   setup.threads};
 }
 
-// Runs one agent until it has said everything; a check or figure that started and never ended
-// is failed with the reason and skipped on the next run, so one bad function costs only itself.
+// Records what an item came to; the first word about an item is final.
+class Ledger {
+public:
+    explicit Ledger(Reported& reported) : m_reported(reported) {}
+
+    void resolveCheck(Item& item, bool passed, const std::string& message) {
+        if (item.resolved) return;
+        item.resolved = true;
+        m_reported.order.push_back(item.check->name);
+        m_reported.checks[item.check->name] = CheckOutcome{item.check->lab, item.check->name, passed, message, 0., 0.};
+    }
+    void resolveFigure(Item& item, RenderedFigure figure) {
+        if (item.resolved) return;
+        item.resolved = true;
+        m_reported.figures[item.figure->id] = std::move(figure);
+    }
+    // The item fails, whatever it was, with the reason.
+    void fail(Item& item, const std::string& reason) {
+        if (item.check) resolveCheck(item, false, reason);
+        else resolveFigure(item, RenderedFigure{std::nullopt, reason});
+    }
+
+private:
+    Reported& m_reported;
+};
+
+// An answer of the right type and size for the item, judged; false when it is a protocol violation.
+bool accept(Ledger& ledger, Item& item, const protocol::Answer& answer, std::string& violation) {
+    if (const auto* todo = std::get_if<protocol::NotDone>(&answer)) {
+        const std::string message = NotDoneYet(todo->lab, todo->function, todo->file, todo->line).what();
+        if (item.check) ledger.resolveCheck(item, false, message);
+        else ledger.resolveFigure(item, RenderedFigure{std::nullopt, message});
+        return true;
+    }
+    if (const auto* failure = std::get_if<protocol::Failure>(&answer)) {
+        if (item.check) ledger.resolveCheck(item, false, "threw: " + failure->message);
+        else ledger.resolveFigure(item, RenderedFigure{std::nullopt, "rendering failed: " + failure->message});
+        return true;
+    }
+    if (item.figure) {
+        const auto* picture = std::get_if<protocol::Picture>(&answer);
+        if (!picture) {
+            violation = "a figure was answered with something other than a picture";
+            return false;
+        }
+        ledger.resolveFigure(item, RenderedFigure{Image8{picture->width, picture->height, picture->rgb}, ""});
+        return true;
+    }
+    const auto* values = std::get_if<protocol::Values>(&answer);
+    if (!values) {
+        violation = "a function check was answered with something other than values";
+        return false;
+    }
+    const std::vector<protocol::Call>& calls = item.check->calls;
+    if (values->outputs.size() != calls.size()) {
+        violation = std::to_string(values->outputs.size()) + " outputs for " + std::to_string(calls.size()) + " calls";
+        return false;
+    }
+    for (std::size_t k = 0; k < calls.size(); ++k)
+        if (!protocol::outputsValid(calls[k].probe, calls[k].inputs, values->outputs[k])) {
+            violation = "the output of " + std::string(protocol::spec(calls[k].probe).name) + " has the wrong size";
+            return false;
+        }
+    Judge judge;
+    item.check->judge(values->outputs, judge);
+    ledger.resolveCheck(item, judge.passed(), judge.message());
+    return true;
+}
+
+// Reads one run's answers: exactly one for each item it was sent, in order, after a hello. Anything
+// else fails the item it names (or the one awaited) as a protocol violation. Returns whether the
+// child said hello.
+bool readRun(const std::vector<std::string>& lines, std::vector<Item*>& sent, std::map<std::uint64_t, Item*>& items,
+             Ledger& ledger) {
+    std::size_t next = 0; // the item whose answer is awaited
+    bool hello = false;
+    const auto awaited = [&]() -> Item& { return *sent[std::min(next, sent.size() - 1)]; };
+    const auto violate = [&](Item& item, const std::string& reason) {
+        const bool wasAwaited = &item == &awaited() && next < sent.size();
+        ledger.fail(item, "protocol violation: " + reason);
+        if (wasAwaited) ++next;
+    };
+    for (const std::string& line : lines) {
+        if (sent.empty()) break;
+        const protocol::Parsed<protocol::Answer> parsed = protocol::parseAnswer(line);
+        if (!parsed.message) {
+            violate(awaited(), parsed.error);
+            continue;
+        }
+        const protocol::Answer& answer = *parsed.message;
+        if (const auto* h = std::get_if<protocol::Hello>(&answer)) {
+            if (hello || h->version != protocol::kVersion)
+                violate(awaited(), hello ? "a second hello" : "protocol version " + std::to_string(h->version) + ", not " + std::to_string(protocol::kVersion));
+            hello = true;
+            continue;
+        }
+        if (std::holds_alternative<protocol::Done>(answer)) {
+            if (next < sent.size()) violate(awaited(), "\"done\" before every item was answered");
+            continue;
+        }
+        const std::uint64_t id = *protocol::itemOf(answer);
+        const auto it = items.find(id);
+        if (!hello) violate(it != items.end() ? *it->second : awaited(), "an answer before the hello");
+        else if (it == items.end()) violate(awaited(), "an answer for item " + std::to_string(id) + ", which does not exist");
+        else if (it->second->resolved) violate(*it->second, "a second answer");
+        else if (next >= sent.size() || it->second != sent[next]) violate(*it->second, "an answer out of order");
+        else {
+            std::string violation;
+            if (accept(ledger, *sent[next], answer, violation)) ++next;
+            else violate(*sent[next], violation);
+        }
+    }
+    return hello;
+}
+
+// Runs one agent until every item is answered; an item that never got its answer (a crash, an
+// endless loop, an exit) is failed with the reason and not sent again, so one bad function costs
+// only itself.
 Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan) {
     Reported r;
     const fs::path scratch = fs::absolute(setup.scratch / ("agent-" + (plan.lab ? "lab" + std::to_string(plan.lab) : std::string("all"))));
     fs::remove_all(scratch);
     fs::create_directories(scratch);
-    std::set<std::string> skip;
-    for (int attempt = 0; attempt < 40; ++attempt) {
-        {
-            std::ofstream out(scratch / "skip.txt");
-            for (const std::string& s : skip) out << s << "\n";
-        }
-        std::vector<std::string> args{"--checks", "--figures", fs::absolute(setup.scenes).string(), "--out",
-                                      (scratch / "figures").string(), "--skip-file", (scratch / "skip.txt").string(),
-                                      "--threads", std::to_string(setup.threads)};
-        if (plan.lab) args.insert(args.end(), {"--lab", std::to_string(plan.lab)});
-        if (setup.seed >= 0) args.insert(args.end(), {"--seed", std::to_string(setup.seed)});
-        const AgentRun run = runAgent(plan.program, args, scratch / ("run" + std::to_string(attempt)), setup.limits);
-        std::string pendingCheck, pendingFigure;
-        int pendingLab = plan.lab;
-        bool done = false;
-        int progress = 0; // items finished in this run
-        for (const std::string& line : run.lines) {
-            const json j = json::parse(line, nullptr, false);
-            if (!j.is_object()) continue; // not ours: ignored
-            const std::string kind = j.value("kind", "");
-            if (kind == "check-start") {
-                pendingCheck = j.value("name", "");
-                pendingLab = labOfSuite(j.value("suite", ""));
-            } else if (kind == "check") {
-                CheckOutcome c;
-                c.lab = labOfSuite(j.value("suite", ""));
-                c.name = j.value("name", "");
-                c.passed = j.value("passed", false);
-                c.message = j.value("message", "");
-                if (c.lab != 0 && (plan.lab == 0 || c.lab == plan.lab) && !r.checks.count(c.name)) {
-                    r.order.push_back(c.name);
-                    r.checks[c.name] = c;
-                }
-                skip.insert(c.name);
-                pendingCheck.clear();
-                ++progress;
-            } else if (kind == "figure-start") {
-                pendingFigure = j.value("id", "");
-            } else if (kind == "figure") {
-                r.figures[j.value("id", "")] = j;
-                skip.insert("figure:" + j.value("id", ""));
-                pendingFigure.clear();
-                ++progress;
-            } else if (kind == "done") {
-                done = true;
+    // The drawn cases come from a seed the child never sees: each grading draws new ones.
+    const std::vector<FunctionCheck> checks = functionChecks((std::uint64_t(std::random_device{}()) << 32) ^ std::random_device{}());
+    std::vector<Item> items;
+    for (const FunctionCheck& c : checks)
+        if (plan.lab == 0 || c.lab == plan.lab) items.push_back({items.size() + 1, &c, nullptr, false});
+    for (const FigureReference& f : setup.references.figures)
+        if (plan.lab == 0 || f.lab == plan.lab) items.push_back({items.size() + 1, nullptr, &f, false});
+    std::map<std::uint64_t, Item*> byId;
+    for (Item& item : items) byId[item.id] = &item;
+    Ledger ledger(r);
+    for (int attempt = 0;; ++attempt) {
+        std::vector<Item*> sent;
+        std::string requests;
+        for (Item& item : items)
+            if (!item.resolved) {
+                sent.push_back(&item);
+                requests += protocol::serialize(requestFor(setup, item)) + "\n";
             }
-        }
-        if (done) return r;
+        if (sent.empty()) return r;
+        const AgentRun run = runAgent(plan.program, {}, scratch / ("run" + std::to_string(attempt)), setup.limits, requests);
+        const bool hello = readRun(run.lines, sent, byId, ledger);
+        const auto unanswered = std::find_if(sent.begin(), sent.end(), [](const Item* i) { return !i->resolved; });
+        if (unanswered == sent.end()) continue;
         const std::string why = run.describe();
-        if (!pendingCheck.empty()) {
-            CheckOutcome c{pendingLab, pendingCheck, false, "this check " + why + (run.stderrTail.empty() ? "" : "; its error output ends with: " + run.stderrTail), 0., 0.};
-            if (!r.checks.count(c.name)) r.order.push_back(c.name);
-            r.checks[c.name] = c;
-            skip.insert(c.name);
-        } else if (!pendingFigure.empty()) {
-            r.figures[pendingFigure] = json{{"kind", "figure"}, {"id", pendingFigure}, {"status", "failed"},
-                                            {"message", "rendering " + why}};
-            skip.insert("figure:" + pendingFigure);
-        } else if (progress == 0) { // nothing new: another run would do the same
-            r.problems.push_back(plan.program.filename().string() + " " + why + " before it had reported everything" +
-                                 (run.stderrTail.empty() ? "" : ": " + run.stderrTail));
+        const std::string errors = run.stderrTail.empty() ? "" : "; its error output ends with: " + run.stderrTail;
+        if (!hello) { // it never started: another run would do the same
+            r.problems.push_back(plan.program.filename().string() + " " + why + " before it answered anything" + errors);
+            for (Item* item : sent) ledger.fail(*item, "never ran: " + plan.program.filename().string() + " " + why + " at start");
             return r;
         }
+        ledger.fail(**unanswered, ((*unanswered)->check ? "this check " : "rendering ") + why + errors);
     }
-    r.problems.push_back(plan.program.filename().string() + " was stopped after 40 restarts");
-    return r;
 }
 
 void scoreLabs(GradeResult& result) {
@@ -126,6 +228,8 @@ void addCheck(const GradeSetup& setup, GradeResult& result, CheckOutcome c) {
     c.points = c.passed ? c.maxPoints : 0.;
     result.checks.push_back(std::move(c));
 }
+
+FigureOutcome gradeImage(const GradeSetup& setup, const FigureReference& reference, const Image8& image, const fs::path& file);
 
 // Reads and compares one picture; every way a file can be wrong is a reason of its own.
 FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& reference, const fs::path& file) {
@@ -156,6 +260,15 @@ FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& refer
         f.reason = std::string("unreadable (truncated or damaged?): ") + e.what();
         return f;
     }
+    return gradeImage(setup, reference, image, file);
+}
+
+// Compares a picture with its reference; `file` is where the report finds it.
+FigureOutcome gradeImage(const GradeSetup& setup, const FigureReference& reference, const Image8& image, const fs::path& file) {
+    FigureOutcome f;
+    f.id = reference.id;
+    f.lab = reference.lab;
+    f.maxPoints = setup.points.points(f.lab, figureItem(f.id), kDefaultFigurePoints);
     f.studentImage = file;
     f.verdict = compareImage(reference, image);
     f.passed = f.verdict.passed;
@@ -259,16 +372,17 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
             if (reference.lab != lab) continue;
             const auto it = r.figures.find(reference.id);
             FigureOutcome f;
-            const std::string status = it != r.figures.end() ? it->second.value("status", "") : "";
-            if (status == "rendered") {
-                f = gradePicture(setup, reference, setup.scratch / ("agent-" + (plan.lab ? "lab" + std::to_string(plan.lab) : std::string("all"))) / "figures" / (reference.id + ".png"));
+            if (it != r.figures.end() && it->second.image) {
+                // Kept for the report in a folder of the parent's, written after the agent is gone.
+                const fs::path file = setup.scratch / ("figures-" + (plan.lab ? "lab" + std::to_string(plan.lab) : std::string("all"))) / (reference.id + ".png");
+                fs::create_directories(file.parent_path());
+                writePng(file, *it->second.image);
+                f = gradeImage(setup, reference, *it->second.image, file);
             } else {
                 f.id = reference.id;
                 f.lab = lab;
                 f.maxPoints = setup.points.points(lab, figureItem(f.id), kDefaultFigurePoints);
-                f.reason = it == r.figures.end() ? "not rendered: the code stopped before this figure"
-                           : status == "todo"    ? it->second.value("message", "")
-                                                 : "rendering failed: " + it->second.value("message", "");
+                f.reason = it == r.figures.end() ? "not rendered: the code stopped before this figure" : it->second.reason;
             }
             result.figures.push_back(std::move(f));
         }
