@@ -170,13 +170,14 @@ bool readRun(const std::vector<std::string>& lines, std::vector<Item*>& sent, st
 // Runs one agent until every item is answered; an item that never got its answer (a crash, an
 // endless loop, an exit) is failed with the reason and not sent again, so one bad function costs
 // only itself.
-Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan) {
+Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan, bool withChecks = true) {
     Reported r;
     const fs::path scratch = fs::absolute(setup.scratch / ("agent-" + (plan.lab ? "lab" + std::to_string(plan.lab) : std::string("all"))));
     fs::remove_all(scratch);
     fs::create_directories(scratch);
     // The drawn cases come from a seed the child never sees: each grading draws new ones.
-    const std::vector<FunctionCheck> checks = functionChecks((std::uint64_t(std::random_device{}()) << 32) ^ std::random_device{}());
+    const std::vector<FunctionCheck> checks =
+        withChecks ? functionChecks((std::uint64_t(std::random_device{}()) << 32) ^ std::random_device{}()) : std::vector<FunctionCheck>{};
     std::vector<Item> items;
     for (const FunctionCheck& c : checks)
         if (plan.lab == 0 || c.lab == plan.lab) items.push_back({items.size() + 1, &c, nullptr, false});
@@ -412,6 +413,13 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         }
     }
     return result;
+}
+
+std::map<std::string, Image8> renderFigures(const GradeSetup& setup, const fs::path& agent) {
+    std::map<std::string, Image8> pictures;
+    for (auto& [id, figure] : runUntilDone(setup, AgentPlan{agent, 0}, false).figures)
+        if (figure.image) pictures[id] = std::move(*figure.image);
+    return pictures;
 }
 
 GradeResult gradeImages(const GradeSetup& setup, const fs::path& folder) {
