@@ -1,10 +1,8 @@
 #include "grader/grade.h"
 
-#include "checks/checks.h"
-#include "grader/protocol.h"
+#include "grader/answers.h"
 
 #include "raylab/image_io.h"
-#include "raylab/todo.h"
 
 #include <algorithm>
 #include <array>
@@ -22,149 +20,12 @@ namespace {
 constexpr double kDefaultCheckPoints = 1.;
 constexpr double kDefaultFigurePoints = 2.;
 
-// A figure as the agent answered it: its pixels, or why there are none.
-struct RenderedFigure {
-    std::optional<Image8> image;
-    std::string reason;
-};
-
 bool isCheckItem(const std::string& item) { return item.rfind("figure ", 0) != 0; }
-
-// What an agent answered, over all its runs, judged.
-struct Reported {
-    std::map<std::string, CheckOutcome> checks;  // by name
-    std::vector<std::string> order;              // the names in the order the checks ran
-    std::map<std::string, RenderedFigure> figures; // by id
-    std::vector<std::string> problems;
-};
-
-// One item the parent starts: a function check, or a figure to render.
-struct Item {
-    std::uint64_t id = 0;
-    const FunctionCheck* check = nullptr;
-    const FigureReference* figure = nullptr;
-    bool resolved = false;
-};
 
 protocol::Request requestFor(const GradeSetup& setup, const Item& item) {
     if (item.check) return protocol::CheckRequest{item.id, item.check->calls};
     return protocol::RenderRequest{item.id, fs::absolute(setup.scenes / (item.figure->id + ".toml")).string(), setup.seed,
                                    setup.threads};
-}
-
-// Records what an item came to; the first word about an item is final.
-class Ledger {
-public:
-    explicit Ledger(Reported& reported) : m_reported(reported) {}
-
-    void resolveCheck(Item& item, bool passed, const std::string& message) {
-        if (item.resolved) return;
-        item.resolved = true;
-        m_reported.order.push_back(item.check->name);
-        m_reported.checks[item.check->name] = CheckOutcome{item.check->lab, item.check->name, passed, message, 0., 0.};
-    }
-    void resolveFigure(Item& item, RenderedFigure figure) {
-        if (item.resolved) return;
-        item.resolved = true;
-        m_reported.figures[item.figure->id] = std::move(figure);
-    }
-    // The item fails, whatever it was, with the reason.
-    void fail(Item& item, const std::string& reason) {
-        if (item.check) resolveCheck(item, false, reason);
-        else resolveFigure(item, RenderedFigure{std::nullopt, reason});
-    }
-
-private:
-    Reported& m_reported;
-};
-
-// An answer of the right type and size for the item, judged; false when it is a protocol violation.
-bool accept(Ledger& ledger, Item& item, const protocol::Answer& answer, std::string& violation) {
-    if (const auto* todo = std::get_if<protocol::NotDone>(&answer)) {
-        const std::string message = NotDoneYet(todo->lab, todo->function, todo->file, todo->line).what();
-        if (item.check) ledger.resolveCheck(item, false, message);
-        else ledger.resolveFigure(item, RenderedFigure{std::nullopt, message});
-        return true;
-    }
-    if (const auto* failure = std::get_if<protocol::Failure>(&answer)) {
-        if (item.check) ledger.resolveCheck(item, false, "threw: " + failure->message);
-        else ledger.resolveFigure(item, RenderedFigure{std::nullopt, "rendering failed: " + failure->message});
-        return true;
-    }
-    if (item.figure) {
-        const auto* picture = std::get_if<protocol::Picture>(&answer);
-        if (!picture) {
-            violation = "a figure was answered with something other than a picture";
-            return false;
-        }
-        ledger.resolveFigure(item, RenderedFigure{Image8{picture->width, picture->height, picture->rgb}, ""});
-        return true;
-    }
-    const auto* values = std::get_if<protocol::Values>(&answer);
-    if (!values) {
-        violation = "a function check was answered with something other than values";
-        return false;
-    }
-    const std::vector<protocol::Call>& calls = item.check->calls;
-    if (values->outputs.size() != calls.size()) {
-        violation = std::to_string(values->outputs.size()) + " outputs for " + std::to_string(calls.size()) + " calls";
-        return false;
-    }
-    for (std::size_t k = 0; k < calls.size(); ++k)
-        if (!protocol::outputsValid(calls[k].probe, calls[k].inputs, values->outputs[k])) {
-            violation = "the output of " + std::string(protocol::spec(calls[k].probe).name) + " has the wrong size";
-            return false;
-        }
-    Judge judge;
-    item.check->judge(values->outputs, judge);
-    ledger.resolveCheck(item, judge.passed(), judge.message());
-    return true;
-}
-
-// Reads one run's answers: exactly one for each item it was sent, in order, after a hello. Anything
-// else fails the item it names (or the one awaited) as a protocol violation. Returns whether the
-// child said hello.
-bool readRun(const std::vector<std::string>& lines, std::vector<Item*>& sent, std::map<std::uint64_t, Item*>& items,
-             Ledger& ledger) {
-    std::size_t next = 0; // the item whose answer is awaited
-    bool hello = false;
-    const auto awaited = [&]() -> Item& { return *sent[std::min(next, sent.size() - 1)]; };
-    const auto violate = [&](Item& item, const std::string& reason) {
-        const bool wasAwaited = &item == &awaited() && next < sent.size();
-        ledger.fail(item, "protocol violation: " + reason);
-        if (wasAwaited) ++next;
-    };
-    for (const std::string& line : lines) {
-        if (sent.empty()) break;
-        const protocol::Parsed<protocol::Answer> parsed = protocol::parseAnswer(line);
-        if (!parsed.message) {
-            violate(awaited(), parsed.error);
-            continue;
-        }
-        const protocol::Answer& answer = *parsed.message;
-        if (const auto* h = std::get_if<protocol::Hello>(&answer)) {
-            if (hello || h->version != protocol::kVersion)
-                violate(awaited(), hello ? "a second hello" : "protocol version " + std::to_string(h->version) + ", not " + std::to_string(protocol::kVersion));
-            hello = true;
-            continue;
-        }
-        if (std::holds_alternative<protocol::Done>(answer)) {
-            if (next < sent.size()) violate(awaited(), "\"done\" before every item was answered");
-            continue;
-        }
-        const std::uint64_t id = *protocol::itemOf(answer);
-        const auto it = items.find(id);
-        if (!hello) violate(it != items.end() ? *it->second : awaited(), "an answer before the hello");
-        else if (it == items.end()) violate(awaited(), "an answer for item " + std::to_string(id) + ", which does not exist");
-        else if (it->second->resolved) violate(*it->second, "a second answer");
-        else if (next >= sent.size() || it->second != sent[next]) violate(*it->second, "an answer out of order");
-        else {
-            std::string violation;
-            if (accept(ledger, *sent[next], answer, violation)) ++next;
-            else violate(*sent[next], violation);
-        }
-    }
-    return hello;
 }
 
 // Runs one agent until every item is answered; an item that never got its answer (a crash, an

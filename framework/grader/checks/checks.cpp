@@ -1,4 +1,4 @@
-#include "checks/checks.h"
+#include "grader/checks/checks.h"
 
 #include <glm/geometric.hpp>
 

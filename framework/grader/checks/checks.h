@@ -67,8 +67,8 @@ public:
     glm::dvec3 vec3(double low, double high) { return {uniform(low, high), uniform(low, high), uniform(low, high)}; }
     glm::dvec3 unitVector();
     // A float-exact copy: the child receives floats, so the parent reasons on the same numbers.
-    static double f(double v) { return double(float(v)); }
-    static glm::dvec3 f(const glm::dvec3& v) { return {f(v.x), f(v.y), f(v.z)}; }
+    static double asFloat(double v) { return double(float(v)); }
+    static glm::dvec3 asFloat(const glm::dvec3& v) { return {asFloat(v.x), asFloat(v.y), asFloat(v.z)}; }
 
 private:
     std::mt19937_64 m_engine;

@@ -1,6 +1,6 @@
 // Lab 1's function checks: the gradient, value by value, on the handout's sizes and on sizes drawn
 // at grading time.
-#include "checks/checks.h"
+#include "grader/checks/checks.h"
 
 #include <utility>
 

@@ -1,6 +1,6 @@
 // Lab 2's function checks: the viewport and the primary rays of known cameras and of cameras
 // drawn at grading time. Every camera is built without lookAt (lab 4): lab 2 is graded on its own.
-#include "checks/checks.h"
+#include "grader/checks/checks.h"
 
 #include <glm/geometric.hpp>
 
@@ -34,8 +34,10 @@ struct Camera {
     }
 };
 
+// Sizes and angles where a float viewport keeps the checks' 1e-5 (a viewport 10 units wide would not).
 Camera drawnCamera(CaseRandom& random) {
-    return {random.integer(50, 1000), random.integer(50, 1000), CaseRandom::f(random.uniform(20., 120.))};
+    const int height = random.integer(100, 800);
+    return {int(height * random.uniform(0.5, 2.5)), height, CaseRandom::asFloat(random.uniform(20., 120.))};
 }
 
 void expectViewport(Judge& judge, const Camera& c, const std::vector<double>& out, bool named) {
@@ -80,7 +82,7 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                           expectViewport(judge, drawn, out[1], true);
                       }});
 
-    const Camera square{100, 100, 90.}, wide{100, 100, CaseRandom::f(random.uniform(10., 170.))};
+    const Camera square{100, 100, 90.}, wide{100, 100, CaseRandom::asFloat(random.uniform(20., 120.))};
     checks.push_back({2, "updateViewport: fovy is in degrees and halved", {square.viewport(), wide.viewport()},
                       [square, wide](const auto& out, Judge& judge) {
                           const char* hint = "2 tan(fovy / 2), fovy in degrees: convert degrees to radians and take half the angle";
@@ -97,7 +99,7 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const Camera other = drawnCamera(random);
     std::vector<Point> drawnPoints;
     for (int k = 0; k < 3; ++k) {
-        const double sx = CaseRandom::f(random.uniform(0., 1.)), sy = CaseRandom::f(random.uniform(0., 1.));
+        const double sx = CaseRandom::asFloat(random.uniform(0., 1.)), sy = CaseRandom::asFloat(random.uniform(0., 1.));
         drawnPoints.push_back({sx, sy, "point (" + show(sx) + ", " + show(sy) + ") of a " + other.name() + " camera"});
     }
     std::vector<protocol::Call> calls;
@@ -112,8 +114,8 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const Camera unit{640, 480, 75.};
     std::vector<std::pair<double, double>> screen;
     for (double sx : {0., 0.3, 1.})
-        for (double sy : {0., 0.7, 1.}) screen.emplace_back(CaseRandom::f(sx), CaseRandom::f(sy));
-    for (int k = 0; k < 3; ++k) screen.emplace_back(CaseRandom::f(random.uniform(0., 1.)), CaseRandom::f(random.uniform(0., 1.)));
+        for (double sy : {0., 0.7, 1.}) screen.emplace_back(CaseRandom::asFloat(sx), CaseRandom::asFloat(sy));
+    for (int k = 0; k < 3; ++k) screen.emplace_back(CaseRandom::asFloat(random.uniform(0., 1.)), CaseRandom::asFloat(random.uniform(0., 1.)));
     calls.clear();
     for (const auto& [sx, sy] : screen) calls.push_back(unit.ray(sx, sy));
     checks.push_back({2, "generateRay: directions are unit vectors", calls, [screen](const auto& out, Judge& judge) {
@@ -129,8 +131,8 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
 
     const Camera away{300, 200, 60., {2., 3., -4.}};
     Camera drawnAway = drawnCamera(random);
-    drawnAway.position = CaseRandom::f(random.vec3(-5., 5.));
-    const double sx = CaseRandom::f(random.uniform(0., 1.)), sy = CaseRandom::f(random.uniform(0., 1.));
+    drawnAway.position = CaseRandom::asFloat(random.vec3(-5., 5.));
+    const double sx = CaseRandom::asFloat(random.uniform(0., 1.)), sy = CaseRandom::asFloat(random.uniform(0., 1.));
     checks.push_back({2, "generateRay: a camera away from the origin starts its rays at its position",
                       {away.ray(0., 0.), drawnAway.ray(sx, sy)},
                       [away, drawnAway, sx, sy](const auto& out, Judge& judge) {

@@ -1,7 +1,7 @@
 // Lab 3's function checks: intersection distances of chosen rays (with the hard cases of
 // docs/numerics.md that are fair to ask), normals and shading; each also on cases drawn at
 // grading time.
-#include "checks/checks.h"
+#include "grader/checks/checks.h"
 
 #include <glm/geometric.hpp>
 
@@ -78,7 +78,7 @@ void addIntersect(std::vector<FunctionCheck>& checks, const std::string& name, s
 }
 
 Sphere drawnSphere(CaseRandom& random) {
-    return {CaseRandom::f(random.vec3(-5., 5.)), CaseRandom::f(random.uniform(0.5, 2.))};
+    return {CaseRandom::asFloat(random.vec3(-5., 5.)), CaseRandom::asFloat(random.uniform(0.5, 2.))};
 }
 
 std::string describe(const Sphere& s) { return "sphere " + show(s.centre) + " radius " + show(s.radius); }
@@ -99,9 +99,9 @@ std::optional<double> nearestHit(const Sphere& s, const Ray& r) {
 Ray rayTowards(CaseRandom& random, const Sphere& s, double offset) {
     const glm::dvec3 axis = random.unitVector();
     glm::dvec3 side = glm::normalize(glm::cross(axis, random.unitVector()));
-    const glm::dvec3 origin = CaseRandom::f(s.centre - axis * (s.radius * random.uniform(3., 8.)));
+    const glm::dvec3 origin = CaseRandom::asFloat(s.centre - axis * (s.radius * random.uniform(3., 8.)));
     const glm::dvec3 aim = s.centre + side * (offset * s.radius);
-    return {origin, CaseRandom::f(glm::normalize(aim - origin))};
+    return {origin, CaseRandom::asFloat(glm::normalize(aim - origin))};
 }
 
 // The Li call of a one-sphere scene.
@@ -186,7 +186,7 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     {
         const char* hint = "when the smaller root is below tMin, take the larger one if it is in [tMin, tMax]";
         const Sphere s = drawnSphere(random);
-        const Ray r{s.centre, CaseRandom::f(random.unitVector())};
+        const Ray r{s.centre, CaseRandom::asFloat(random.unitVector())};
         addIntersect(checks, "intersect: from inside the sphere the far root is the hit",
                      {{"ray from the centre (0, 0, 3) along +z", kSphere, {{0., 0., 3.}, {0., 0., 1.}}, 0., kInf, 1., 1e-5, hint},
                       {"ray from the centre of the " + describe(s) + " along " + show(r.direction), s, r, 0., kInf,
@@ -195,8 +195,8 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     {
         const char* hint = "both roots are negative: a ray is a half-line, it sees nothing behind its origin";
         const Sphere s = drawnSphere(random);
-        const glm::dvec3 d = CaseRandom::f(random.unitVector());
-        const Ray r{CaseRandom::f(s.centre + d * (s.radius * random.uniform(1.5, 5.))), d};
+        const glm::dvec3 d = CaseRandom::asFloat(random.unitVector());
+        const Ray r{CaseRandom::asFloat(s.centre + d * (s.radius * random.uniform(1.5, 5.))), d};
         addIntersect(checks, "intersect: a sphere behind the ray is not hit",
                      {{"ray from (0, 0, 5) along +z, sphere behind", kSphere, {{0., 0., 5.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
                       {"ray from " + show(r.origin) + " along " + show(d) + ", the " + describe(s) + " behind", s, r, 0.,
@@ -208,7 +208,7 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                    "a root below tMin does not count: try the far root"}});
     {
         const char* hint = "keep a = d.d in the quadratic: t is then in units of |d|, and ray.at(t) is the same point";
-        const double scale = CaseRandom::f(random.uniform(0.3, 5.));
+        const double scale = CaseRandom::asFloat(random.uniform(0.3, 5.));
         addIntersect(checks, "intersect: a direction that is not unit length",
                      {{"ray from the origin along (0, 0, 2)", kSphere, {{0., 0., 0.}, {0., 0., 2.}}, 0., kInf, 1., 1e-5, hint},
                       {"ray from the origin along (0, 0, " + show(scale) + ")", kSphere, {{0., 0., 0.}, {0., 0., scale}}, 0.,
@@ -216,7 +216,7 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     }
     {
         const Sphere far{{0., 0., 1000.}, 1.};
-        const double offset = CaseRandom::f(random.uniform(0., 0.9));
+        const double offset = CaseRandom::asFloat(random.uniform(0., 0.9));
         const char* hint = "b'^2 - c' subtracts two numbers near 10^6 and loses digits: the handout's stable form avoids it";
         addIntersect(checks, "intersect: a sphere 1000 radii away",
                      {{"ray at 0.5 radius from the centre line", far, {{0.5, 0., 0.}, {0., 0., 1.}}, 0., kInf,
@@ -237,7 +237,7 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     }
     {
         const Sphere big{{1., 2., 3.}, 2.}, drawn = drawnSphere(random);
-        const glm::dvec3 n = random.unitVector(), point = CaseRandom::f(drawn.centre + n * drawn.radius);
+        const glm::dvec3 n = random.unitVector(), point = CaseRandom::asFloat(drawn.centre + n * drawn.radius);
         const std::vector<std::pair<Sphere, glm::dvec3>> cases{{kSphere, {0., 0., 2.}}, {big, {1., 2., 5.}}, {drawn, point}};
         std::vector<protocol::Call> calls;
         for (const auto& [s, p] : cases) {
@@ -259,7 +259,7 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                           }});
     }
     const Sphere drawn = drawnSphere(random);
-    const glm::dvec3 colour = CaseRandom::f(random.vec3(0.1, 1.)), background = CaseRandom::f(random.vec3(0., 1.));
+    const glm::dvec3 colour = CaseRandom::asFloat(random.vec3(0.1, 1.)), background = CaseRandom::asFloat(random.vec3(0., 1.));
     const Ray hitting = rayTowards(random, drawn, random.uniform(0., 0.8)),
               missing = rayTowards(random, drawn, random.uniform(1.2, 3.));
     const std::string drawnScene = " (the " + describe(drawn) + ", colour " + show(colour) + ")";

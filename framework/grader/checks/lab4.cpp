@@ -1,7 +1,7 @@
 // Lab 4's function checks: the lookAt basis of the handout's four cameras, of cameras whose `up`
 // is not perpendicular to the view direction, and of cameras drawn at grading time; the viewport
 // of a camera rebuilt after construction; and the cameras that cannot be built.
-#include "checks/checks.h"
+#include "grader/checks/checks.h"
 
 #include <glm/geometric.hpp>
 
@@ -61,18 +61,18 @@ const LookAt kHandoutCameras[] = {
 
 // A camera whose up leans towards the view direction: v = up or an unnormalized u shows there.
 LookAt drawnCamera(CaseRandom& random, const std::string& name) {
-    LookAt c{name, CaseRandom::f(random.vec3(-5., 5.)), {}, {}};
-    c.target = CaseRandom::f(c.position + random.unitVector() * random.uniform(1., 10.));
+    LookAt c{name, CaseRandom::asFloat(random.vec3(-5., 5.)), {}, {}};
+    c.target = CaseRandom::asFloat(c.position + random.unitVector() * random.uniform(1., 10.));
     const glm::dvec3 view = glm::normalize(c.target - c.position);
     for (;;) {
-        c.up = CaseRandom::f(random.unitVector() * random.uniform(0.5, 3.));
+        c.up = CaseRandom::asFloat(random.unitVector() * random.uniform(0.5, 3.));
         const double cosine = std::abs(glm::dot(glm::normalize(c.up), view));
         if (cosine > 0.2 && cosine < 0.9) break; // oblique, and far from parallel
     }
     c.name += " at " + show(c.position) + " looking at " + show(c.target) + ", up " + show(c.up);
-    c.width = random.integer(100, 800);
     c.height = random.integer(100, 800);
-    c.fovy = CaseRandom::f(random.uniform(30., 100.));
+    c.width = int(c.height * random.uniform(0.5, 2.5));
+    c.fovy = CaseRandom::asFloat(random.uniform(30., 100.));
     return c;
 }
 
@@ -132,7 +132,7 @@ void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
 
     // A constructor that refuses everything earns nothing: a valid camera must be built first.
     const LookAt valid{"a valid camera", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}, 200, 100};
-    const glm::dvec3 p = CaseRandom::f(random.vec3(-5., 5.));
+    const glm::dvec3 p = CaseRandom::asFloat(random.vec3(-5., 5.));
     // Along an axis, so that the view and up are exactly parallel in float too.
     const glm::dvec3 along{0., double(random.integer(1, 9)) * (random.integer(0, 1) ? 1. : -1.), 0.};
     checks.push_back({4, "lookAt: a degenerate camera is refused with an error",

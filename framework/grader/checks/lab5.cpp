@@ -1,7 +1,7 @@
 // Lab 5's function checks: the sample count and the average, with a camera that counts its rays
 // (no image metric can tell 4 stratified samples from 16 random ones; counting can), on the
 // handout's pixels and on pixels, counts and seeds drawn at grading time.
-#include "checks/checks.h"
+#include "grader/checks/checks.h"
 
 #include <set>
 #include <utility>
