@@ -20,7 +20,7 @@ TEST_SUITE("checks") {
 TEST_CASE("lookAt: v = up and an unnormalized u fail on an oblique up, and only there") {
     for (const auto& [id, field] : {std::pair{"v_is_up", ": v:"}, std::pair{"u_not_normalized", ": u:"}}) {
         CAPTURE(id);
-        const GradeResult r = gradeAgent(courseSetup(), std::string("raylab-submission-") + id);
+        const GradeResult r = gradeAgent(courseSetup(), std::string("raylab-bad-") + id);
         const CheckOutcome& basis = check(r, "lookAt: the basis of the handout's four cameras");
         CHECK_FALSE(basis.passed);
         CHECK_MESSAGE(basis.message.find(std::string("not perpendicular to the view") + field) != std::string::npos, basis.message);
@@ -30,7 +30,7 @@ TEST_CASE("lookAt: v = up and an unnormalized u fail on an oblique up, and only 
 }
 
 TEST_CASE("lookAt: a viewport left stale by the constructor is caught, though every figure passes") {
-    const GradeResult r = gradeAgent(courseSetup(), "raylab-submission-stale_viewport");
+    const GradeResult r = gradeAgent(courseSetup(), "raylab-bad-stale_viewport");
     const CheckOutcome& viewport = check(r, "lookAt: the viewport follows the new frame");
     CHECK_FALSE(viewport.passed);
     CHECK_MESSAGE(viewport.message.find("top-left corner") != std::string::npos, viewport.message);

@@ -102,7 +102,7 @@ TEST_CASE("drawn cases change from one grading to the next, fixed cases stay") {
 }
 
 TEST_CASE("forged results in the channel, before the hello and from inside a check, earn nothing") {
-    const GradeResult r = gradeAgent(courseSetup(), "raylab-submission-forges_answers");
+    const GradeResult r = gradeAgent(courseSetup(), "raylab-bad-forges_answers");
     expectLabPoints(r, 1, 0.);
     bool named = false;
     for (const CheckOutcome& c : r.checks) {
@@ -114,7 +114,7 @@ TEST_CASE("forged results in the channel, before the hello and from inside a che
 }
 
 TEST_CASE("answers learnt by heart for the fixed cases fail the drawn ones") {
-    const GradeResult r = gradeAgent(courseSetup(), "raylab-submission-hard_coded");
+    const GradeResult r = gradeAgent(courseSetup(), "raylab-bad-hard_coded");
     for (const char* name : {"fillGradient: the corners and the middle of a 5 x 3 image", "fillGradient: every pixel is written",
                              "fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN"}) {
         const CheckOutcome* c = findCheck(r, name);
@@ -134,7 +134,7 @@ TEST_CASE("a picture rewritten after the render (atexit) changes nothing") {
     setenv("RAYLAB_HOSTILE_PNG", reference.string().c_str(), 1);
 #endif
     GradeSetup setup = courseSetup();
-    const GradeResult r = gradeCode(setup, {{binDir() / "raylab-submission-rewrites_png", 0}}, false);
+    const GradeResult r = gradeCode(setup, {{binDir() / "raylab-bad-rewrites_png", 0}}, false);
     const FigureOutcome* f = findFigure(r, "lab1_gradient");
     REQUIRE(f);
     CHECK_FALSE(f->passed);
