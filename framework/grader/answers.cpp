@@ -12,13 +12,17 @@ namespace {
 bool accept(Ledger& ledger, Item& item, const protocol::Answer& answer, std::string& violation) {
     if (const auto* todo = std::get_if<protocol::NotDone>(&answer)) {
         const std::string message = NotDoneYet(todo->lab, todo->function, todo->file, todo->line).what();
-        if (item.check) ledger.resolveCheck(item, false, message);
-        else ledger.resolveFigure(item, RenderedFigure{std::nullopt, message});
+        if (item.check)
+            ledger.resolveCheck(item, false, message);
+        else
+            ledger.resolveFigure(item, RenderedFigure{std::nullopt, message});
         return true;
     }
     if (const auto* failure = std::get_if<protocol::Failure>(&answer)) {
-        if (item.check) ledger.resolveCheck(item, false, "threw: " + failure->message);
-        else ledger.resolveFigure(item, RenderedFigure{std::nullopt, "rendering failed: " + failure->message});
+        if (item.check)
+            ledger.resolveCheck(item, false, "threw: " + failure->message);
+        else
+            ledger.resolveFigure(item, RenderedFigure{std::nullopt, "rendering failed: " + failure->message});
         return true;
     }
     if (item.figure) {
@@ -53,8 +57,8 @@ bool accept(Ledger& ledger, Item& item, const protocol::Answer& answer, std::str
 
 } // namespace
 
-bool readRun(const std::vector<std::string>& lines, const std::vector<Item*>& sent, const std::map<std::uint64_t, Item*>& items,
-             Ledger& ledger) {
+bool readRun(const std::vector<std::string>& lines, const std::vector<Item*>& sent,
+             const std::map<std::uint64_t, Item*>& items, Ledger& ledger) {
     std::size_t next = 0; // the item whose answer is awaited
     bool hello = false;
     const auto awaited = [&]() -> Item& { return *sent[std::min(next, sent.size() - 1)]; };
@@ -73,7 +77,9 @@ bool readRun(const std::vector<std::string>& lines, const std::vector<Item*>& se
         const protocol::Answer& answer = *parsed.message;
         if (const auto* h = std::get_if<protocol::Hello>(&answer)) {
             if (hello || h->version != protocol::kVersion)
-                violate(awaited(), hello ? "a second hello" : "protocol version " + std::to_string(h->version) + ", not " + std::to_string(protocol::kVersion));
+                violate(awaited(), hello ? "a second hello"
+                                         : "protocol version " + std::to_string(h->version) + ", not " +
+                                               std::to_string(protocol::kVersion));
             hello = true;
             continue;
         }
@@ -83,18 +89,23 @@ bool readRun(const std::vector<std::string>& lines, const std::vector<Item*>& se
         }
         const std::uint64_t id = *protocol::itemOf(answer);
         const auto it = items.find(id);
-        if (!hello) violate(it != items.end() ? *it->second : awaited(), "an answer before the hello");
-        else if (it == items.end()) violate(awaited(), "an answer for item " + std::to_string(id) + ", which does not exist");
-        else if (it->second->resolved) violate(*it->second, "a second answer");
-        else if (next >= sent.size() || it->second != sent[next]) violate(*it->second, "an answer out of order");
+        if (!hello)
+            violate(it != items.end() ? *it->second : awaited(), "an answer before the hello");
+        else if (it == items.end())
+            violate(awaited(), "an answer for item " + std::to_string(id) + ", which does not exist");
+        else if (it->second->resolved)
+            violate(*it->second, "a second answer");
+        else if (next >= sent.size() || it->second != sent[next])
+            violate(*it->second, "an answer out of order");
         else {
             std::string violation;
-            if (accept(ledger, *sent[next], answer, violation)) ++next;
-            else violate(*sent[next], violation);
+            if (accept(ledger, *sent[next], answer, violation))
+                ++next;
+            else
+                violate(*sent[next], violation);
         }
     }
     return hello;
 }
-
 
 } // namespace raylab::grader

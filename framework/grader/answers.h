@@ -25,8 +25,8 @@ struct RenderedFigure {
 
 // What an agent answered, over all its runs, judged.
 struct Reported {
-    std::map<std::string, CheckOutcome> checks;  // by name
-    std::vector<std::string> order;              // the names in the order the checks ran
+    std::map<std::string, CheckOutcome> checks;    // by name
+    std::vector<std::string> order;                // the names in the order the checks ran
     std::map<std::string, RenderedFigure> figures; // by id
     std::vector<std::string> problems;
 };
@@ -59,8 +59,10 @@ public:
     // pass or a picture), but one that failed keeps its first reason.
     void fail(Item& item, const std::string& reason) {
         if (!item.resolved) {
-            if (item.check) resolveCheck(item, false, reason);
-            else resolveFigure(item, RenderedFigure{std::nullopt, reason});
+            if (item.check)
+                resolveCheck(item, false, reason);
+            else
+                resolveFigure(item, RenderedFigure{std::nullopt, reason});
         } else if (item.check) {
             CheckOutcome& c = m_reported.checks[item.check->name];
             if (c.passed) c = CheckOutcome{c.lab, c.name, false, reason, 0., 0.};
@@ -77,7 +79,7 @@ private:
 // Reads one run's answers: exactly one for each item it was sent (`sent`, in order), after a hello.
 // Anything else fails the item it names (or the one awaited) as a protocol violation. `items`: every
 // item of the agent by id. Returns whether the child said hello.
-bool readRun(const std::vector<std::string>& lines, const std::vector<Item*>& sent, const std::map<std::uint64_t, Item*>& items,
-             Ledger& ledger);
+bool readRun(const std::vector<std::string>& lines, const std::vector<Item*>& sent,
+             const std::map<std::uint64_t, Item*>& items, Ledger& ledger);
 
 } // namespace raylab::grader

@@ -47,7 +47,8 @@ std::optional<double> numberFrom(const json& j) {
 
 json numbers(const std::vector<double>& values) {
     json list = json::array();
-    for (double v : values) list.push_back(number(v));
+    for (double v : values)
+        list.push_back(number(v));
     return list;
 }
 
@@ -75,7 +76,9 @@ T field(const json& j, const char* name) {
     }
 }
 
-std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+std::string dump(const json& j) {
+    return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
 
 template <typename T>
 Parsed<T> parseWith(std::string_view line, T (*read)(const json&)) {
@@ -92,7 +95,8 @@ Request readRequest(const json& j) {
     const std::string type = field<std::string>(j, "type");
     const auto item = field<std::uint64_t>(j, "item");
     if (type == "render")
-        return RenderRequest{item, field<std::string>(j, "scene"), field<long long>(j, "seed"), field<int>(j, "threads")};
+        return RenderRequest{item, field<std::string>(j, "scene"), field<long long>(j, "seed"),
+                             field<int>(j, "threads")};
     if (type != "check") throw std::runtime_error("unknown request type " + type);
     CheckRequest request{item, {}};
     for (const json& c : field<json>(j, "calls")) {
@@ -112,7 +116,8 @@ Answer readAnswer(const json& j) {
     const auto item = field<std::uint64_t>(j, "item");
     if (type == "values") {
         Values v{item, {}};
-        for (const json& o : field<json>(j, "outputs")) v.outputs.push_back(numbersFrom(o, "outputs"));
+        for (const json& o : field<json>(j, "outputs"))
+            v.outputs.push_back(numbersFrom(o, "outputs"));
         return v;
     }
     if (type == "picture") {
@@ -135,7 +140,9 @@ Answer readAnswer(const json& j) {
 
 } // namespace
 
-const ProbeSpec& spec(Probe probe) { return kProbes[std::size_t(probe)]; }
+const ProbeSpec& spec(Probe probe) {
+    return kProbes[std::size_t(probe)];
+}
 
 std::optional<Probe> probeNamed(std::string_view name) {
     for (const ProbeSpec& s : kProbes)
@@ -156,10 +163,15 @@ bool outputsValid(Probe probe, std::span<const double> inputs, std::span<const d
 
 std::string serialize(const Request& request) {
     if (const auto* r = std::get_if<RenderRequest>(&request))
-        return dump({{"type", "render"}, {"item", r->item}, {"scene", r->sceneFile}, {"seed", r->seed}, {"threads", r->threads}});
+        return dump({{"type", "render"},
+                     {"item", r->item},
+                     {"scene", r->sceneFile},
+                     {"seed", r->seed},
+                     {"threads", r->threads}});
     const auto& c = std::get<CheckRequest>(request);
     json calls = json::array();
-    for (const Call& call : c.calls) calls.push_back({{"probe", spec(call.probe).name}, {"inputs", numbers(call.inputs)}});
+    for (const Call& call : c.calls)
+        calls.push_back({{"probe", spec(call.probe).name}, {"inputs", numbers(call.inputs)}});
     return dump({{"type", "check"}, {"item", c.item}, {"calls", calls}});
 }
 
@@ -169,28 +181,44 @@ std::string serialize(const Answer& answer) {
         json operator()(const Done&) const { return {{"type", "done"}}; }
         json operator()(const Values& v) const {
             json outputs = json::array();
-            for (const std::vector<double>& o : v.outputs) outputs.push_back(numbers(o));
+            for (const std::vector<double>& o : v.outputs)
+                outputs.push_back(numbers(o));
             return {{"type", "values"}, {"item", v.item}, {"outputs", outputs}};
         }
         json operator()(const Picture& p) const {
-            return {{"type", "picture"}, {"item", p.item}, {"width", p.width}, {"height", p.height}, {"rgb", base64Encode(p.rgb)}};
+            return {{"type", "picture"},
+                    {"item", p.item},
+                    {"width", p.width},
+                    {"height", p.height},
+                    {"rgb", base64Encode(p.rgb)}};
         }
         json operator()(const NotDone& n) const {
-            return {{"type", "todo"}, {"item", n.item}, {"lab", n.lab}, {"function", n.function}, {"file", n.file}, {"line", n.line}};
+            return {{"type", "todo"},         {"item", n.item}, {"lab", n.lab},
+                    {"function", n.function}, {"file", n.file}, {"line", n.line}};
         }
-        json operator()(const Failure& f) const { return {{"type", "failure"}, {"item", f.item}, {"message", f.message}}; }
+        json operator()(const Failure& f) const {
+            return {{"type", "failure"}, {"item", f.item}, {"message", f.message}};
+        }
     };
     return dump(std::visit(Writer{}, answer));
 }
 
-Parsed<Request> parseRequest(std::string_view line) { return parseWith<Request>(line, readRequest); }
-Parsed<Answer> parseAnswer(std::string_view line) { return parseWith<Answer>(line, readAnswer); }
+Parsed<Request> parseRequest(std::string_view line) {
+    return parseWith<Request>(line, readRequest);
+}
+Parsed<Answer> parseAnswer(std::string_view line) {
+    return parseWith<Answer>(line, readAnswer);
+}
 
 std::optional<std::uint64_t> itemOf(const Answer& answer) {
-    return std::visit([](const auto& a) -> std::optional<std::uint64_t> {
-        if constexpr (requires { a.item; }) return a.item;
-        else return std::nullopt;
-    }, answer);
+    return std::visit(
+        [](const auto& a) -> std::optional<std::uint64_t> {
+            if constexpr (requires { a.item; })
+                return a.item;
+            else
+                return std::nullopt;
+        },
+        answer);
 }
 
 namespace {
@@ -205,7 +233,8 @@ std::string base64Encode(std::span<const std::uint8_t> bytes) {
         std::uint32_t group = std::uint32_t(bytes[k]) << 16;
         if (n > 1) group |= std::uint32_t(bytes[k + 1]) << 8;
         if (n > 2) group |= bytes[k + 2];
-        for (std::size_t c = 0; c < 4; ++c) text += c <= n ? kAlphabet[(group >> (18 - 6 * c)) & 63] : '=';
+        for (std::size_t c = 0; c < 4; ++c)
+            text += c <= n ? kAlphabet[(group >> (18 - 6 * c)) & 63] : '=';
     }
     return text;
 }
@@ -214,7 +243,8 @@ std::optional<std::vector<std::uint8_t>> base64Decode(std::string_view text) {
     if (text.size() % 4 != 0) return std::nullopt;
     std::array<int, 256> value;
     value.fill(-1);
-    for (std::size_t k = 0; k < kAlphabet.size(); ++k) value[std::uint8_t(kAlphabet[k])] = int(k);
+    for (std::size_t k = 0; k < kAlphabet.size(); ++k)
+        value[std::uint8_t(kAlphabet[k])] = int(k);
     std::vector<std::uint8_t> bytes;
     bytes.reserve(text.size() / 4 * 3);
     for (std::size_t k = 0; k < text.size(); k += 4) {
@@ -225,7 +255,8 @@ std::optional<std::vector<std::uint8_t>> base64Decode(std::string_view text) {
             if (v < 0) return std::nullopt;
             group = group << 6 | std::uint32_t(v);
         }
-        for (std::size_t c = 0; c < 3 - padding; ++c) bytes.push_back(std::uint8_t(group >> (16 - 8 * c)));
+        for (std::size_t c = 0; c < 3 - padding; ++c)
+            bytes.push_back(std::uint8_t(group >> (16 - 8 * c)));
     }
     return bytes;
 }

@@ -21,16 +21,16 @@ inline constexpr int kVersion = 1;
 
 // What the child can be asked to call: each probe calls one student function in a fixed way.
 enum class Probe {
-    FillGradient,   // lab 1: (W, H) -> the W x H texture (pre-filled with -1), 3 W H values
-    Viewport,       // lab 2: default camera (W, H, fovy) -> height, width, topLeft
-    GenerateRay,    // lab 2: camera (W, H, fovy, px, py, pz) moved to p, generateRay(sx, sy) -> origin, direction
-    Intersect,      // lab 3: sphere (c, r), ray (o, d), tMin, tMax -> hit, t, position (t untouched: -7)
-    ComputeNormal,  // lab 3: sphere (c, r), point -> normal
-    Li,             // lab 3: shading, sphere (c, r, colour), background, ray (o, d) -> colour
-    LookAt,         // lab 4: (W, H, position, target, up, fovy) -> u, v, w, position, height, width, topLeft
-    LookAtRefused,  // lab 4: (position, target, up) -> 1 when std::invalid_argument, 0 when built
-    SetSamples,     // lab 5: setNbPixelSamples(n) -> refused (0 or 1), nbPixelSamples()
-    RenderPixel,    // lab 5: (W, H, i, j, n, seed) -> rays traced k, colour, k screen points (sx, sy)
+    FillGradient,  // lab 1: (W, H) -> the W x H texture (pre-filled with -1), 3 W H values
+    Viewport,      // lab 2: default camera (W, H, fovy) -> height, width, topLeft
+    GenerateRay,   // lab 2: camera (W, H, fovy, px, py, pz) moved to p, generateRay(sx, sy) -> origin, direction
+    Intersect,     // lab 3: sphere (c, r), ray (o, d), tMin, tMax -> hit, t, position (t untouched: -7)
+    ComputeNormal, // lab 3: sphere (c, r), point -> normal
+    Li,            // lab 3: shading, sphere (c, r, colour), background, ray (o, d) -> colour
+    LookAt,        // lab 4: (W, H, position, target, up, fovy) -> u, v, w, position, height, width, topLeft
+    LookAtRefused, // lab 4: (position, target, up) -> 1 when std::invalid_argument, 0 when built
+    SetSamples,    // lab 5: setNbPixelSamples(n) -> refused (0 or 1), nbPixelSamples()
+    RenderPixel,   // lab 5: (W, H, i, j, n, seed) -> rays traced k, colour, k screen points (sx, sy)
 };
 
 struct ProbeSpec {

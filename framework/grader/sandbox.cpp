@@ -142,7 +142,7 @@ AgentRun runPosix(const fs::path& program, const std::vector<std::string>& args,
         return int(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count());
     };
     std::string received;
-    const std::size_t maxBytes = 16u << 20; // more than any honest report
+    const std::size_t maxBytes = 64u << 20; // more than any honest report (every figure's pixels: about 10 MB)
     char buffer[65536];
     for (;;) {
         const int wait = remainingMs();

@@ -24,10 +24,11 @@ struct Options {
 };
 
 [[noreturn]] void usage(const std::string& problem) {
-    std::fprintf(stderr,
-                 "raylab-agent: %s\nusage: raylab-agent (--request-fd N | --request-file F) (--report-fd N | --report-file F)\n"
-                 "It answers the grader's requests; it is not meant to be run by hand.\n",
-                 problem.c_str());
+    std::fprintf(
+        stderr,
+        "raylab-agent: %s\nusage: raylab-agent (--request-fd N | --request-file F) (--report-fd N | --report-file F)\n"
+        "It answers the grader's requests; it is not meant to be run by hand.\n",
+        problem.c_str());
     std::exit(2);
 }
 
@@ -37,11 +38,16 @@ Options parse(int argc, char** argv) {
         const std::string a = argv[k];
         if (k + 1 >= argc) usage(a + " needs a value");
         const std::string value = argv[++k];
-        if (a == "--request-fd") o.requestFd = std::atoi(value.c_str());
-        else if (a == "--request-file") o.requestFile = value;
-        else if (a == "--report-fd") o.reportFd = std::atoi(value.c_str());
-        else if (a == "--report-file") o.reportFile = value;
-        else usage("unknown argument " + a);
+        if (a == "--request-fd")
+            o.requestFd = std::atoi(value.c_str());
+        else if (a == "--request-file")
+            o.requestFile = value;
+        else if (a == "--report-fd")
+            o.reportFd = std::atoi(value.c_str());
+        else if (a == "--report-file")
+            o.reportFile = value;
+        else
+            usage("unknown argument " + a);
     }
     if ((o.requestFd < 0 && o.requestFile.empty()) || (o.reportFd < 0 && o.reportFile.empty())) usage("no channel");
     return o;
@@ -62,7 +68,8 @@ protocol::Answer answering(std::uint64_t item, Work work) {
 protocol::Answer answer(const protocol::CheckRequest& request) {
     return answering(request.item, [&]() -> protocol::Answer {
         protocol::Values values{request.item, {}};
-        for (const protocol::Call& call : request.calls) values.outputs.push_back(raylab::agent::callProbe(call));
+        for (const protocol::Call& call : request.calls)
+            values.outputs.push_back(raylab::agent::callProbe(call));
         return values;
     });
 }
@@ -73,7 +80,8 @@ protocol::Answer answer(const protocol::RenderRequest& request) {
         if (request.seed >= 0) d.seed = std::uint64_t(request.seed);
         const raylab::FigureResult r = renderScene(d, raylab::RenderOptions{request.threads, false});
         if (r.todo) throw *r.todo;
-        if (r.status != raylab::FigureResult::Status::Rendered || !r.image) return protocol::Failure{request.item, r.message};
+        if (r.status != raylab::FigureResult::Status::Rendered || !r.image)
+            return protocol::Failure{request.item, r.message};
         raylab::Image8 image = raylab::quantize(*r.image);
         return protocol::Picture{request.item, image.width, image.height, std::move(image.rgb)};
     });

@@ -33,17 +33,21 @@ private:
     std::size_t m_next = 0;
 };
 
-void append(std::vector<double>& out, const glm::vec3& v) { out.insert(out.end(), {v.x, v.y, v.z}); }
+void append(std::vector<double>& out, const glm::vec3& v) {
+    out.insert(out.end(), {v.x, v.y, v.z});
+}
 
 std::vector<double> fillGradientProbe(Inputs in) {
     const int width = in.integer(), height = in.integer();
     Texture t(width, height);
     for (int j = 0; j < height; ++j) // a pixel never written stays visible
-        for (int i = 0; i < width; ++i) t.setPixel(i, j, Color(-1.f));
+        for (int i = 0; i < width; ++i)
+            t.setPixel(i, j, Color(-1.f));
     fillGradient(t);
     std::vector<double> out;
     for (int j = 0; j < height; ++j)
-        for (int i = 0; i < width; ++i) append(out, t.getPixel(i, j));
+        for (int i = 0; i < width; ++i)
+            append(out, t.getPixel(i, j));
     return out;
 }
 
@@ -116,10 +120,12 @@ std::vector<double> lookAtProbe(Inputs in) {
     const glm::vec3 position = in.vec3(), target = in.vec3(), up = in.vec3();
     const float fovy = in.real();
     // Built first elsewhere, then rebuilt: nothing may survive from the first frame.
-    PerspectiveCamera camera(width, height, position + glm::vec3(3.f, -2.f, 1.f), position, glm::vec3(0.f, 1.f, 0.f), fovy);
+    PerspectiveCamera camera(width, height, position + glm::vec3(3.f, -2.f, 1.f), position, glm::vec3(0.f, 1.f, 0.f),
+                             fovy);
     camera = PerspectiveCamera(width, height, position, target, up, fovy);
     std::vector<double> out;
-    for (const glm::vec3& v : {camera.u(), camera.v(), camera.w(), camera.position()}) append(out, v);
+    for (const glm::vec3& v : {camera.u(), camera.v(), camera.w(), camera.position()})
+        append(out, v);
     out.insert(out.end(), {camera.viewportHeight(), camera.viewportWidth()});
     append(out, camera.topLeft());
     return out;
@@ -182,7 +188,8 @@ std::vector<double> renderPixelProbe(Inputs in) {
     const Color colour = renderer.renderPixel(i, j, sampler);
     std::vector<double> out{double(camera.points.size())};
     append(out, colour);
-    for (const auto& [sx, sy] : camera.points) out.insert(out.end(), {sx, sy});
+    for (const auto& [sx, sy] : camera.points)
+        out.insert(out.end(), {sx, sy});
     return out;
 }
 

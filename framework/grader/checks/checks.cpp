@@ -21,12 +21,14 @@ std::string show(const glm::dvec3& v) {
     return out.str();
 }
 
-void Judge::fail(const std::string& what, const std::string& expected, const std::string& got, const std::string& hint) {
+void Judge::fail(const std::string& what, const std::string& expected, const std::string& got,
+                 const std::string& hint) {
     m_failures.push_back(what + ": expected " + expected + ", got " + got + ". Hint: " + hint);
 }
 
 // A NaN is never near anything: the comparisons are written so that it fails them.
-bool Judge::expectNear(const std::string& what, double got, double expected, double tolerance, const std::string& hint) {
+bool Judge::expectNear(const std::string& what, double got, double expected, double tolerance,
+                       const std::string& hint) {
     if (std::abs(got - expected) <= tolerance) return true;
     fail(what, show(expected) + " (within " + show(tolerance) + ")", show(got), hint);
     return false;
@@ -48,7 +50,8 @@ bool Judge::expectTrue(const std::string& what, bool holds, const std::string& e
 
 std::string Judge::message() const {
     std::string text;
-    for (const std::string& f : m_failures) text += (text.empty() ? "" : "\n") + f;
+    for (const std::string& f : m_failures)
+        text += (text.empty() ? "" : "\n") + f;
     return text;
 }
 
@@ -60,7 +63,9 @@ glm::dvec3 CaseRandom::unitVector() {
     }
 }
 
-void appendInputs(std::vector<double>& inputs, const glm::dvec3& v) { inputs.insert(inputs.end(), {v.x, v.y, v.z}); }
+void appendInputs(std::vector<double>& inputs, const glm::dvec3& v) {
+    inputs.insert(inputs.end(), {v.x, v.y, v.z});
+}
 
 std::vector<FunctionCheck> functionChecks(std::uint64_t seed) {
     CaseRandom random(seed);

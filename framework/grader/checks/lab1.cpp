@@ -13,7 +13,8 @@ using protocol::Probe;
 // A value may be quantized to 8 bits (by rounding or truncating) before it is stored: a PNG keeps
 // no more, so the checks allow one level.
 constexpr double kLevel = 1.01 / 255.;
-constexpr const char* kRampHint = "red = i / (W - 1) grows to the right (column i), green = j / (H - 1) downwards (row j)";
+constexpr const char* kRampHint =
+    "red = i / (W - 1) grows to the right (column i), green = j / (H - 1) downwards (row j)";
 
 // The texture a call returned, W x H.
 struct Gradient {
@@ -35,43 +36,53 @@ struct Gradient {
     }
 };
 
-protocol::Call gradient(int width, int height) { return {Probe::FillGradient, {double(width), double(height)}}; }
+protocol::Call gradient(int width, int height) {
+    return {Probe::FillGradient, {double(width), double(height)}};
+}
 
 } // namespace
 
 void addLab1Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     // Drawn sizes never equal the fixed ones: an answer learnt by heart for those fails these.
     const int width = random.integer(6, 40), height = random.integer(4, 30);
-    checks.push_back({1, "fillGradient: the corners and the middle of a 5 x 3 image", {gradient(5, 3), gradient(width, height)},
-                      [width, height](const auto& out, Judge& judge) {
-                          const Gradient fixed{5, 3, out[0]};
-                          judge.expectNear("pixel (0, 0)", fixed.pixel(0, 0), {0., 0., 0.}, 1e-6, kRampHint);
-                          judge.expectNear("pixel (4, 0), top right", fixed.pixel(4, 0), {1., 0., 0.}, 1e-6, kRampHint);
-                          judge.expectNear("pixel (0, 2), bottom left", fixed.pixel(0, 2), {0., 1., 0.}, 1e-6, kRampHint);
-                          judge.expectNear("pixel (4, 2), bottom right", fixed.pixel(4, 2), {1., 1., 0.}, 1e-6, kRampHint);
-                          judge.expectNear("pixel (1, 1)", fixed.pixel(1, 1), {0.25, 0.5, 0.}, kLevel,
-                                           "divide by W - 1 and H - 1 (not W and H) in floating point, not in integers");
-                          const Gradient drawn{width, height, out[1]};
-                          for (const auto& [i, j] : {std::pair{0, 0}, {width - 1, 0}, {0, height - 1},
-                                                     {width - 1, height - 1}, {width / 2, height / 2}})
-                              drawn.expectPixel(judge, i, j, kLevel, kRampHint);
-                      }});
+    checks.push_back(
+        {1,
+         "fillGradient: the corners and the middle of a 5 x 3 image",
+         {gradient(5, 3), gradient(width, height)},
+         [width, height](const auto& out, Judge& judge) {
+             const Gradient fixed{5, 3, out[0]};
+             judge.expectNear("pixel (0, 0)", fixed.pixel(0, 0), {0., 0., 0.}, 1e-6, kRampHint);
+             judge.expectNear("pixel (4, 0), top right", fixed.pixel(4, 0), {1., 0., 0.}, 1e-6, kRampHint);
+             judge.expectNear("pixel (0, 2), bottom left", fixed.pixel(0, 2), {0., 1., 0.}, 1e-6, kRampHint);
+             judge.expectNear("pixel (4, 2), bottom right", fixed.pixel(4, 2), {1., 1., 0.}, 1e-6, kRampHint);
+             judge.expectNear("pixel (1, 1)", fixed.pixel(1, 1), {0.25, 0.5, 0.}, kLevel,
+                              "divide by W - 1 and H - 1 (not W and H) in floating point, not in integers");
+             const Gradient drawn{width, height, out[1]};
+             for (const auto& [i, j] :
+                  {std::pair{0, 0}, {width - 1, 0}, {0, height - 1}, {width - 1, height - 1}, {width / 2, height / 2}})
+                 drawn.expectPixel(judge, i, j, kLevel, kRampHint);
+         }});
 
     const int otherWidth = random.integer(8, 40), otherHeight = random.integer(5, 30);
-    checks.push_back({1, "fillGradient: every pixel is written", {gradient(7, 4), gradient(otherWidth, otherHeight)},
-                      [otherWidth, otherHeight](const auto& out, Judge& judge) {
-                          for (const Gradient g : {Gradient{7, 4, out[0]}, Gradient{otherWidth, otherHeight, out[1]}})
-                              for (int j = 0; j < g.height; ++j)
-                                  for (int i = 0; i < g.width; ++i)
-                                      if (!g.expectPixel(judge, i, j, kLevel, "loop over every column i < W and every row j < H"))
-                                          return;
-                      }});
+    checks.push_back(
+        {1,
+         "fillGradient: every pixel is written",
+         {gradient(7, 4), gradient(otherWidth, otherHeight)},
+         [otherWidth, otherHeight](const auto& out, Judge& judge) {
+             for (const Gradient g : {Gradient{7, 4, out[0]}, Gradient{otherWidth, otherHeight, out[1]}})
+                 for (int j = 0; j < g.height; ++j)
+                     for (int i = 0; i < g.width; ++i)
+                         if (!g.expectPixel(judge, i, j, kLevel, "loop over every column i < W and every row j < H"))
+                             return;
+         }});
 
     const int tall = random.integer(4, 20), wide = random.integer(5, 20);
-    checks.push_back({1, "fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN",
+    checks.push_back({1,
+                      "fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN",
                       {gradient(1, 3), gradient(4, 1), gradient(1, tall), gradient(wide, 1)},
                       [tall, wide](const auto& out, Judge& judge) {
-                          const char* hint = "W - 1 is 0 for a 1-pixel-wide image: use red = 0 there instead of dividing by 0";
+                          const char* hint =
+                              "W - 1 is 0 for a 1-pixel-wide image: use red = 0 there instead of dividing by 0";
                           Gradient{1, 3, out[0]}.expectPixel(judge, 0, 2, 1e-6, hint);
                           Gradient{4, 1, out[1]}.expectPixel(judge, 3, 0, 1e-6, hint);
                           Gradient{1, tall, out[2]}.expectPixel(judge, 0, tall - 1, 1e-6, hint);

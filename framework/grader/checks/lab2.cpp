@@ -29,9 +29,7 @@ struct Camera {
     protocol::Call ray(double sx, double sy) const {
         return {Probe::GenerateRay, {double(width), double(height), fovy, position.x, position.y, position.z, sx, sy}};
     }
-    std::string name() const {
-        return std::to_string(width) + " x " + std::to_string(height) + ", fovy " + show(fovy);
-    }
+    std::string name() const { return std::to_string(width) + " x " + std::to_string(height) + ", fovy " + show(fovy); }
 };
 
 // Sizes and angles where a float viewport keeps the checks' 1e-5 (a viewport 10 units wide would not).
@@ -76,19 +74,24 @@ void expectRays(Judge& judge, const Camera& c, const std::vector<Point>& points,
 void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const Camera handout{600, 400, 60.};
     const Camera drawn = drawnCamera(random);
-    checks.push_back({2, "updateViewport: the viewport of the default camera", {handout.viewport(), drawn.viewport()},
+    checks.push_back({2,
+                      "updateViewport: the viewport of the default camera",
+                      {handout.viewport(), drawn.viewport()},
                       [handout, drawn](const auto& out, Judge& judge) {
                           expectViewport(judge, handout, out[0], false);
                           expectViewport(judge, drawn, out[1], true);
                       }});
 
     const Camera square{100, 100, 90.}, wide{100, 100, CaseRandom::asFloat(random.uniform(20., 120.))};
-    checks.push_back({2, "updateViewport: fovy is in degrees and halved", {square.viewport(), wide.viewport()},
-                      [square, wide](const auto& out, Judge& judge) {
-                          const char* hint = "2 tan(fovy / 2), fovy in degrees: convert degrees to radians and take half the angle";
-                          for (const auto& [c, o] : {std::pair{square, out[0]}, std::pair{wide, out[1]}})
-                              judge.expectNear("viewport height, fovy " + show(c.fovy), o[0], c.viewportHeight(), 1e-5, hint);
-                      }});
+    checks.push_back(
+        {2,
+         "updateViewport: fovy is in degrees and halved",
+         {square.viewport(), wide.viewport()},
+         [square, wide](const auto& out, Judge& judge) {
+             const char* hint = "2 tan(fovy / 2), fovy in degrees: convert degrees to radians and take half the angle";
+             for (const auto& [c, o] : {std::pair{square, out[0]}, std::pair{wide, out[1]}})
+                 judge.expectNear("viewport height, fovy " + show(c.fovy), o[0], c.viewportHeight(), 1e-5, hint);
+         }});
 
     std::vector<Point> corners{{0.5, 0.5, "centre (0.5, 0.5)"},
                                {0., 0., "top-left corner (0, 0)"},
@@ -103,8 +106,10 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         drawnPoints.push_back({sx, sy, "point (" + show(sx) + ", " + show(sy) + ") of a " + other.name() + " camera"});
     }
     std::vector<protocol::Call> calls;
-    for (const Point& p : corners) calls.push_back(handout.ray(p.sx, p.sy));
-    for (const Point& p : drawnPoints) calls.push_back(other.ray(p.sx, p.sy));
+    for (const Point& p : corners)
+        calls.push_back(handout.ray(p.sx, p.sy));
+    for (const Point& p : drawnPoints)
+        calls.push_back(other.ray(p.sx, p.sy));
     checks.push_back({2, "generateRay: the centre and the four corners of the default camera", calls,
                       [handout, other, corners, drawnPoints, fixedCorners](const auto& out, Judge& judge) {
                           expectRays(judge, handout, corners, out, 0);
@@ -114,37 +119,45 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const Camera unit{640, 480, 75.};
     std::vector<std::pair<double, double>> screen;
     for (double sx : {0., 0.3, 1.})
-        for (double sy : {0., 0.7, 1.}) screen.emplace_back(CaseRandom::asFloat(sx), CaseRandom::asFloat(sy));
-    for (int k = 0; k < 3; ++k) screen.emplace_back(CaseRandom::asFloat(random.uniform(0., 1.)), CaseRandom::asFloat(random.uniform(0., 1.)));
+        for (double sy : {0., 0.7, 1.})
+            screen.emplace_back(CaseRandom::asFloat(sx), CaseRandom::asFloat(sy));
+    for (int k = 0; k < 3; ++k)
+        screen.emplace_back(CaseRandom::asFloat(random.uniform(0., 1.)), CaseRandom::asFloat(random.uniform(0., 1.)));
     calls.clear();
-    for (const auto& [sx, sy] : screen) calls.push_back(unit.ray(sx, sy));
-    checks.push_back({2, "generateRay: directions are unit vectors", calls, [screen](const auto& out, Judge& judge) {
-                          for (std::size_t k = 0; k < screen.size(); ++k) {
-                              Outputs o(out[k]);
-                              o.vec3();
-                              if (!judge.expectNear("|direction| at (" + show(screen[k].first) + ", " + show(screen[k].second) + ")",
-                                                    glm::length(o.vec3()), 1., 1e-5,
-                                                    "normalize the direction (glm::normalize): shading and t as a distance rely on it"))
-                                  return;
-                          }
-                      }});
+    for (const auto& [sx, sy] : screen)
+        calls.push_back(unit.ray(sx, sy));
+    checks.push_back(
+        {2, "generateRay: directions are unit vectors", calls, [screen](const auto& out, Judge& judge) {
+             for (std::size_t k = 0; k < screen.size(); ++k) {
+                 Outputs o(out[k]);
+                 o.vec3();
+                 if (!judge.expectNear(
+                         "|direction| at (" + show(screen[k].first) + ", " + show(screen[k].second) + ")",
+                         glm::length(o.vec3()), 1., 1e-5,
+                         "normalize the direction (glm::normalize): shading and t as a distance rely on it"))
+                     return;
+             }
+         }});
 
     const Camera away{300, 200, 60., {2., 3., -4.}};
     Camera drawnAway = drawnCamera(random);
     drawnAway.position = CaseRandom::asFloat(random.vec3(-5., 5.));
     const double sx = CaseRandom::asFloat(random.uniform(0., 1.)), sy = CaseRandom::asFloat(random.uniform(0., 1.));
-    checks.push_back({2, "generateRay: a camera away from the origin starts its rays at its position",
+    checks.push_back({2,
+                      "generateRay: a camera away from the origin starts its rays at its position",
                       {away.ray(0., 0.), drawnAway.ray(sx, sy)},
                       [away, drawnAway, sx, sy](const auto& out, Judge& judge) {
-                          const char* hint = "topLeft includes the position (topLeft = position - w * focal + ...) and the "
-                                             "direction subtracts it";
-                          for (const auto& [c, o, x, y] : {std::tuple{away, out[0], 0., 0.}, std::tuple{drawnAway, out[1], sx, sy}}) {
+                          const char* hint =
+                              "topLeft includes the position (topLeft = position - w * focal + ...) and the "
+                              "direction subtracts it";
+                          for (const auto& [c, o, x, y] :
+                               {std::tuple{away, out[0], 0., 0.}, std::tuple{drawnAway, out[1], sx, sy}}) {
                               Outputs ray(o);
                               const std::string at = "camera at " + show(c.position);
                               judge.expectNear("ray origin, " + at, ray.vec3(), c.position, 1e-5,
                                                "the origin of every primary ray is the camera position");
-                              judge.expectNear("direction through (" + show(x) + ", " + show(y) + "), " + at, ray.vec3(),
-                                               c.direction(x, y), 1e-5, hint);
+                              judge.expectNear("direction through (" + show(x) + ", " + show(y) + "), " + at,
+                                               ray.vec3(), c.direction(x, y), 1e-5, hint);
                           }
                       }});
 }

@@ -34,7 +34,7 @@ struct Case {
     Sphere sphere;
     Ray ray;
     double tMin = 0., tMax = kInf;
-    double t = -1.;       // < 0: a miss
+    double t = -1.; // < 0: a miss
     double tolerance = 1e-5;
     std::string hint;
 };
@@ -63,17 +63,21 @@ bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
                judge.expectNear(c.what + ", hit.position", position, c.ray.at(c.t), c.tolerance * 2.,
                                 "store hit.position = ray.at(hit.t)");
     }
-    if (found) judge.fail(c.what, "no hit", "a hit at t = " + show(t), c.hint);
-    else if (t != -7.) judge.fail(c.what + " (the hit record)", "left alone", "t changed to " + show(t),
-                                  "write into hit only when you return true");
+    if (found)
+        judge.fail(c.what, "no hit", "a hit at t = " + show(t), c.hint);
+    else if (t != -7.)
+        judge.fail(c.what + " (the hit record)", "left alone", "t changed to " + show(t),
+                   "write into hit only when you return true");
     return !found;
 }
 
 void addIntersect(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<Case> cases) {
     std::vector<protocol::Call> calls;
-    for (const Case& c : cases) calls.push_back(call(c));
+    for (const Case& c : cases)
+        calls.push_back(call(c));
     checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
-                          for (std::size_t k = 0; k < cases.size(); ++k) judgeCase(judge, cases[k], out[k]);
+                          for (std::size_t k = 0; k < cases.size(); ++k)
+                              judgeCase(judge, cases[k], out[k]);
                       }});
 }
 
@@ -81,7 +85,9 @@ Sphere drawnSphere(CaseRandom& random) {
     return {CaseRandom::asFloat(random.vec3(-5., 5.)), CaseRandom::asFloat(random.uniform(0.5, 2.))};
 }
 
-std::string describe(const Sphere& s) { return "sphere " + show(s.centre) + " radius " + show(s.radius); }
+std::string describe(const Sphere& s) {
+    return "sphere " + show(s.centre) + " radius " + show(s.radius);
+}
 
 // The nearest t >= 0 of the ray on the sphere, in double; none on a miss.
 std::optional<double> nearestHit(const Sphere& s, const Ray& r) {
@@ -105,7 +111,8 @@ Ray rayTowards(CaseRandom& random, const Sphere& s, double offset) {
 }
 
 // The Li call of a one-sphere scene.
-protocol::Call liCall(int shading, const Sphere& s, const glm::dvec3& colour, const glm::dvec3& background, const Ray& r) {
+protocol::Call liCall(int shading, const Sphere& s, const glm::dvec3& colour, const glm::dvec3& background,
+                      const Ray& r) {
     std::vector<double> in{double(shading)};
     appendInputs(in, s.centre);
     in.push_back(s.radius);
@@ -136,18 +143,20 @@ glm::dvec3 expectedLi(const LiCase& c) {
     if (!t) return c.background;
     const glm::dvec3 d = glm::normalize(c.ray.direction);
     if (c.shading == kFlat) return c.colour;
-    glm::dvec3 n = c.shading == kCosine ? (c.ray.at(*t) - c.sphere.centre) / c.sphere.radius : glm::normalize(glm::dvec3(1.));
+    glm::dvec3 n =
+        c.shading == kCosine ? (c.ray.at(*t) - c.sphere.centre) / c.sphere.radius : glm::normalize(glm::dvec3(1.));
     if (c.shading == kPlaceholder && glm::dot(d, n) > 0.) n = -n;
     return c.colour * std::max(-glm::dot(d, n), 0.);
 }
 
 void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<LiCase> cases) {
     std::vector<protocol::Call> calls;
-    for (const LiCase& c : cases) calls.push_back(liCall(c.shading, c.sphere, c.colour, c.background, c.ray));
+    for (const LiCase& c : cases)
+        calls.push_back(liCall(c.shading, c.sphere, c.colour, c.background, c.ray));
     checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
                           for (std::size_t k = 0; k < cases.size(); ++k)
-                              judge.expectNear(cases[k].what, Outputs(out[k]).vec3(), expectedLi(cases[k]), cases[k].tolerance,
-                                               cases[k].hint);
+                              judge.expectNear(cases[k].what, Outputs(out[k]).vec3(), expectedLi(cases[k]),
+                                               cases[k].tolerance, cases[k].hint);
                       }});
 }
 
@@ -156,7 +165,8 @@ void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vec
 void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const Ray alongZ{{0., 0., 0.}, {0., 0., 1.}};
     {
-        const char* hint = "solve a t^2 + 2 b' t + c' = 0 with a = d.d, b' = (o - c).d, c' = |o - c|^2 - r^2; keep the smaller root";
+        const char* hint =
+            "solve a t^2 + 2 b' t + c' = 0 with a = d.d, b' = (o - c).d, c' = |o - c|^2 - r^2; keep the smaller root";
         const Sphere s = drawnSphere(random);
         const Ray r = rayTowards(random, s, 0.);
         addIntersect(checks, "intersect: a ray through the centre hits the near side",
@@ -168,9 +178,10 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         const char* hint = "a negative discriminant means no real root: return false";
         const Sphere s = drawnSphere(random);
         const Ray r = rayTowards(random, s, random.uniform(1.1, 3.));
-        addIntersect(checks, "intersect: a ray beside the sphere misses",
-                     {{"ray from (2, 0, 0) along +z", kSphere, {{2., 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
-                      {"ray from " + show(r.origin) + " passing beside the " + describe(s), s, r, 0., kInf, -1., 0., hint}});
+        addIntersect(
+            checks, "intersect: a ray beside the sphere misses",
+            {{"ray from (2, 0, 0) along +z", kSphere, {{2., 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
+             {"ray from " + show(r.origin) + " passing beside the " + describe(s), s, r, 0., kInf, -1., 0., hint}});
     }
     {
         // Integer coordinates: the tangent's discriminant is exactly 0 in float too.
@@ -180,15 +191,30 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         const double k = random.integer(int(s.radius) + 1, 10);
         const Ray r{s.centre + glm::dvec3(s.radius, 0., -k), {0., 0., 1.}};
         addIntersect(checks, "intersect: a tangent ray touches the sphere",
-                     {{"ray from (1, 0, 0) along +z, tangent at (1, 0, 3)", kSphere, {{1., 0., 0.}, {0., 0., 1.}}, 0., kInf, 3., 1e-4, hint},
-                      {"ray from " + show(r.origin) + " along +z, tangent to the " + describe(s), s, r, 0., kInf, k, 1e-4, hint}});
+                     {{"ray from (1, 0, 0) along +z, tangent at (1, 0, 3)",
+                       kSphere,
+                       {{1., 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       3.,
+                       1e-4,
+                       hint},
+                      {"ray from " + show(r.origin) + " along +z, tangent to the " + describe(s), s, r, 0., kInf, k,
+                       1e-4, hint}});
     }
     {
         const char* hint = "when the smaller root is below tMin, take the larger one if it is in [tMin, tMax]";
         const Sphere s = drawnSphere(random);
         const Ray r{s.centre, CaseRandom::asFloat(random.unitVector())};
         addIntersect(checks, "intersect: from inside the sphere the far root is the hit",
-                     {{"ray from the centre (0, 0, 3) along +z", kSphere, {{0., 0., 3.}, {0., 0., 1.}}, 0., kInf, 1., 1e-5, hint},
+                     {{"ray from the centre (0, 0, 3) along +z",
+                       kSphere,
+                       {{0., 0., 3.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       1.,
+                       1e-5,
+                       hint},
                       {"ray from the centre of the " + describe(s) + " along " + show(r.direction), s, r, 0., kInf,
                        *nearestHit(s, r), 1e-5, hint}});
     }
@@ -198,47 +224,89 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         const glm::dvec3 d = CaseRandom::asFloat(random.unitVector());
         const Ray r{CaseRandom::asFloat(s.centre + d * (s.radius * random.uniform(1.5, 5.))), d};
         addIntersect(checks, "intersect: a sphere behind the ray is not hit",
-                     {{"ray from (0, 0, 5) along +z, sphere behind", kSphere, {{0., 0., 5.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
-                      {"ray from " + show(r.origin) + " along " + show(d) + ", the " + describe(s) + " behind", s, r, 0.,
-                       kInf, -1., 0., hint}});
+                     {{"ray from (0, 0, 5) along +z, sphere behind",
+                       kSphere,
+                       {{0., 0., 5.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       -1.,
+                       0.,
+                       hint},
+                      {"ray from " + show(r.origin) + " along " + show(d) + ", the " + describe(s) + " behind", s, r,
+                       0., kInf, -1., 0., hint}});
     }
-    addIntersect(checks, "intersect: tMin and tMax bound the hit",
-                 {{"tMax = 1.5, before the sphere", kSphere, alongZ, 0., 1.5, -1., 0., "a root beyond tMax does not count"},
-                  {"tMin = 2.5, past the near side", kSphere, alongZ, 2.5, kInf, 4., 1e-5,
-                   "a root below tMin does not count: try the far root"}});
+    addIntersect(
+        checks, "intersect: tMin and tMax bound the hit",
+        {{"tMax = 1.5, before the sphere", kSphere, alongZ, 0., 1.5, -1., 0., "a root beyond tMax does not count"},
+         {"tMin = 2.5, past the near side", kSphere, alongZ, 2.5, kInf, 4., 1e-5,
+          "a root below tMin does not count: try the far root"}});
     {
         const char* hint = "keep a = d.d in the quadratic: t is then in units of |d|, and ray.at(t) is the same point";
         const double scale = CaseRandom::asFloat(random.uniform(0.3, 5.));
-        addIntersect(checks, "intersect: a direction that is not unit length",
-                     {{"ray from the origin along (0, 0, 2)", kSphere, {{0., 0., 0.}, {0., 0., 2.}}, 0., kInf, 1., 1e-5, hint},
-                      {"ray from the origin along (0, 0, " + show(scale) + ")", kSphere, {{0., 0., 0.}, {0., 0., scale}}, 0.,
-                       kInf, 2. / scale, 1e-5, hint}});
+        addIntersect(
+            checks, "intersect: a direction that is not unit length",
+            {{"ray from the origin along (0, 0, 2)", kSphere, {{0., 0., 0.}, {0., 0., 2.}}, 0., kInf, 1., 1e-5, hint},
+             {"ray from the origin along (0, 0, " + show(scale) + ")",
+              kSphere,
+              {{0., 0., 0.}, {0., 0., scale}},
+              0.,
+              kInf,
+              2. / scale,
+              1e-5,
+              hint}});
     }
     {
         const Sphere far{{0., 0., 1000.}, 1.};
         const double offset = CaseRandom::asFloat(random.uniform(0., 0.9));
-        const char* hint = "b'^2 - c' subtracts two numbers near 10^6 and loses digits: the handout's stable form avoids it";
+        const char* hint =
+            "b'^2 - c' subtracts two numbers near 10^6 and loses digits: the handout's stable form avoids it";
         addIntersect(checks, "intersect: a sphere 1000 radii away",
-                     {{"ray at 0.5 radius from the centre line", far, {{0.5, 0., 0.}, {0., 0., 1.}}, 0., kInf,
-                       1000. - std::sqrt(0.75), 2e-3, hint},
-                      {"ray at " + show(offset) + " radius from the centre line", far, {{offset, 0., 0.}, {0., 0., 1.}}, 0.,
-                       kInf, 1000. - std::sqrt(1. - offset * offset), 2e-3, hint},
-                      {"ray at 1.5 radii from the centre line", far, {{1.5, 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0.,
+                     {{"ray at 0.5 radius from the centre line",
+                       far,
+                       {{0.5, 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       1000. - std::sqrt(0.75),
+                       2e-3,
+                       hint},
+                      {"ray at " + show(offset) + " radius from the centre line",
+                       far,
+                       {{offset, 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       1000. - std::sqrt(1. - offset * offset),
+                       2e-3,
+                       hint},
+                      {"ray at 1.5 radii from the centre line",
+                       far,
+                       {{1.5, 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       -1.,
+                       0.,
                        "a ray that passes at 1.5 radii misses, however far the sphere is"}});
     }
     {
         const Sphere far{{0., 0., 10000.}, 1.};
         const char* hint = "at 10^4 radii the textbook discriminant b'^2 - c' is lost to rounding; compute it as "
                            "r^2 - |oc - (oc.d / d.d) d|^2 (Ray Tracing Gems, chapter 7; see the handout)";
-        addIntersect(checks, "intersect: a sphere 10000 radii away keeps its silhouette",
-                     {{"ray at 1.1 radii from the centre line", far, {{1.1, 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
-                      {"ray at 0.9 radius from the centre line", far, {{0.9, 0., 0.}, {0., 0., 1.}}, 0., kInf,
-                       10000. - std::sqrt(0.19), 0.02, hint}});
+        addIntersect(
+            checks, "intersect: a sphere 10000 radii away keeps its silhouette",
+            {{"ray at 1.1 radii from the centre line", far, {{1.1, 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
+             {"ray at 0.9 radius from the centre line",
+              far,
+              {{0.9, 0., 0.}, {0., 0., 1.}},
+              0.,
+              kInf,
+              10000. - std::sqrt(0.19),
+              0.02,
+              hint}});
     }
     {
         const Sphere big{{1., 2., 3.}, 2.}, drawn = drawnSphere(random);
         const glm::dvec3 n = random.unitVector(), point = CaseRandom::asFloat(drawn.centre + n * drawn.radius);
-        const std::vector<std::pair<Sphere, glm::dvec3>> cases{{kSphere, {0., 0., 2.}}, {big, {1., 2., 5.}}, {drawn, point}};
+        const std::vector<std::pair<Sphere, glm::dvec3>> cases{
+            {kSphere, {0., 0., 2.}}, {big, {1., 2., 5.}}, {drawn, point}};
         std::vector<protocol::Call> calls;
         for (const auto& [s, p] : cases) {
             std::vector<double> in;
@@ -247,19 +315,21 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
             appendInputs(in, p);
             calls.push_back({Probe::ComputeNormal, in});
         }
-        checks.push_back({3, "computeNormal: unit and pointing outwards", calls, [cases](const auto& out, Judge& judge) {
-                              judge.expectNear("normal at (0, 0, 2)", Outputs(out[0]).vec3(), {0., 0., -1.}, 1e-6,
-                                               "n = (p - centre) / radius: it points from the centre outwards");
-                              judge.expectNear("normal at (1, 2, 5) of a sphere of radius 2", Outputs(out[1]).vec3(), {0., 0., 1.},
-                                               1e-6, "divide by the radius so the normal has length 1");
-                              const auto& [s, p] = cases[2];
-                              judge.expectNear("normal at " + show(p) + " of the " + describe(s), Outputs(out[2]).vec3(),
-                                               (p - s.centre) / s.radius, 1e-5,
-                                               "n = (p - centre) / radius: unit, from the centre outwards");
-                          }});
+        checks.push_back(
+            {3, "computeNormal: unit and pointing outwards", calls, [cases](const auto& out, Judge& judge) {
+                 judge.expectNear("normal at (0, 0, 2)", Outputs(out[0]).vec3(), {0., 0., -1.}, 1e-6,
+                                  "n = (p - centre) / radius: it points from the centre outwards");
+                 judge.expectNear("normal at (1, 2, 5) of a sphere of radius 2", Outputs(out[1]).vec3(), {0., 0., 1.},
+                                  1e-6, "divide by the radius so the normal has length 1");
+                 const auto& [s, p] = cases[2];
+                 judge.expectNear("normal at " + show(p) + " of the " + describe(s), Outputs(out[2]).vec3(),
+                                  (p - s.centre) / s.radius, 1e-5,
+                                  "n = (p - centre) / radius: unit, from the centre outwards");
+             }});
     }
     const Sphere drawn = drawnSphere(random);
-    const glm::dvec3 colour = CaseRandom::asFloat(random.vec3(0.1, 1.)), background = CaseRandom::asFloat(random.vec3(0., 1.));
+    const glm::dvec3 colour = CaseRandom::asFloat(random.vec3(0.1, 1.)),
+                     background = CaseRandom::asFloat(random.vec3(0., 1.));
     const Ray hitting = rayTowards(random, drawn, random.uniform(0., 0.8)),
               missing = rayTowards(random, drawn, random.uniform(1.2, 3.));
     const std::string drawnScene = " (the " + describe(drawn) + ", colour " + show(colour) + ")";
@@ -268,24 +338,41 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         const char* missHint = "a ray that hits nothing sees scene.background";
         addLi(checks, "Li: flat shading sees the sphere's colour or the background",
               {{"flat, ray along +z", kFlat, kSphere, kBlue, kGrey, alongZ, 1e-6, hitHint},
-               {"flat, ray along +x (a miss)", kFlat, kSphere, kBlue, kGrey, {{0., 0., 0.}, {1., 0., 0.}}, 1e-6, missHint},
+               {"flat, ray along +x (a miss)",
+                kFlat,
+                kSphere,
+                kBlue,
+                kGrey,
+                {{0., 0., 0.}, {1., 0., 0.}},
+                1e-6,
+                missHint},
                {"flat, a ray that hits" + drawnScene, kFlat, drawn, colour, background, hitting, 1e-6, hitHint},
                {"flat, a ray that misses" + drawnScene, kFlat, drawn, colour, background, missing, 1e-6, missHint}});
     }
     {
-        const char* hint = "colour * max(-dot(d, n), 0) with the true normal: the dot product is the cosine itself, no gamma";
+        const char* hint =
+            "colour * max(-dot(d, n), 0) with the true normal: the dot product is the cosine itself, no gamma";
         // From (0.6, 0, 0) along +z: the hit is (0.6, 0, 2.2), n = (0.6, 0, -0.8), -d.n = 0.8.
         addLi(checks, "Li: cosine shading is colour times the cosine -d.n",
               {{"cosine, ray along +z (facing)", kCosine, kSphere, kBlue, kGrey, alongZ, 1e-5,
                 "-d.n = 1 where the ray meets the surface head on"},
-               {"cosine, ray from (0.6, 0, 0) along +z", kCosine, kSphere, kBlue, kGrey, {{0.6, 0., 0.}, {0., 0., 1.}}, 1e-5, hint},
-               {"cosine, a ray from " + show(hitting.origin) + drawnScene, kCosine, drawn, colour, background, hitting, 1e-4, hint}});
+               {"cosine, ray from (0.6, 0, 0) along +z",
+                kCosine,
+                kSphere,
+                kBlue,
+                kGrey,
+                {{0.6, 0., 0.}, {0., 0., 1.}},
+                1e-5,
+                hint},
+               {"cosine, a ray from " + show(hitting.origin) + drawnScene, kCosine, drawn, colour, background, hitting,
+                1e-4, hint}});
     }
     addLi(checks, "Li: the placeholder normal faces the ray",
           {{"placeholder normal, ray along +z", kPlaceholder, kSphere, kBlue, kGrey, alongZ, 1e-5,
             "n = normalize(1, 1, 1), turned to -n when d.n > 0; the colour is colour * max(-d.n, 0)"},
-           {"placeholder normal, a ray from " + show(hitting.origin) + drawnScene, kPlaceholder, drawn, colour, background,
-            hitting, 1e-5, "n = normalize(1, 1, 1), turned to -n when d.n > 0; the colour is colour * max(-d.n, 0)"}});
+           {"placeholder normal, a ray from " + show(hitting.origin) + drawnScene, kPlaceholder, drawn, colour,
+            background, hitting, 1e-5,
+            "n = normalize(1, 1, 1), turned to -n when d.n > 0; the colour is colour * max(-d.n, 0)"}});
 }
 
 } // namespace raylab::grader

@@ -16,10 +16,12 @@ struct Pixel {
     int width, height, i, j, samples;
     std::uint64_t seed;
     protocol::Call call() const {
-        return {Probe::RenderPixel, {double(width), double(height), double(i), double(j), double(samples), double(seed)}};
+        return {Probe::RenderPixel,
+                {double(width), double(height), double(i), double(j), double(samples), double(seed)}};
     }
     std::string name() const {
-        return "pixel (" + std::to_string(i) + ", " + std::to_string(j) + ") with " + std::to_string(samples) + " samples";
+        return "pixel (" + std::to_string(i) + ", " + std::to_string(j) + ") with " + std::to_string(samples) +
+               " samples";
     }
 };
 
@@ -44,14 +46,15 @@ void judgePixel(Judge& judge, const Pixel& p, const Rendered& r) {
                           std::to_string(r.points.size()), "trace exactly one ray per sample"))
         return;
     glm::dvec3 mean(0.);
-    for (const auto& [sx, sy] : r.points) mean += glm::dvec3(sx, sy, 1.);
+    for (const auto& [sx, sy] : r.points)
+        mean += glm::dvec3(sx, sy, 1.);
     mean /= double(p.samples);
     judge.expectNear(what + ": the colour", r.colour, mean, 1e-5,
                      "return the sum of the samples divided by the number of samples (blue is 1 for every sample)");
     bool inside = true;
     for (const auto& [sx, sy] : r.points)
-        inside = inside && sx >= double(p.i) / p.width && sx <= double(p.i + 1) / p.width && sy >= double(p.j) / p.height &&
-                 sy <= double(p.j + 1) / p.height;
+        inside = inside && sx >= double(p.i) / p.width && sx <= double(p.i + 1) / p.width &&
+                 sy >= double(p.j) / p.height && sy <= double(p.j + 1) / p.height;
     judge.expectTrue(what + ": screen points", inside, "every (sx, sy) inside the pixel", "a point outside it",
                      "sx = (i + offset.x) / W, sy = (j + offset.y) / H");
 }
@@ -60,8 +63,11 @@ void judgePixel(Judge& judge, const Pixel& p, const Rendered& r) {
 
 void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const int drawnCount = random.integer(2, 64);
-    checks.push_back({5, "setNbPixelSamples: stores N and refuses fewer than 1",
-                      {{Probe::SetSamples, {9.}}, {Probe::SetSamples, {double(drawnCount)}}, {Probe::SetSamples, {0.}},
+    checks.push_back({5,
+                      "setNbPixelSamples: stores N and refuses fewer than 1",
+                      {{Probe::SetSamples, {9.}},
+                       {Probe::SetSamples, {double(drawnCount)}},
+                       {Probe::SetSamples, {0.}},
                        {Probe::SetSamples, {-3.}}},
                       [drawnCount](const auto& out, Judge& judge) {
                           for (const auto& [k, n] : {std::pair{0, 9}, std::pair{1, drawnCount}})
@@ -80,16 +86,19 @@ void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     pixels.push_back({width, height, random.integer(0, width - 1), random.integer(0, height - 1), random.integer(2, 32),
                       std::uint64_t(random.integer(0, 1 << 30))});
     std::vector<protocol::Call> calls;
-    for (const Pixel& p : pixels) calls.push_back(p.call());
+    for (const Pixel& p : pixels)
+        calls.push_back(p.call());
     checks.push_back({5, "renderPixel: N rays and their average", calls, [pixels](const auto& out, Judge& judge) {
-                          for (std::size_t k = 0; k < pixels.size(); ++k) judgePixel(judge, pixels[k], Rendered(out[k]));
+                          for (std::size_t k = 0; k < pixels.size(); ++k)
+                              judgePixel(judge, pixels[k], Rendered(out[k]));
                       }});
 
     const std::vector<Pixel> distinct{{8, 8, 1, 1, 8, 3},
                                       {16, 16, random.integer(0, 15), random.integer(0, 15), random.integer(4, 16),
                                        std::uint64_t(random.integer(0, 1 << 30))}};
     calls.clear();
-    for (const Pixel& p : distinct) calls.push_back(p.call());
+    for (const Pixel& p : distinct)
+        calls.push_back(p.call());
     checks.push_back({5, "renderPixel: each sample takes its own offset from the sampler", calls,
                       [distinct](const auto& out, Judge& judge) {
                           for (std::size_t k = 0; k < distinct.size(); ++k) {
@@ -97,8 +106,9 @@ void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                               const std::set<std::pair<double, double>> points(r.points.begin(), r.points.end());
                               judge.expectTrue("distinct screen points among " + std::to_string(distinct[k].samples) +
                                                    " samples of " + distinct[k].name(),
-                                               points.size() == std::size_t(distinct[k].samples), std::to_string(distinct[k].samples),
-                                               std::to_string(points.size()), "call sampler.next2D() once per sample, inside the loop");
+                                               points.size() == std::size_t(distinct[k].samples),
+                                               std::to_string(distinct[k].samples), std::to_string(points.size()),
+                                               "call sampler.next2D() once per sample, inside the loop");
                           }
                       }});
 }
