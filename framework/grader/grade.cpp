@@ -8,7 +8,6 @@
 #include <array>
 #include <fstream>
 #include <map>
-#include <optional>
 #include <random>
 
 namespace raylab::grader {
@@ -22,6 +21,9 @@ constexpr double kDefaultFigurePoints = 2.;
 
 bool isCheckItem(const std::string& item) { return item.rfind("figure ", 0) != 0; }
 
+// "all" or "labN": names the folders of an agent's runs and of its pictures.
+std::string agentName(const AgentPlan& plan) { return plan.lab ? "lab" + std::to_string(plan.lab) : "all"; }
+
 protocol::Request requestFor(const GradeSetup& setup, const Item& item) {
     if (item.check) return protocol::CheckRequest{item.id, item.check->calls};
     return protocol::RenderRequest{item.id, fs::absolute(setup.scenes / (item.figure->id + ".toml")).string(), setup.seed,
@@ -33,7 +35,7 @@ protocol::Request requestFor(const GradeSetup& setup, const Item& item) {
 // only itself.
 Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan, bool withChecks = true) {
     Reported r;
-    const fs::path scratch = fs::absolute(setup.scratch / ("agent-" + (plan.lab ? "lab" + std::to_string(plan.lab) : std::string("all"))));
+    const fs::path scratch = fs::absolute(setup.scratch / ("agent-" + agentName(plan)));
     fs::remove_all(scratch);
     fs::create_directories(scratch);
     // The drawn cases come from a seed the child never sees: each grading draws new ones.
@@ -236,7 +238,7 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
             FigureOutcome f;
             if (it != r.figures.end() && it->second.image) {
                 // Kept for the report in a folder of the parent's, written after the agent is gone.
-                const fs::path file = setup.scratch / ("figures-" + (plan.lab ? "lab" + std::to_string(plan.lab) : std::string("all"))) / (reference.id + ".png");
+                const fs::path file = setup.scratch / ("figures-" + agentName(plan)) / (reference.id + ".png");
                 fs::create_directories(file.parent_path());
                 writePng(file, *it->second.image);
                 f = gradeImage(setup, reference, *it->second.image, file);
