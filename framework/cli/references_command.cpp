@@ -7,7 +7,7 @@
 #include "grader/diagnosis.h"
 #include "grader/reference_render.h"
 #include "grader/references.h"
-#include "grader/sandbox.h"
+#include "grader/grade.h"
 
 #include <cstdio>
 #include <memory>
@@ -29,24 +29,26 @@ void makeSignatures(const fs::path& folder, const fs::path& bin, const fs::path&
             std::printf("  %-28s skipped: no %s (build the tests first)\n", m.id.c_str(), agent.string().c_str());
             continue;
         }
-        const fs::path scratch = fs::temp_directory_path() / ("raylab-signature-" + m.id);
-        fs::remove_all(scratch);
-        runAgent(agent, {"--figures", fs::absolute(scenes).string(), "--out", (scratch / "figures").string()}, scratch,
-                 SandboxLimits{});
+        GradeSetup setup;
+        setup.references = references;
+        setup.scenes = scenes;
+        setup.scratch = fs::temp_directory_path() / ("raylab-signature-" + m.id);
+        fs::remove_all(setup.scratch);
+        const std::map<std::string, Image8> pictures = renderFigures(setup, agent);
         const fs::path out = folder / "mistakes" / m.id;
         fs::remove_all(out);
         std::string kept;
         for (const FigureReference& r : references.figures) {
-            const fs::path png = scratch / "figures" / (r.id + ".png");
-            if (!fs::exists(png)) continue;
-            const Image8 image = readImage(png);
+            const auto picture = pictures.find(r.id);
+            if (picture == pictures.end()) continue;
+            const Image8& image = picture->second;
             if (compareImage(r, image).passed) continue;
             fs::create_directories(out);
             writePng(out / (r.id + ".png"), downsample(image));
             kept += " " + r.id;
         }
         std::printf("  %-28s signatures:%s\n", m.id.c_str(), kept.empty() ? " none (no figure changes)" : kept.c_str());
-        fs::remove_all(scratch);
+        fs::remove_all(setup.scratch);
     }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// The channel from the grading agent (the child, running student code) to the grader (the parent):
-// one JSON object a line, written to a descriptor or file the parent chose, never to stdout, so
-// whatever the student's code prints cannot pass for a result.
+// The channels between the grader (the parent) and the grading agent (the child, running student
+// code): one message a line (protocol.h), requests read from and answers written to descriptors
+// (or files) the parent chose, never stdin or stdout, so whatever the student's code prints
+// cannot pass for an answer.
 
 #include <cstdio>
 #include <string>
@@ -21,6 +22,21 @@ public:
 
 private:
     std::FILE* m_out = nullptr;
+};
+
+class RequestChannel {
+public:
+    // fd >= 0: a descriptor the parent opened (POSIX); otherwise `file` is read.
+    RequestChannel(int fd, const std::string& file);
+    ~RequestChannel();
+    RequestChannel(const RequestChannel&) = delete;
+    RequestChannel& operator=(const RequestChannel&) = delete;
+
+    // The next line; false once the parent has sent everything.
+    bool receive(std::string& line);
+
+private:
+    std::FILE* m_in = nullptr;
 };
 
 } // namespace raylab::grader

@@ -1,17 +1,18 @@
 #include "grader/grade.h"
 
-#include <nlohmann/json.hpp>
+#include "grader/answers.h"
+
+#include "raylab/image_io.h"
 
 #include <algorithm>
 #include <array>
 #include <fstream>
 #include <map>
-#include <set>
+#include <random>
 
 namespace raylab::grader {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
 
 namespace {
 
@@ -20,91 +21,56 @@ constexpr double kDefaultFigurePoints = 2.;
 
 bool isCheckItem(const std::string& item) { return item.rfind("figure ", 0) != 0; }
 
-// What an agent reported, over all its runs.
-struct Reported {
-    std::map<std::string, CheckOutcome> checks; // by name
-    std::vector<std::string> order;             // the names in the order the checks ran (their files' order)
-    std::map<std::string, json> figures;        // by id: the agent's "figure" line
-    std::vector<std::string> problems;
-};
+// "all" or "labN": names the folders of an agent's runs and of its pictures.
+std::string agentName(const AgentPlan& plan) { return plan.lab ? "lab" + std::to_string(plan.lab) : "all"; }
 
-int labOfSuite(const std::string& suite) {
-    return suite.size() == 4 && suite.rfind("lab", 0) == 0 ? suite[3] - '0' : 0;
+protocol::Request requestFor(const GradeSetup& setup, const Item& item) {
+    if (item.check) return protocol::CheckRequest{item.id, item.check->calls};
+    return protocol::RenderRequest{item.id, fs::absolute(setup.scenes / (item.figure->id + ".toml")).string(), setup.seed,
+                                   setup.threads};
 }
 
-// Runs one agent until it has said everything; a check or figure that started and never ended
-// is failed with the reason and skipped on the next run, so one bad function costs only itself.
-Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan) {
+// Runs one agent until every item is answered; an item that never got its answer (a crash, an
+// endless loop, an exit) is failed with the reason and not sent again, so one bad function costs
+// only itself.
+Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan, bool withChecks = true) {
     Reported r;
-    const fs::path scratch = fs::absolute(setup.scratch / ("agent-" + (plan.lab ? "lab" + std::to_string(plan.lab) : std::string("all"))));
+    const fs::path scratch = fs::absolute(setup.scratch / ("agent-" + agentName(plan)));
     fs::remove_all(scratch);
     fs::create_directories(scratch);
-    std::set<std::string> skip;
-    for (int attempt = 0; attempt < 40; ++attempt) {
-        {
-            std::ofstream out(scratch / "skip.txt");
-            for (const std::string& s : skip) out << s << "\n";
-        }
-        std::vector<std::string> args{"--checks", "--figures", fs::absolute(setup.scenes).string(), "--out",
-                                      (scratch / "figures").string(), "--skip-file", (scratch / "skip.txt").string(),
-                                      "--threads", std::to_string(setup.threads)};
-        if (plan.lab) args.insert(args.end(), {"--lab", std::to_string(plan.lab)});
-        if (setup.seed >= 0) args.insert(args.end(), {"--seed", std::to_string(setup.seed)});
-        const AgentRun run = runAgent(plan.program, args, scratch / ("run" + std::to_string(attempt)), setup.limits);
-        std::string pendingCheck, pendingFigure;
-        int pendingLab = plan.lab;
-        bool done = false;
-        int progress = 0; // items finished in this run
-        for (const std::string& line : run.lines) {
-            const json j = json::parse(line, nullptr, false);
-            if (!j.is_object()) continue; // not ours: ignored
-            const std::string kind = j.value("kind", "");
-            if (kind == "check-start") {
-                pendingCheck = j.value("name", "");
-                pendingLab = labOfSuite(j.value("suite", ""));
-            } else if (kind == "check") {
-                CheckOutcome c;
-                c.lab = labOfSuite(j.value("suite", ""));
-                c.name = j.value("name", "");
-                c.passed = j.value("passed", false);
-                c.message = j.value("message", "");
-                if (c.lab != 0 && (plan.lab == 0 || c.lab == plan.lab) && !r.checks.count(c.name)) {
-                    r.order.push_back(c.name);
-                    r.checks[c.name] = c;
-                }
-                skip.insert(c.name);
-                pendingCheck.clear();
-                ++progress;
-            } else if (kind == "figure-start") {
-                pendingFigure = j.value("id", "");
-            } else if (kind == "figure") {
-                r.figures[j.value("id", "")] = j;
-                skip.insert("figure:" + j.value("id", ""));
-                pendingFigure.clear();
-                ++progress;
-            } else if (kind == "done") {
-                done = true;
+    // The drawn cases come from a seed the child never sees: each grading draws new ones.
+    const std::vector<FunctionCheck> checks =
+        withChecks ? functionChecks((std::uint64_t(std::random_device{}()) << 32) ^ std::random_device{}()) : std::vector<FunctionCheck>{};
+    std::vector<Item> items;
+    for (const FunctionCheck& c : checks)
+        if (plan.lab == 0 || c.lab == plan.lab) items.push_back({items.size() + 1, &c, nullptr, false});
+    for (const FigureReference& f : setup.references.figures)
+        if (plan.lab == 0 || f.lab == plan.lab) items.push_back({items.size() + 1, nullptr, &f, false});
+    std::map<std::uint64_t, Item*> byId;
+    for (Item& item : items) byId[item.id] = &item;
+    Ledger ledger(r);
+    for (int attempt = 0;; ++attempt) {
+        std::vector<Item*> sent;
+        std::string requests;
+        for (Item& item : items)
+            if (!item.resolved) {
+                sent.push_back(&item);
+                requests += protocol::serialize(requestFor(setup, item)) + "\n";
             }
-        }
-        if (done) return r;
+        if (sent.empty()) return r;
+        const AgentRun run = runAgent(plan.program, {}, scratch / ("run" + std::to_string(attempt)), setup.limits, requests);
+        const bool hello = readRun(run.lines, sent, byId, ledger);
+        const auto unanswered = std::find_if(sent.begin(), sent.end(), [](const Item* i) { return !i->resolved; });
+        if (unanswered == sent.end()) continue;
         const std::string why = run.describe();
-        if (!pendingCheck.empty()) {
-            CheckOutcome c{pendingLab, pendingCheck, false, "this check " + why + (run.stderrTail.empty() ? "" : "; its error output ends with: " + run.stderrTail), 0., 0.};
-            if (!r.checks.count(c.name)) r.order.push_back(c.name);
-            r.checks[c.name] = c;
-            skip.insert(c.name);
-        } else if (!pendingFigure.empty()) {
-            r.figures[pendingFigure] = json{{"kind", "figure"}, {"id", pendingFigure}, {"status", "failed"},
-                                            {"message", "rendering " + why}};
-            skip.insert("figure:" + pendingFigure);
-        } else if (progress == 0) { // nothing new: another run would do the same
-            r.problems.push_back(plan.program.filename().string() + " " + why + " before it had reported everything" +
-                                 (run.stderrTail.empty() ? "" : ": " + run.stderrTail));
+        const std::string errors = run.stderrTail.empty() ? "" : "; its error output ends with: " + run.stderrTail;
+        if (!hello) { // it never started: another run would do the same
+            r.problems.push_back(plan.program.filename().string() + " " + why + " before it answered anything" + errors);
+            for (Item* item : sent) ledger.fail(*item, "never ran: " + plan.program.filename().string() + " " + why + " at start");
             return r;
         }
+        ledger.fail(**unanswered, ((*unanswered)->check ? "this check " : "rendering ") + why + errors);
     }
-    r.problems.push_back(plan.program.filename().string() + " was stopped after 40 restarts");
-    return r;
 }
 
 void scoreLabs(GradeResult& result) {
@@ -126,6 +92,8 @@ void addCheck(const GradeSetup& setup, GradeResult& result, CheckOutcome c) {
     c.points = c.passed ? c.maxPoints : 0.;
     result.checks.push_back(std::move(c));
 }
+
+FigureOutcome gradeImage(const GradeSetup& setup, const FigureReference& reference, const Image8& image, const fs::path& file);
 
 // Reads and compares one picture; every way a file can be wrong is a reason of its own.
 FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& reference, const fs::path& file) {
@@ -156,6 +124,15 @@ FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& refer
         f.reason = std::string("unreadable (truncated or damaged?): ") + e.what();
         return f;
     }
+    return gradeImage(setup, reference, image, file);
+}
+
+// Compares a picture with its reference; `file` is where the report finds it.
+FigureOutcome gradeImage(const GradeSetup& setup, const FigureReference& reference, const Image8& image, const fs::path& file) {
+    FigureOutcome f;
+    f.id = reference.id;
+    f.lab = reference.lab;
+    f.maxPoints = setup.points.points(f.lab, figureItem(f.id), kDefaultFigurePoints);
     f.studentImage = file;
     f.verdict = compareImage(reference, image);
     f.passed = f.verdict.passed;
@@ -259,16 +236,17 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
             if (reference.lab != lab) continue;
             const auto it = r.figures.find(reference.id);
             FigureOutcome f;
-            const std::string status = it != r.figures.end() ? it->second.value("status", "") : "";
-            if (status == "rendered") {
-                f = gradePicture(setup, reference, setup.scratch / ("agent-" + (plan.lab ? "lab" + std::to_string(plan.lab) : std::string("all"))) / "figures" / (reference.id + ".png"));
+            if (it != r.figures.end() && it->second.image) {
+                // Kept for the report in a folder of the parent's, written after the agent is gone.
+                const fs::path file = setup.scratch / ("figures-" + agentName(plan)) / (reference.id + ".png");
+                fs::create_directories(file.parent_path());
+                writePng(file, *it->second.image);
+                f = gradeImage(setup, reference, *it->second.image, file);
             } else {
                 f.id = reference.id;
                 f.lab = lab;
                 f.maxPoints = setup.points.points(lab, figureItem(f.id), kDefaultFigurePoints);
-                f.reason = it == r.figures.end() ? "not rendered: the code stopped before this figure"
-                           : status == "todo"    ? it->second.value("message", "")
-                                                 : "rendering failed: " + it->second.value("message", "");
+                f.reason = it == r.figures.end() ? "not rendered: the code stopped before this figure" : it->second.reason;
             }
             result.figures.push_back(std::move(f));
         }
@@ -298,6 +276,13 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         }
     }
     return result;
+}
+
+std::map<std::string, Image8> renderFigures(const GradeSetup& setup, const fs::path& agent) {
+    std::map<std::string, Image8> pictures;
+    for (auto& [id, figure] : runUntilDone(setup, AgentPlan{agent, 0}, false).figures)
+        if (figure.image) pictures[id] = std::move(*figure.image);
+    return pictures;
 }
 
 GradeResult gradeImages(const GradeSetup& setup, const fs::path& folder) {

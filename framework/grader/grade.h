@@ -11,6 +11,7 @@
 #include "grader/sandbox.h"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,9 @@ struct AgentPlan {
 // The labs in `unbuilt` had no agent (their code did not compile): zero, with `buildMessage`.
 GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& agents, bool isolated,
                       const std::vector<int>& unbuilt = {}, const std::string& buildMessage = "");
+
+// The figures an agent's code renders (those it could), as it sent them; nothing is judged.
+std::map<std::string, Image8> renderFigures(const GradeSetup& setup, const std::filesystem::path& agent);
 
 // Grades pictures DIR/<figure id>.png, no code at all.
 GradeResult gradeImages(const GradeSetup& setup, const std::filesystem::path& folder);

@@ -65,7 +65,7 @@ void limit(int resource, unsigned long long value) {
 }
 
 [[noreturn]] void execChild(const fs::path& program, std::vector<std::string> args, const fs::path& scratch,
-                            const SandboxLimits& limits, int writeFd) {
+                            const SandboxLimits& limits, int readFd, int writeFd) {
     setpgid(0, 0); // its own group: the parent can stop it and any process it starts
     if (chdir(scratch.c_str()) != 0) _exit(126);
     const int out = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -80,6 +80,8 @@ void limit(int resource, unsigned long long value) {
     limit(RLIMIT_FSIZE, limits.fileBytes);
     limit(RLIMIT_CORE, 0);
     args.insert(args.begin(), program.string());
+    args.push_back("--request-fd");
+    args.push_back(std::to_string(readFd));
     args.push_back("--report-fd");
     args.push_back(std::to_string(writeFd));
     std::vector<char*> argv;
@@ -89,17 +91,46 @@ void limit(int resource, unsigned long long value) {
     _exit(127);
 }
 
-AgentRun runPosix(const fs::path& program, const std::vector<std::string>& args, const fs::path& scratch,
-                  const SandboxLimits& limits) {
+// A pipe holding all of `requests`, its write end closed: the child reads them at its pace, and
+// the parent never blocks on (or is signalled by) a child that stops reading.
+int requestPipe(const std::string& requests) {
     int fds[2];
     if (pipe(fds) != 0) throw std::runtime_error("grader: cannot open a pipe to the agent");
+#ifdef F_SETPIPE_SZ
+    if (requests.size() > 65536) fcntl(fds[1], F_SETPIPE_SZ, int(std::min<std::size_t>(requests.size() + 4096, 1u << 20)));
+#endif
+    fcntl(fds[1], F_SETFL, O_NONBLOCK);
+    std::size_t written = 0;
+    while (written < requests.size()) {
+        const ssize_t n = write(fds[1], requests.data() + written, requests.size() - written);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            close(fds[0]);
+            close(fds[1]);
+            throw std::runtime_error("grader: the requests (" + std::to_string(requests.size()) + " bytes) do not fit in a pipe");
+        }
+        written += std::size_t(n);
+    }
+    close(fds[1]);
+    return fds[0];
+}
+
+AgentRun runPosix(const fs::path& program, const std::vector<std::string>& args, const fs::path& scratch,
+                  const SandboxLimits& limits, const std::string& requests) {
+    const int requestFd = requestPipe(requests);
+    int fds[2];
+    if (pipe(fds) != 0) {
+        close(requestFd);
+        throw std::runtime_error("grader: cannot open a pipe to the agent");
+    }
     std::fflush(nullptr);
     const pid_t pid = fork();
     if (pid < 0) throw std::runtime_error("grader: cannot start " + program.string());
     if (pid == 0) {
         close(fds[0]);
-        execChild(program, args, scratch, limits, fds[1]);
+        execChild(program, args, scratch, limits, requestFd, fds[1]);
     }
+    close(requestFd);
     close(fds[1]);
     setpgid(pid, pid); // also here, so the group exists whoever runs first
     AgentRun run;
@@ -111,7 +142,7 @@ AgentRun runPosix(const fs::path& program, const std::vector<std::string>& args,
         return int(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count());
     };
     std::string received;
-    const std::size_t maxBytes = 16u << 20; // more than any honest report
+    const std::size_t maxBytes = 64u << 20; // more than any honest report (every figure's pixels: about 10 MB)
     char buffer[65536];
     for (;;) {
         const int wait = remainingMs();
@@ -156,18 +187,19 @@ AgentRun runPosix(const fs::path& program, const std::vector<std::string>& args,
 } // namespace
 
 AgentRun runAgent(const fs::path& program, const std::vector<std::string>& args, const fs::path& scratch,
-                  const SandboxLimits& limits) {
+                  const SandboxLimits& limits, const std::string& requests) {
     fs::create_directories(scratch);
     AgentRun run;
 #ifdef RAYLAB_POSIX_SANDBOX
-    run = runPosix(fs::absolute(program), args, scratch, limits); // the child changes folder first
+    run = runPosix(fs::absolute(program), args, scratch, limits, requests); // the child changes folder first
 #else
     (void)limits;
-    const fs::path results = fs::absolute(scratch / "results.jsonl");
+    const fs::path results = fs::absolute(scratch / "results.jsonl"), requestFile = fs::absolute(scratch / "requests.jsonl");
     fs::remove(results);
+    std::ofstream(requestFile, std::ios::binary) << requests;
     std::string command = "\"\"" + program.string() + "\"";
     for (const std::string& a : args) command += " \"" + a + "\"";
-    command += " --report-file \"" + results.string() + "\" > \"" + (scratch / "stdout.txt").string() + "\" 2> \"" +
+    command += " --request-file \"" + requestFile.string() + "\" --report-file \"" + results.string() + "\" > \"" + (scratch / "stdout.txt").string() + "\" 2> \"" +
                (scratch / "stderr.txt").string() + "\"\"";
     run.exitCode = std::system(command.c_str());
     std::ifstream in(results, std::ios::binary);

@@ -30,9 +30,10 @@ struct AgentRun {
     std::string describe() const; // "killed after 180 s", "exited with status 3", "crashed (signal 11)"
 };
 
-// Runs `program args... <channel option>` in `scratch` (created). The channel option is
-// "--report-fd N" on POSIX and "--report-file FILE" elsewhere.
+// Runs `program args... <channel options>` in `scratch` (created), `requests` waiting on its request
+// channel. The channel options are "--request-fd N --report-fd N" on POSIX (two pipes the parent
+// opened) and "--request-file FILE --report-file FILE" elsewhere.
 AgentRun runAgent(const std::filesystem::path& program, const std::vector<std::string>& args,
-                  const std::filesystem::path& scratch, const SandboxLimits& limits);
+                  const std::filesystem::path& scratch, const SandboxLimits& limits, const std::string& requests = "");
 
 } // namespace raylab::grader

@@ -39,6 +39,12 @@ PerspectiveCamera::PerspectiveCamera(int width, int height, float fovyDegrees)
     updateViewport();
 }
 
+PerspectiveCamera::PerspectiveCamera(int width, int height, const glm::vec3& position, float fovyDegrees)
+    : PerspectiveCamera(width, height, fovyDegrees) {
+    m_position = position;
+    updateViewport();
+}
+
 void checkLookAtParameters(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up) {
     if (!isFinite(position)) throw std::invalid_argument("camera: position = " + showVector(position) + " is not finite");
     if (!isFinite(target)) throw std::invalid_argument("camera: look_at = " + showVector(target) + " is not finite");

@@ -68,6 +68,7 @@ FigureResult renderScene(const SceneDescription& d, const RenderOptions& options
     } catch (const NotDoneYet& e) {
         result.status = FigureResult::Status::NotDoneYet;
         result.message = e.what();
+        result.todo = e;
     } catch (const std::exception& e) {
         result.status = FigureResult::Status::Failed;
         result.message = e.what();

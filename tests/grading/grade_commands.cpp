@@ -91,9 +91,10 @@ TEST_CASE("grade --images names the mistake a picture shows") {
     const fs::path dir = freshFolder("raylab-images-mistake");
     GradeSetup setup = courseSetup();
     // The mistake's full-size picture, rendered by its agent.
-    const fs::path scratch = dir / "agent";
-    runAgent(binDir() / "raylab-mistake-v_flipped", {"--figures", RAYLAB_SCENES_DIR, "--out", (dir / "figures").string()},
-             scratch, SandboxLimits{});
+    setup.scratch = dir / "agent";
+    fs::create_directories(dir / "figures");
+    for (const auto& [id, picture] : renderFigures(setup, binDir() / "raylab-mistake-v_flipped"))
+        raylab::writePng(dir / "figures" / (id + ".png"), picture);
     REQUIRE(fs::exists(dir / "figures" / "lab3_cosine.png"));
     const Run run = runRaylab("grade --images \"" + (dir / "figures").string() + "\" --report \"" + (dir / "report").string() + "\"");
     CHECK(run.status == 1);

@@ -1,53 +1,93 @@
-// Lab 1's function checks: the gradient, value by value.
-#include "checks/check_support.h"
+// Lab 1's function checks: the gradient, value by value, on the handout's sizes and on sizes drawn
+// at grading time.
+#include "grader/checks/checks.h"
 
-#include "raylab/gradient.h"
+#include <utility>
 
-using namespace raylab;
-using namespace raylab::checks;
+namespace raylab::grader {
 
 namespace {
 
+using protocol::Probe;
+
 // A value may be quantized to 8 bits (by rounding or truncating) before it is stored: a PNG keeps
 // no more, so the checks allow one level.
-constexpr float kLevel = 1.01f / 255.f;
+constexpr double kLevel = 1.01 / 255.;
+constexpr const char* kRampHint =
+    "red = i / (W - 1) grows to the right (column i), green = j / (H - 1) downwards (row j)";
+
+// The texture a call returned, W x H.
+struct Gradient {
+    int width, height;
+    const std::vector<double>& values;
+    glm::dvec3 pixel(int i, int j) const {
+        const std::size_t k = 3 * (std::size_t(j) * std::size_t(width) + std::size_t(i));
+        return {values[k], values[k + 1], values[k + 2]};
+    }
+    glm::dvec3 expected(int i, int j) const {
+        return {width > 1 ? double(i) / (width - 1) : 0., height > 1 ? double(j) / (height - 1) : 0., 0.};
+    }
+    std::string name(int i, int j) const {
+        return std::to_string(width) + " x " + std::to_string(height) + " image, pixel (" + std::to_string(i) + ", " +
+               std::to_string(j) + ")";
+    }
+    bool expectPixel(Judge& judge, int i, int j, double tolerance, const std::string& hint) const {
+        return judge.expectNear(name(i, j), pixel(i, j), expected(i, j), tolerance, hint);
+    }
+};
+
+protocol::Call gradient(int width, int height) {
+    return {Probe::FillGradient, {double(width), double(height)}};
+}
 
 } // namespace
 
-TEST_SUITE("lab1") {
+void addLab1Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    // Drawn sizes never equal the fixed ones: an answer learnt by heart for those fails these.
+    const int width = random.integer(6, 40), height = random.integer(4, 30);
+    checks.push_back(
+        {1,
+         "fillGradient: the corners and the middle of a 5 x 3 image",
+         {gradient(5, 3), gradient(width, height)},
+         [width, height](const auto& out, Judge& judge) {
+             const Gradient fixed{5, 3, out[0]};
+             judge.expectNear("pixel (0, 0)", fixed.pixel(0, 0), {0., 0., 0.}, 1e-6, kRampHint);
+             judge.expectNear("pixel (4, 0), top right", fixed.pixel(4, 0), {1., 0., 0.}, 1e-6, kRampHint);
+             judge.expectNear("pixel (0, 2), bottom left", fixed.pixel(0, 2), {0., 1., 0.}, 1e-6, kRampHint);
+             judge.expectNear("pixel (4, 2), bottom right", fixed.pixel(4, 2), {1., 1., 0.}, 1e-6, kRampHint);
+             judge.expectNear("pixel (1, 1)", fixed.pixel(1, 1), {0.25, 0.5, 0.}, kLevel,
+                              "divide by W - 1 and H - 1 (not W and H) in floating point, not in integers");
+             const Gradient drawn{width, height, out[1]};
+             for (const auto& [i, j] :
+                  {std::pair{0, 0}, {width - 1, 0}, {0, height - 1}, {width - 1, height - 1}, {width / 2, height / 2}})
+                 drawn.expectPixel(judge, i, j, kLevel, kRampHint);
+         }});
 
-TEST_CASE("fillGradient: the corners and the middle of a 5 x 3 image") {
-    Texture t(5, 3);
-    fillGradient(t);
-    const char* hint = "red = i / (W - 1) grows to the right (column i), green = j / (H - 1) downwards (row j)";
-    expectNear("pixel (0, 0)", t.getPixel(0, 0), Color(0.f, 0.f, 0.f), 1e-6f, hint);
-    expectNear("pixel (4, 0), top right", t.getPixel(4, 0), Color(1.f, 0.f, 0.f), 1e-6f, hint);
-    expectNear("pixel (0, 2), bottom left", t.getPixel(0, 2), Color(0.f, 1.f, 0.f), 1e-6f, hint);
-    expectNear("pixel (4, 2), bottom right", t.getPixel(4, 2), Color(1.f, 1.f, 0.f), 1e-6f, hint);
-    expectNear("pixel (1, 1)", t.getPixel(1, 1), Color(0.25f, 0.5f, 0.f), kLevel,
-               "divide by W - 1 and H - 1 (not W and H) in floating point, not in integers");
+    const int otherWidth = random.integer(8, 40), otherHeight = random.integer(5, 30);
+    checks.push_back(
+        {1,
+         "fillGradient: every pixel is written",
+         {gradient(7, 4), gradient(otherWidth, otherHeight)},
+         [otherWidth, otherHeight](const auto& out, Judge& judge) {
+             for (const Gradient g : {Gradient{7, 4, out[0]}, Gradient{otherWidth, otherHeight, out[1]}})
+                 for (int j = 0; j < g.height; ++j)
+                     for (int i = 0; i < g.width; ++i)
+                         if (!g.expectPixel(judge, i, j, kLevel, "loop over every column i < W and every row j < H"))
+                             return;
+         }});
+
+    const int tall = random.integer(4, 20), wide = random.integer(5, 20);
+    checks.push_back({1,
+                      "fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN",
+                      {gradient(1, 3), gradient(4, 1), gradient(1, tall), gradient(wide, 1)},
+                      [tall, wide](const auto& out, Judge& judge) {
+                          const char* hint =
+                              "W - 1 is 0 for a 1-pixel-wide image: use red = 0 there instead of dividing by 0";
+                          Gradient{1, 3, out[0]}.expectPixel(judge, 0, 2, 1e-6, hint);
+                          Gradient{4, 1, out[1]}.expectPixel(judge, 3, 0, 1e-6, hint);
+                          Gradient{1, tall, out[2]}.expectPixel(judge, 0, tall - 1, 1e-6, hint);
+                          Gradient{wide, 1, out[3]}.expectPixel(judge, wide - 1, 0, 1e-6, hint);
+                      }});
 }
 
-TEST_CASE("fillGradient: every pixel is written") {
-    Texture t(7, 4);
-    for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 7; ++i) t.setPixel(i, j, Color(-1.f));
-    fillGradient(t);
-    for (int j = 0; j < 4; ++j)
-        for (int i = 0; i < 7; ++i)
-            if (!expectNear("pixel (" + std::to_string(i) + ", " + std::to_string(j) + ")", t.getPixel(i, j),
-                            Color(float(i) / 6.f, float(j) / 3.f, 0.f), kLevel,
-                            "loop over every column i < W and every row j < H"))
-                return;
-}
-
-TEST_CASE("fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN") {
-    Texture column(1, 3), row(4, 1);
-    fillGradient(column);
-    fillGradient(row);
-    const char* hint = "W - 1 is 0 for a 1-pixel-wide image: use red = 0 there instead of dividing by 0";
-    expectNear("1 x 3 image, pixel (0, 2)", column.getPixel(0, 2), Color(0.f, 1.f, 0.f), 1e-6f, hint);
-    expectNear("4 x 1 image, pixel (3, 0)", row.getPixel(3, 0), Color(1.f, 0.f, 0.f), 1e-6f, hint);
-}
-
-} // TEST_SUITE
+} // namespace raylab::grader

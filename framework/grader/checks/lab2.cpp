@@ -1,87 +1,165 @@
-// Lab 2's function checks: the viewport and the primary rays of known cameras.
-#include "checks/check_support.h"
+// Lab 2's function checks: the viewport and the primary rays of known cameras and of cameras
+// drawn at grading time. Every camera is built without lookAt (lab 4): lab 2 is graded on its own.
+#include "grader/checks/checks.h"
 
-#include "raylab/perspective_camera.h"
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <numbers>
 
-using namespace raylab;
-using namespace raylab::checks;
+namespace raylab::grader {
 
 namespace {
 
-// The expected values, from docs/conventions.md, computed here in double.
-glm::vec3 expectedDirection(const glm::dvec3& topLeft, double w, double h, const glm::dvec3& u, const glm::dvec3& v,
-                            double sx, double sy) {
-    return glm::vec3(glm::normalize(topLeft + sx * w * u - sy * h * v));
+using protocol::Probe;
+
+struct Camera {
+    int width, height;
+    double fovy;
+    glm::dvec3 position{0.};
+    double viewportHeight() const { return 2. * std::tan(fovy / 2. * std::numbers::pi / 180.); }
+    double viewportWidth() const { return viewportHeight() * width / height; }
+    // The default frame: u = (-1, 0, 0), v = (0, 1, 0), looking along +z (docs/conventions.md).
+    glm::dvec3 topLeft() const { return position + glm::dvec3(viewportWidth() / 2., viewportHeight() / 2., 1.); }
+    glm::dvec3 direction(double sx, double sy) const {
+        return glm::normalize(topLeft() + sx * viewportWidth() * glm::dvec3(-1., 0., 0.) -
+                              sy * viewportHeight() * glm::dvec3(0., 1., 0.) - position);
+    }
+    protocol::Call viewport() const { return {Probe::Viewport, {double(width), double(height), fovy}}; }
+    protocol::Call ray(double sx, double sy) const {
+        return {Probe::GenerateRay, {double(width), double(height), fovy, position.x, position.y, position.z, sx, sy}};
+    }
+    std::string name() const { return std::to_string(width) + " x " + std::to_string(height) + ", fovy " + show(fovy); }
+};
+
+// Sizes and angles where a float viewport keeps the checks' 1e-5 (a viewport 10 units wide would not).
+Camera drawnCamera(CaseRandom& random) {
+    const int height = random.integer(100, 800);
+    return {int(height * random.uniform(0.5, 2.5)), height, CaseRandom::asFloat(random.uniform(20., 120.))};
+}
+
+void expectViewport(Judge& judge, const Camera& c, const std::vector<double>& out, bool named) {
+    Outputs o(out);
+    const std::string suffix = named ? " (" + c.name() + ")" : "";
+    const double height = o.number(), width = o.number();
+    judge.expectNear("viewport height, fovy " + show(c.fovy) + suffix, height, c.viewportHeight(), 1e-5,
+                     "height = 2 tan(fovy / 2) * focal: fovy is the full angle, in degrees (glm::radians converts)");
+    judge.expectNear("viewport width, " + std::to_string(c.width) + " x " + std::to_string(c.height) + suffix, width,
+                     c.viewportWidth(), 1e-5,
+                     "width = height * aspect, with aspect = W / H = " + show(double(c.width) / c.height));
+    judge.expectNear("top-left corner" + suffix, o.vec3(), c.topLeft(), 1e-5,
+                     "topLeft = position - w * focal + v * height / 2 - u * width / 2 (u = (-1, 0, 0) here)");
+}
+
+struct Point {
+    double sx, sy;
+    std::string name;
+};
+
+void expectRays(Judge& judge, const Camera& c, const std::vector<Point>& points,
+                const std::vector<std::vector<double>>& out, std::size_t first) {
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        Outputs o(out[first + k]);
+        const Point& p = points[k];
+        judge.expectNear("ray origin at the " + p.name, o.vec3(), c.position, 1e-6,
+                         "a primary ray starts at the camera position");
+        judge.expectNear("ray direction at the " + p.name, o.vec3(), c.direction(p.sx, p.sy), 1e-5,
+                         "direction = normalize(topLeft + sx * width * u - sy * height * v - position): sx goes right "
+                         "along u, sy goes down against v");
+    }
 }
 
 } // namespace
 
-TEST_SUITE("lab2") {
+void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    const Camera handout{600, 400, 60.};
+    const Camera drawn = drawnCamera(random);
+    checks.push_back({2,
+                      "updateViewport: the viewport of the default camera",
+                      {handout.viewport(), drawn.viewport()},
+                      [handout, drawn](const auto& out, Judge& judge) {
+                          expectViewport(judge, handout, out[0], false);
+                          expectViewport(judge, drawn, out[1], true);
+                      }});
 
-TEST_CASE("updateViewport: the viewport of the default camera") {
-    const PerspectiveCamera camera(600, 400, 60.f);
-    const double h = 2. * std::tan(30. * std::numbers::pi / 180.);
-    expectNear("viewport height, fovy 60", camera.viewportHeight(), float(h), 1e-5f,
-               "height = 2 tan(fovy / 2) * focal: fovy is the full angle, in degrees (glm::radians converts)");
-    expectNear("viewport width, 600 x 400", camera.viewportWidth(), float(h * 1.5), 1e-5f,
-               "width = height * aspect, with aspect = W / H = 1.5");
-    expectNear("top-left corner", camera.topLeft(), glm::vec3(float(h * 0.75), float(h * 0.5), 1.f), 1e-5f,
-               "topLeft = position - w * focal + v * height / 2 - u * width / 2 (u = (-1, 0, 0) here)");
-}
+    const Camera square{100, 100, 90.}, wide{100, 100, CaseRandom::asFloat(random.uniform(20., 120.))};
+    checks.push_back(
+        {2,
+         "updateViewport: fovy is in degrees and halved",
+         {square.viewport(), wide.viewport()},
+         [square, wide](const auto& out, Judge& judge) {
+             const char* hint = "2 tan(fovy / 2), fovy in degrees: convert degrees to radians and take half the angle";
+             for (const auto& [c, o] : {std::pair{square, out[0]}, std::pair{wide, out[1]}})
+                 judge.expectNear("viewport height, fovy " + show(c.fovy), o[0], c.viewportHeight(), 1e-5, hint);
+         }});
 
-TEST_CASE("updateViewport: fovy is in degrees and halved") {
-    const PerspectiveCamera camera(100, 100, 90.f);
-    expectNear("viewport height, fovy 90", camera.viewportHeight(), 2.f, 1e-5f,
-               "2 tan(90 / 2 degrees) = 2: convert degrees to radians and take half the angle");
-}
-
-TEST_CASE("generateRay: the centre and the four corners of the default camera") {
-    const PerspectiveCamera camera(600, 400, 60.f);
-    const double h = 2. * std::tan(30. * std::numbers::pi / 180.), w = 1.5 * h;
-    const glm::dvec3 topLeft(w / 2., h / 2., 1.), u(-1., 0., 0.), v(0., 1., 0.);
-    const struct {
-        float sx, sy;
-        const char* name;
-    } points[] = {{0.5f, 0.5f, "centre (0.5, 0.5)"},
-                  {0.f, 0.f, "top-left corner (0, 0)"},
-                  {1.f, 0.f, "top-right corner (1, 0)"},
-                  {0.f, 1.f, "bottom-left corner (0, 1)"},
-                  {1.f, 1.f, "bottom-right corner (1, 1)"}};
-    for (const auto& p : points) {
-        const Ray ray = camera.generateRay(p.sx, p.sy);
-        expectNear(std::string("ray origin at the ") + p.name, ray.origin, glm::vec3(0.f), 1e-6f,
-                   "a primary ray starts at the camera position");
-        expectNear(std::string("ray direction at the ") + p.name, ray.direction,
-                   expectedDirection(topLeft, w, h, u, v, p.sx, p.sy), 1e-5f,
-                   "direction = normalize(topLeft + sx * width * u - sy * height * v - position): sx goes right "
-                   "along u, sy goes down against v");
+    std::vector<Point> corners{{0.5, 0.5, "centre (0.5, 0.5)"},
+                               {0., 0., "top-left corner (0, 0)"},
+                               {1., 0., "top-right corner (1, 0)"},
+                               {0., 1., "bottom-left corner (0, 1)"},
+                               {1., 1., "bottom-right corner (1, 1)"}};
+    const std::size_t fixedCorners = corners.size();
+    const Camera other = drawnCamera(random);
+    std::vector<Point> drawnPoints;
+    for (int k = 0; k < 3; ++k) {
+        const double sx = CaseRandom::asFloat(random.uniform(0., 1.)), sy = CaseRandom::asFloat(random.uniform(0., 1.));
+        drawnPoints.push_back({sx, sy, "point (" + show(sx) + ", " + show(sy) + ") of a " + other.name() + " camera"});
     }
+    std::vector<protocol::Call> calls;
+    for (const Point& p : corners)
+        calls.push_back(handout.ray(p.sx, p.sy));
+    for (const Point& p : drawnPoints)
+        calls.push_back(other.ray(p.sx, p.sy));
+    checks.push_back({2, "generateRay: the centre and the four corners of the default camera", calls,
+                      [handout, other, corners, drawnPoints, fixedCorners](const auto& out, Judge& judge) {
+                          expectRays(judge, handout, corners, out, 0);
+                          expectRays(judge, other, drawnPoints, out, fixedCorners);
+                      }});
+
+    const Camera unit{640, 480, 75.};
+    std::vector<std::pair<double, double>> screen;
+    for (double sx : {0., 0.3, 1.})
+        for (double sy : {0., 0.7, 1.})
+            screen.emplace_back(CaseRandom::asFloat(sx), CaseRandom::asFloat(sy));
+    for (int k = 0; k < 3; ++k)
+        screen.emplace_back(CaseRandom::asFloat(random.uniform(0., 1.)), CaseRandom::asFloat(random.uniform(0., 1.)));
+    calls.clear();
+    for (const auto& [sx, sy] : screen)
+        calls.push_back(unit.ray(sx, sy));
+    checks.push_back(
+        {2, "generateRay: directions are unit vectors", calls, [screen](const auto& out, Judge& judge) {
+             for (std::size_t k = 0; k < screen.size(); ++k) {
+                 Outputs o(out[k]);
+                 o.vec3();
+                 if (!judge.expectNear(
+                         "|direction| at (" + show(screen[k].first) + ", " + show(screen[k].second) + ")",
+                         glm::length(o.vec3()), 1., 1e-5,
+                         "normalize the direction (glm::normalize): shading and t as a distance rely on it"))
+                     return;
+             }
+         }});
+
+    const Camera away{300, 200, 60., {2., 3., -4.}};
+    Camera drawnAway = drawnCamera(random);
+    drawnAway.position = CaseRandom::asFloat(random.vec3(-5., 5.));
+    const double sx = CaseRandom::asFloat(random.uniform(0., 1.)), sy = CaseRandom::asFloat(random.uniform(0., 1.));
+    checks.push_back({2,
+                      "generateRay: a camera away from the origin starts its rays at its position",
+                      {away.ray(0., 0.), drawnAway.ray(sx, sy)},
+                      [away, drawnAway, sx, sy](const auto& out, Judge& judge) {
+                          const char* hint =
+                              "topLeft includes the position (topLeft = position - w * focal + ...) and the "
+                              "direction subtracts it";
+                          for (const auto& [c, o, x, y] :
+                               {std::tuple{away, out[0], 0., 0.}, std::tuple{drawnAway, out[1], sx, sy}}) {
+                              Outputs ray(o);
+                              const std::string at = "camera at " + show(c.position);
+                              judge.expectNear("ray origin, " + at, ray.vec3(), c.position, 1e-5,
+                                               "the origin of every primary ray is the camera position");
+                              judge.expectNear("direction through (" + show(x) + ", " + show(y) + "), " + at,
+                                               ray.vec3(), c.direction(x, y), 1e-5, hint);
+                          }
+                      }});
 }
 
-TEST_CASE("generateRay: directions are unit vectors") {
-    const PerspectiveCamera camera(640, 480, 75.f);
-    for (float sx : {0.f, 0.3f, 1.f})
-        for (float sy : {0.f, 0.7f, 1.f}) {
-            const float length = glm::length(camera.generateRay(sx, sy).direction);
-            if (!expectNear("|direction| at (" + show(sx) + ", " + show(sy) + ")", length, 1.f, 1e-5f,
-                            "normalize the direction (glm::normalize): shading and t as a distance rely on it"))
-                return;
-        }
-}
-
-TEST_CASE("generateRay: a camera away from the origin starts its rays at its position") {
-    // Needs lab 4's lookAt constructor (the reference one when lab 2 is graded on its own).
-    const glm::vec3 position(2.f, 3.f, -4.f);
-    const PerspectiveCamera camera(300, 200, position, position + glm::vec3(0.f, 0.f, 1.f), glm::vec3(0.f, 1.f, 0.f), 60.f);
-    const Ray ray = camera.generateRay(0.f, 0.f);
-    expectNear("ray origin", ray.origin, position, 1e-5f, "the origin of every primary ray is the camera position");
-    const double h = 2. * std::tan(30. * std::numbers::pi / 180.), w = 1.5 * h;
-    expectNear("direction through the top-left corner", ray.direction,
-               expectedDirection({w / 2., h / 2., 1.}, w, h, {-1., 0., 0.}, {0., 1., 0.}, 0., 0.), 1e-5f,
-               "topLeft includes the position (topLeft = position - w * focal + ...) and the direction subtracts it");
-}
-
-} // TEST_SUITE
+} // namespace raylab::grader

@@ -1,139 +1,378 @@
 // Lab 3's function checks: intersection distances of chosen rays (with the hard cases of
-// docs/numerics.md that are fair to ask), normals and shading.
-#include "checks/check_support.h"
+// docs/numerics.md that are fair to ask), normals and shading; each also on cases drawn at
+// grading time.
+#include "grader/checks/checks.h"
 
-#include "raylab/integrator.h"
-#include "raylab/scene.h"
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
-using namespace raylab;
-using namespace raylab::checks;
+namespace raylab::grader {
 
 namespace {
 
-const SphereGeometry kSphere(glm::vec3(0.f, 0.f, 3.f), 1.f, Color(0.f, 0.f, 1.f));
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using protocol::Probe;
 
-// Expects a hit at t (and its point); returns false after reporting otherwise.
-bool expectHit(const std::string& what, const SphereGeometry& sphere, const Ray& ray, float tMin, float tMax, float t,
-               float tolerance, const std::string& hint) {
-    HitRecord hit;
-    if (!sphere.intersect(ray, tMin, tMax, hit)) {
-        fail(what, "a hit at t = " + show(t), "no hit", hint);
-        return false;
-    }
-    return expectNear(what + ", t", hit.t, t, tolerance, hint) &&
-           expectNear(what + ", hit.position", hit.position, ray.at(t), tolerance * 2.f,
-                      "store hit.position = ray.at(hit.t)");
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Sphere {
+    glm::dvec3 centre;
+    double radius;
+};
+struct Ray {
+    glm::dvec3 origin, direction;
+    glm::dvec3 at(double t) const { return origin + t * direction; }
+};
+
+const Sphere kSphere{{0., 0., 3.}, 1.};
+
+// One intersect call and what it must give: a hit at t, or a miss (t < 0).
+struct Case {
+    std::string what;
+    Sphere sphere;
+    Ray ray;
+    double tMin = 0., tMax = kInf;
+    double t = -1.; // < 0: a miss
+    double tolerance = 1e-5;
+    std::string hint;
+};
+
+protocol::Call call(const Case& c) {
+    std::vector<double> in;
+    appendInputs(in, c.sphere.centre);
+    in.push_back(c.sphere.radius);
+    appendInputs(in, c.ray.origin);
+    appendInputs(in, c.ray.direction);
+    in.insert(in.end(), {c.tMin, c.tMax});
+    return {Probe::Intersect, in};
 }
 
-bool expectMiss(const std::string& what, const SphereGeometry& sphere, const Ray& ray, float tMin, float tMax,
-                const std::string& hint) {
-    HitRecord hit;
-    hit.t = -7.f;
-    const bool found = sphere.intersect(ray, tMin, tMax, hit);
-    if (found) fail(what, "no hit", "a hit at t = " + show(hit.t), hint);
-    else if (hit.t != -7.f) fail(what + " (the hit record)", "left alone", "t changed to " + show(hit.t),
-                                 "write into hit only when you return true");
+bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
+    Outputs o(out);
+    const bool found = o.number() != 0.;
+    const double t = o.number();
+    const glm::dvec3 position = o.vec3();
+    if (c.t >= 0.) {
+        if (!found) {
+            judge.fail(c.what, "a hit at t = " + show(c.t), "no hit", c.hint);
+            return false;
+        }
+        return judge.expectNear(c.what + ", t", t, c.t, c.tolerance, c.hint) &&
+               judge.expectNear(c.what + ", hit.position", position, c.ray.at(c.t), c.tolerance * 2.,
+                                "store hit.position = ray.at(hit.t)");
+    }
+    if (found)
+        judge.fail(c.what, "no hit", "a hit at t = " + show(t), c.hint);
+    else if (t != -7.)
+        judge.fail(c.what + " (the hit record)", "left alone", "t changed to " + show(t),
+                   "write into hit only when you return true");
     return !found;
+}
+
+void addIntersect(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<Case> cases) {
+    std::vector<protocol::Call> calls;
+    for (const Case& c : cases)
+        calls.push_back(call(c));
+    checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
+                          for (std::size_t k = 0; k < cases.size(); ++k)
+                              judgeCase(judge, cases[k], out[k]);
+                      }});
+}
+
+Sphere drawnSphere(CaseRandom& random) {
+    return {CaseRandom::asFloat(random.vec3(-5., 5.)), CaseRandom::asFloat(random.uniform(0.5, 2.))};
+}
+
+std::string describe(const Sphere& s) {
+    return "sphere " + show(s.centre) + " radius " + show(s.radius);
+}
+
+// The nearest t >= 0 of the ray on the sphere, in double; none on a miss.
+std::optional<double> nearestHit(const Sphere& s, const Ray& r) {
+    const glm::dvec3 oc = r.origin - s.centre;
+    const double a = glm::dot(r.direction, r.direction), b = glm::dot(oc, r.direction);
+    const double disc = b * b - a * (glm::dot(oc, oc) - s.radius * s.radius);
+    if (disc < 0.) return std::nullopt;
+    const double near = (-b - std::sqrt(disc)) / a, far = (-b + std::sqrt(disc)) / a;
+    if (near >= 0.) return near;
+    if (far >= 0.) return far;
+    return std::nullopt;
+}
+
+// A ray from outside a drawn sphere towards a point of its disc at `offset` radii from its centre line.
+Ray rayTowards(CaseRandom& random, const Sphere& s, double offset) {
+    const glm::dvec3 axis = random.unitVector();
+    glm::dvec3 side = glm::normalize(glm::cross(axis, random.unitVector()));
+    const glm::dvec3 origin = CaseRandom::asFloat(s.centre - axis * (s.radius * random.uniform(3., 8.)));
+    const glm::dvec3 aim = s.centre + side * (offset * s.radius);
+    return {origin, CaseRandom::asFloat(glm::normalize(aim - origin))};
+}
+
+// The Li call of a one-sphere scene.
+protocol::Call liCall(int shading, const Sphere& s, const glm::dvec3& colour, const glm::dvec3& background,
+                      const Ray& r) {
+    std::vector<double> in{double(shading)};
+    appendInputs(in, s.centre);
+    in.push_back(s.radius);
+    appendInputs(in, colour);
+    appendInputs(in, background);
+    appendInputs(in, r.origin);
+    appendInputs(in, r.direction);
+    return {Probe::Li, in};
+}
+
+enum Shading { kFlat = 0, kPlaceholder = 1, kCosine = 2 };
+
+const glm::dvec3 kBlue{0., 0., 1.}, kGrey{0.5, 0.5, 0.5};
+
+struct LiCase {
+    std::string what;
+    int shading;
+    Sphere sphere;
+    glm::dvec3 colour, background;
+    Ray ray;
+    double tolerance;
+    std::string hint;
+};
+
+// The colour Li must return, in double.
+glm::dvec3 expectedLi(const LiCase& c) {
+    const std::optional<double> t = nearestHit(c.sphere, c.ray);
+    if (!t) return c.background;
+    const glm::dvec3 d = glm::normalize(c.ray.direction);
+    if (c.shading == kFlat) return c.colour;
+    glm::dvec3 n =
+        c.shading == kCosine ? (c.ray.at(*t) - c.sphere.centre) / c.sphere.radius : glm::normalize(glm::dvec3(1.));
+    if (c.shading == kPlaceholder && glm::dot(d, n) > 0.) n = -n;
+    return c.colour * std::max(-glm::dot(d, n), 0.);
+}
+
+void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<LiCase> cases) {
+    std::vector<protocol::Call> calls;
+    for (const LiCase& c : cases)
+        calls.push_back(liCall(c.shading, c.sphere, c.colour, c.background, c.ray));
+    checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
+                          for (std::size_t k = 0; k < cases.size(); ++k)
+                              judge.expectNear(cases[k].what, Outputs(out[k]).vec3(), expectedLi(cases[k]),
+                                               cases[k].tolerance, cases[k].hint);
+                      }});
 }
 
 } // namespace
 
-TEST_SUITE("lab3") {
-
-TEST_CASE("intersect: a ray through the centre hits the near side") {
-    expectHit("ray from the origin along +z", kSphere, Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 0.f, kInf, 2.f, 1e-5f,
-              "solve a t^2 + 2 b' t + c' = 0 with a = d.d, b' = (o - c).d, c' = |o - c|^2 - r^2; keep the smaller root");
+void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    const Ray alongZ{{0., 0., 0.}, {0., 0., 1.}};
+    {
+        const char* hint =
+            "solve a t^2 + 2 b' t + c' = 0 with a = d.d, b' = (o - c).d, c' = |o - c|^2 - r^2; keep the smaller root";
+        const Sphere s = drawnSphere(random);
+        const Ray r = rayTowards(random, s, 0.);
+        addIntersect(checks, "intersect: a ray through the centre hits the near side",
+                     {{"ray from the origin along +z", kSphere, alongZ, 0., kInf, 2., 1e-5, hint},
+                      {"ray from " + show(r.origin) + " towards the centre of the " + describe(s), s, r, 0., kInf,
+                       *nearestHit(s, r), 1e-4, hint}});
+    }
+    {
+        const char* hint = "a negative discriminant means no real root: return false";
+        const Sphere s = drawnSphere(random);
+        const Ray r = rayTowards(random, s, random.uniform(1.1, 3.));
+        addIntersect(
+            checks, "intersect: a ray beside the sphere misses",
+            {{"ray from (2, 0, 0) along +z", kSphere, {{2., 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
+             {"ray from " + show(r.origin) + " passing beside the " + describe(s), s, r, 0., kInf, -1., 0., hint}});
+    }
+    {
+        // Integer coordinates: the tangent's discriminant is exactly 0 in float too.
+        const char* hint = "a zero discriminant is a (double) root: test disc < 0 for a miss, not disc <= 0";
+        const Sphere s{{double(random.integer(-5, 5)), double(random.integer(-5, 5)), double(random.integer(-5, 5))},
+                       double(random.integer(1, 3))};
+        const double k = random.integer(int(s.radius) + 1, 10);
+        const Ray r{s.centre + glm::dvec3(s.radius, 0., -k), {0., 0., 1.}};
+        addIntersect(checks, "intersect: a tangent ray touches the sphere",
+                     {{"ray from (1, 0, 0) along +z, tangent at (1, 0, 3)",
+                       kSphere,
+                       {{1., 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       3.,
+                       1e-4,
+                       hint},
+                      {"ray from " + show(r.origin) + " along +z, tangent to the " + describe(s), s, r, 0., kInf, k,
+                       1e-4, hint}});
+    }
+    {
+        const char* hint = "when the smaller root is below tMin, take the larger one if it is in [tMin, tMax]";
+        const Sphere s = drawnSphere(random);
+        const Ray r{s.centre, CaseRandom::asFloat(random.unitVector())};
+        addIntersect(checks, "intersect: from inside the sphere the far root is the hit",
+                     {{"ray from the centre (0, 0, 3) along +z",
+                       kSphere,
+                       {{0., 0., 3.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       1.,
+                       1e-5,
+                       hint},
+                      {"ray from the centre of the " + describe(s) + " along " + show(r.direction), s, r, 0., kInf,
+                       *nearestHit(s, r), 1e-5, hint}});
+    }
+    {
+        const char* hint = "both roots are negative: a ray is a half-line, it sees nothing behind its origin";
+        const Sphere s = drawnSphere(random);
+        const glm::dvec3 d = CaseRandom::asFloat(random.unitVector());
+        const Ray r{CaseRandom::asFloat(s.centre + d * (s.radius * random.uniform(1.5, 5.))), d};
+        addIntersect(checks, "intersect: a sphere behind the ray is not hit",
+                     {{"ray from (0, 0, 5) along +z, sphere behind",
+                       kSphere,
+                       {{0., 0., 5.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       -1.,
+                       0.,
+                       hint},
+                      {"ray from " + show(r.origin) + " along " + show(d) + ", the " + describe(s) + " behind", s, r,
+                       0., kInf, -1., 0., hint}});
+    }
+    addIntersect(
+        checks, "intersect: tMin and tMax bound the hit",
+        {{"tMax = 1.5, before the sphere", kSphere, alongZ, 0., 1.5, -1., 0., "a root beyond tMax does not count"},
+         {"tMin = 2.5, past the near side", kSphere, alongZ, 2.5, kInf, 4., 1e-5,
+          "a root below tMin does not count: try the far root"}});
+    {
+        const char* hint = "keep a = d.d in the quadratic: t is then in units of |d|, and ray.at(t) is the same point";
+        const double scale = CaseRandom::asFloat(random.uniform(0.3, 5.));
+        addIntersect(
+            checks, "intersect: a direction that is not unit length",
+            {{"ray from the origin along (0, 0, 2)", kSphere, {{0., 0., 0.}, {0., 0., 2.}}, 0., kInf, 1., 1e-5, hint},
+             {"ray from the origin along (0, 0, " + show(scale) + ")",
+              kSphere,
+              {{0., 0., 0.}, {0., 0., scale}},
+              0.,
+              kInf,
+              2. / scale,
+              1e-5,
+              hint}});
+    }
+    {
+        const Sphere far{{0., 0., 1000.}, 1.};
+        const double offset = CaseRandom::asFloat(random.uniform(0., 0.9));
+        const char* hint =
+            "b'^2 - c' subtracts two numbers near 10^6 and loses digits: the handout's stable form avoids it";
+        addIntersect(checks, "intersect: a sphere 1000 radii away",
+                     {{"ray at 0.5 radius from the centre line",
+                       far,
+                       {{0.5, 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       1000. - std::sqrt(0.75),
+                       2e-3,
+                       hint},
+                      {"ray at " + show(offset) + " radius from the centre line",
+                       far,
+                       {{offset, 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       1000. - std::sqrt(1. - offset * offset),
+                       2e-3,
+                       hint},
+                      {"ray at 1.5 radii from the centre line",
+                       far,
+                       {{1.5, 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       -1.,
+                       0.,
+                       "a ray that passes at 1.5 radii misses, however far the sphere is"}});
+    }
+    {
+        const Sphere far{{0., 0., 10000.}, 1.};
+        const char* hint = "at 10^4 radii the textbook discriminant b'^2 - c' is lost to rounding; compute it as "
+                           "r^2 - |oc - (oc.d / d.d) d|^2 (Ray Tracing Gems, chapter 7; see the handout)";
+        addIntersect(
+            checks, "intersect: a sphere 10000 radii away keeps its silhouette",
+            {{"ray at 1.1 radii from the centre line", far, {{1.1, 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
+             {"ray at 0.9 radius from the centre line",
+              far,
+              {{0.9, 0., 0.}, {0., 0., 1.}},
+              0.,
+              kInf,
+              10000. - std::sqrt(0.19),
+              0.02,
+              hint}});
+    }
+    {
+        const Sphere big{{1., 2., 3.}, 2.}, drawn = drawnSphere(random);
+        const glm::dvec3 n = random.unitVector(), point = CaseRandom::asFloat(drawn.centre + n * drawn.radius);
+        const std::vector<std::pair<Sphere, glm::dvec3>> cases{
+            {kSphere, {0., 0., 2.}}, {big, {1., 2., 5.}}, {drawn, point}};
+        std::vector<protocol::Call> calls;
+        for (const auto& [s, p] : cases) {
+            std::vector<double> in;
+            appendInputs(in, s.centre);
+            in.push_back(s.radius);
+            appendInputs(in, p);
+            calls.push_back({Probe::ComputeNormal, in});
+        }
+        checks.push_back(
+            {3, "computeNormal: unit and pointing outwards", calls, [cases](const auto& out, Judge& judge) {
+                 judge.expectNear("normal at (0, 0, 2)", Outputs(out[0]).vec3(), {0., 0., -1.}, 1e-6,
+                                  "n = (p - centre) / radius: it points from the centre outwards");
+                 judge.expectNear("normal at (1, 2, 5) of a sphere of radius 2", Outputs(out[1]).vec3(), {0., 0., 1.},
+                                  1e-6, "divide by the radius so the normal has length 1");
+                 const auto& [s, p] = cases[2];
+                 judge.expectNear("normal at " + show(p) + " of the " + describe(s), Outputs(out[2]).vec3(),
+                                  (p - s.centre) / s.radius, 1e-5,
+                                  "n = (p - centre) / radius: unit, from the centre outwards");
+             }});
+    }
+    const Sphere drawn = drawnSphere(random);
+    const glm::dvec3 colour = CaseRandom::asFloat(random.vec3(0.1, 1.)),
+                     background = CaseRandom::asFloat(random.vec3(0., 1.));
+    const Ray hitting = rayTowards(random, drawn, random.uniform(0., 0.8)),
+              missing = rayTowards(random, drawn, random.uniform(1.2, 3.));
+    const std::string drawnScene = " (the " + describe(drawn) + ", colour " + show(colour) + ")";
+    {
+        const char* hitHint = "on a hit return hit.object->color()";
+        const char* missHint = "a ray that hits nothing sees scene.background";
+        addLi(checks, "Li: flat shading sees the sphere's colour or the background",
+              {{"flat, ray along +z", kFlat, kSphere, kBlue, kGrey, alongZ, 1e-6, hitHint},
+               {"flat, ray along +x (a miss)",
+                kFlat,
+                kSphere,
+                kBlue,
+                kGrey,
+                {{0., 0., 0.}, {1., 0., 0.}},
+                1e-6,
+                missHint},
+               {"flat, a ray that hits" + drawnScene, kFlat, drawn, colour, background, hitting, 1e-6, hitHint},
+               {"flat, a ray that misses" + drawnScene, kFlat, drawn, colour, background, missing, 1e-6, missHint}});
+    }
+    {
+        const char* hint =
+            "colour * max(-dot(d, n), 0) with the true normal: the dot product is the cosine itself, no gamma";
+        // From (0.6, 0, 0) along +z: the hit is (0.6, 0, 2.2), n = (0.6, 0, -0.8), -d.n = 0.8.
+        addLi(checks, "Li: cosine shading is colour times the cosine -d.n",
+              {{"cosine, ray along +z (facing)", kCosine, kSphere, kBlue, kGrey, alongZ, 1e-5,
+                "-d.n = 1 where the ray meets the surface head on"},
+               {"cosine, ray from (0.6, 0, 0) along +z",
+                kCosine,
+                kSphere,
+                kBlue,
+                kGrey,
+                {{0.6, 0., 0.}, {0., 0., 1.}},
+                1e-5,
+                hint},
+               {"cosine, a ray from " + show(hitting.origin) + drawnScene, kCosine, drawn, colour, background, hitting,
+                1e-4, hint}});
+    }
+    addLi(checks, "Li: the placeholder normal faces the ray",
+          {{"placeholder normal, ray along +z", kPlaceholder, kSphere, kBlue, kGrey, alongZ, 1e-5,
+            "n = normalize(1, 1, 1), turned to -n when d.n > 0; the colour is colour * max(-d.n, 0)"},
+           {"placeholder normal, a ray from " + show(hitting.origin) + drawnScene, kPlaceholder, drawn, colour,
+            background, hitting, 1e-5,
+            "n = normalize(1, 1, 1), turned to -n when d.n > 0; the colour is colour * max(-d.n, 0)"}});
 }
 
-TEST_CASE("intersect: a ray beside the sphere misses") {
-    expectMiss("ray from (2, 0, 0) along +z", kSphere, Ray{{2.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 0.f, kInf,
-               "a negative discriminant means no real root: return false");
-}
-
-TEST_CASE("intersect: a tangent ray touches the sphere") {
-    expectHit("ray from (1, 0, 0) along +z, tangent at (1, 0, 3)", kSphere, Ray{{1.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 0.f,
-              kInf, 3.f, 1e-4f, "a zero discriminant is a (double) root: test disc < 0 for a miss, not disc <= 0");
-}
-
-TEST_CASE("intersect: from inside the sphere the far root is the hit") {
-    expectHit("ray from the centre (0, 0, 3) along +z", kSphere, Ray{{0.f, 0.f, 3.f}, {0.f, 0.f, 1.f}}, 0.f, kInf, 1.f,
-              1e-5f, "when the smaller root is below tMin, take the larger one if it is in [tMin, tMax]");
-}
-
-TEST_CASE("intersect: a sphere behind the ray is not hit") {
-    expectMiss("ray from (0, 0, 5) along +z, sphere behind", kSphere, Ray{{0.f, 0.f, 5.f}, {0.f, 0.f, 1.f}}, 0.f, kInf,
-               "both roots are negative: a ray is a half-line, it sees nothing behind its origin");
-}
-
-TEST_CASE("intersect: tMin and tMax bound the hit") {
-    const Ray ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}};
-    expectMiss("tMax = 1.5, before the sphere", kSphere, ray, 0.f, 1.5f, "a root beyond tMax does not count");
-    expectHit("tMin = 2.5, past the near side", kSphere, ray, 2.5f, kInf, 4.f, 1e-5f,
-              "a root below tMin does not count: try the far root");
-}
-
-TEST_CASE("intersect: a direction that is not unit length") {
-    expectHit("ray from the origin along (0, 0, 2)", kSphere, Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 2.f}}, 0.f, kInf, 1.f,
-              1e-5f, "keep a = d.d in the quadratic: t is then in units of |d|, and ray.at(t) is the same point");
-}
-
-TEST_CASE("intersect: a sphere 1000 radii away") {
-    const SphereGeometry far(glm::vec3(0.f, 0.f, 1000.f), 1.f, Color(1.f));
-    expectHit("ray at 0.5 radius from the centre line", far, Ray{{0.5f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 0.f, kInf,
-              1000.f - std::sqrt(0.75f), 2e-3f,
-              "b'^2 - c' subtracts two numbers near 10^6 and loses digits: the handout's stable form avoids it");
-    expectMiss("ray at 1.5 radii from the centre line", far, Ray{{1.5f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 0.f, kInf,
-               "a ray that passes at 1.5 radii misses, however far the sphere is");
-}
-
-TEST_CASE("intersect: a sphere 10000 radii away keeps its silhouette") {
-    const SphereGeometry far(glm::vec3(0.f, 0.f, 10000.f), 1.f, Color(1.f));
-    const char* hint = "at 10^4 radii the textbook discriminant b'^2 - c' is lost to rounding; compute it as "
-                       "r^2 - |oc - (oc.d / d.d) d|^2 (Ray Tracing Gems, chapter 7; see the handout)";
-    expectMiss("ray at 1.1 radii from the centre line", far, Ray{{1.1f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 0.f, kInf, hint);
-    expectHit("ray at 0.9 radius from the centre line", far, Ray{{0.9f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 0.f, kInf,
-              10000.f - std::sqrt(0.19f), 0.02f, hint);
-}
-
-TEST_CASE("computeNormal: unit and pointing outwards") {
-    expectNear("normal at (0, 0, 2)", kSphere.computeNormal({0.f, 0.f, 2.f}), glm::vec3(0.f, 0.f, -1.f), 1e-6f,
-               "n = (p - centre) / radius: it points from the centre outwards");
-    const SphereGeometry big(glm::vec3(1.f, 2.f, 3.f), 2.f, Color(1.f));
-    expectNear("normal at (1, 2, 5) of a sphere of radius 2", big.computeNormal({1.f, 2.f, 5.f}),
-               glm::vec3(0.f, 0.f, 1.f), 1e-6f, "divide by the radius so the normal has length 1");
-}
-
-TEST_CASE("Li: flat shading sees the sphere's colour or the background") {
-    const Scene scene = makeTp1Scene();
-    const RayCastIntegrator flat(Shading::Flat);
-    expectNear("flat, ray along +z", flat.Li(scene, Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}), Color(0.f, 0.f, 1.f), 1e-6f,
-               "on a hit return hit.object->color()");
-    expectNear("flat, ray along +x (a miss)", flat.Li(scene, Ray{{0.f, 0.f, 0.f}, {1.f, 0.f, 0.f}}), scene.background,
-               1e-6f, "a ray that hits nothing sees scene.background");
-}
-
-TEST_CASE("Li: cosine shading is colour times the cosine -d.n") {
-    const Scene scene = makeTp1Scene();
-    const RayCastIntegrator cosine(Shading::Cosine);
-    expectNear("cosine, ray along +z (facing)", cosine.Li(scene, Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}),
-               Color(0.f, 0.f, 1.f), 1e-5f, "-d.n = 1 where the ray meets the surface head on");
-    // From (0.6, 0, 0) along +z: the hit is (0.6, 0, 2.2), n = (0.6, 0, -0.8), -d.n = 0.8.
-    expectNear("cosine, ray from (0.6, 0, 0) along +z", cosine.Li(scene, Ray{{0.6f, 0.f, 0.f}, {0.f, 0.f, 1.f}}),
-               Color(0.f, 0.f, 0.8f), 1e-5f,
-               "colour * max(-dot(d, n), 0) with the true normal: the dot product is the cosine itself, no gamma");
-}
-
-TEST_CASE("Li: the placeholder normal faces the ray") {
-    const Scene scene = makeTp1Scene();
-    const RayCastIntegrator placeholder(Shading::PlaceholderNormal);
-    const float expected = 1.f / std::sqrt(3.f);
-    expectNear("placeholder normal, ray along +z", placeholder.Li(scene, Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}),
-               Color(0.f, 0.f, expected), 1e-5f,
-               "n = normalize(1, 1, 1), turned to -n when d.n > 0; the colour is colour * max(-d.n, 0)");
-}
-
-} // TEST_SUITE
+} // namespace raylab::grader

@@ -1,102 +1,116 @@
 // Lab 5's function checks: the sample count and the average, with a camera that counts its rays
-// (no image metric can tell 4 stratified samples from 16 random ones; counting can).
-#include "checks/check_support.h"
+// (no image metric can tell 4 stratified samples from 16 random ones; counting can), on the
+// handout's pixels and on pixels, counts and seeds drawn at grading time.
+#include "grader/checks/checks.h"
 
-#include "raylab/renderer.h"
-
-#include <atomic>
-#include <mutex>
 #include <set>
-#include <stdexcept>
 #include <utility>
 
-using namespace raylab;
-using namespace raylab::checks;
+namespace raylab::grader {
 
 namespace {
 
-// Records every screen point it is asked for; its rays carry (sx, sy) in the direction.
-class RecordingCamera final : public BaseCamera {
-public:
-    RecordingCamera(int w, int h) : BaseCamera(w, h) {}
-    Ray generateRay(float sx, float sy) const override {
-        std::lock_guard lock(m_mutex);
-        points.emplace_back(sx, sy);
-        return Ray{{0.f, 0.f, 0.f}, {sx, sy, 1.f}};
+using protocol::Probe;
+
+struct Pixel {
+    int width, height, i, j, samples;
+    std::uint64_t seed;
+    protocol::Call call() const {
+        return {Probe::RenderPixel,
+                {double(width), double(height), double(i), double(j), double(samples), double(seed)}};
     }
-    mutable std::vector<std::pair<float, float>> points;
-
-private:
-    mutable std::mutex m_mutex;
+    std::string name() const {
+        return "pixel (" + std::to_string(i) + ", " + std::to_string(j) + ") with " + std::to_string(samples) +
+               " samples";
+    }
 };
 
-// The colour is the screen point itself: the average is the mean of the points asked for.
-class PointIntegrator final : public Integrator {
-public:
-    Color Li(const Scene&, const Ray& ray) const override { return Color(ray.direction.x, ray.direction.y, 1.f); }
+// What the RenderPixel probe returns: the colour and every screen point asked for.
+struct Rendered {
+    glm::dvec3 colour;
+    std::vector<std::pair<double, double>> points;
+    explicit Rendered(const std::vector<double>& out) {
+        Outputs o(out);
+        const auto count = std::size_t(o.number());
+        colour = o.vec3();
+        for (std::size_t k = 0; k < count; ++k) {
+            const double sx = o.number();
+            points.emplace_back(sx, o.number());
+        }
+    }
 };
+
+void judgePixel(Judge& judge, const Pixel& p, const Rendered& r) {
+    const std::string what = p.name();
+    if (!judge.expectTrue(what + ": rays traced", r.points.size() == std::size_t(p.samples), std::to_string(p.samples),
+                          std::to_string(r.points.size()), "trace exactly one ray per sample"))
+        return;
+    glm::dvec3 mean(0.);
+    for (const auto& [sx, sy] : r.points)
+        mean += glm::dvec3(sx, sy, 1.);
+    mean /= double(p.samples);
+    judge.expectNear(what + ": the colour", r.colour, mean, 1e-5,
+                     "return the sum of the samples divided by the number of samples (blue is 1 for every sample)");
+    bool inside = true;
+    for (const auto& [sx, sy] : r.points)
+        inside = inside && sx >= double(p.i) / p.width && sx <= double(p.i + 1) / p.width &&
+                 sy >= double(p.j) / p.height && sy <= double(p.j + 1) / p.height;
+    judge.expectTrue(what + ": screen points", inside, "every (sx, sy) inside the pixel", "a point outside it",
+                     "sx = (i + offset.x) / W, sy = (j + offset.y) / H");
+}
 
 } // namespace
 
-TEST_SUITE("lab5") {
+void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    const int drawnCount = random.integer(2, 64);
+    checks.push_back({5,
+                      "setNbPixelSamples: stores N and refuses fewer than 1",
+                      {{Probe::SetSamples, {9.}},
+                       {Probe::SetSamples, {double(drawnCount)}},
+                       {Probe::SetSamples, {0.}},
+                       {Probe::SetSamples, {-3.}}},
+                      [drawnCount](const auto& out, Judge& judge) {
+                          for (const auto& [k, n] : {std::pair{0, 9}, std::pair{1, drawnCount}})
+                              judge.expectTrue("nbPixelSamples() after setNbPixelSamples(" + std::to_string(n) + ")",
+                                               out[k][0] == 0. && out[k][1] == n, std::to_string(n),
+                                               out[k][0] != 0. ? "std::invalid_argument" : show(out[k][1]),
+                                               "store the count in m_nbPixelSamples");
+                          for (const auto& [k, n] : {std::pair{2, 0}, std::pair{3, -3}})
+                              judge.expectTrue("setNbPixelSamples(" + std::to_string(n) + ")", out[k][0] == 1.,
+                                               "std::invalid_argument", "no exception",
+                                               "fewer than 1 sample has no meaning: throw std::invalid_argument");
+                      }});
 
-TEST_CASE("setNbPixelSamples: stores N and refuses fewer than 1") {
-    const Scene scene;
-    const RecordingCamera camera(4, 4);
-    const PointIntegrator integrator;
-    Renderer renderer(scene, camera, integrator);
-    renderer.setNbPixelSamples(9);
-    expectTrue("nbPixelSamples() after setNbPixelSamples(9)", renderer.nbPixelSamples() == 9, "9",
-               std::to_string(renderer.nbPixelSamples()), "store the count in m_nbPixelSamples");
-    for (int bad : {0, -3}) {
-        bool refused = false;
-        try {
-            renderer.setNbPixelSamples(bad);
-        } catch (const std::invalid_argument&) {
-            refused = true;
-        }
-        expectTrue("setNbPixelSamples(" + std::to_string(bad) + ")", refused, "std::invalid_argument",
-                   "no exception", "fewer than 1 sample has no meaning: throw std::invalid_argument");
-    }
+    std::vector<Pixel> pixels{{8, 4, 3, 2, 1, 7}, {8, 4, 3, 2, 5, 7}, {8, 4, 3, 2, 16, 7}};
+    const int width = random.integer(2, 64), height = random.integer(2, 64);
+    pixels.push_back({width, height, random.integer(0, width - 1), random.integer(0, height - 1), random.integer(2, 32),
+                      std::uint64_t(random.integer(0, 1 << 30))});
+    std::vector<protocol::Call> calls;
+    for (const Pixel& p : pixels)
+        calls.push_back(p.call());
+    checks.push_back({5, "renderPixel: N rays and their average", calls, [pixels](const auto& out, Judge& judge) {
+                          for (std::size_t k = 0; k < pixels.size(); ++k)
+                              judgePixel(judge, pixels[k], Rendered(out[k]));
+                      }});
+
+    const std::vector<Pixel> distinct{{8, 8, 1, 1, 8, 3},
+                                      {16, 16, random.integer(0, 15), random.integer(0, 15), random.integer(4, 16),
+                                       std::uint64_t(random.integer(0, 1 << 30))}};
+    calls.clear();
+    for (const Pixel& p : distinct)
+        calls.push_back(p.call());
+    checks.push_back({5, "renderPixel: each sample takes its own offset from the sampler", calls,
+                      [distinct](const auto& out, Judge& judge) {
+                          for (std::size_t k = 0; k < distinct.size(); ++k) {
+                              const Rendered r(out[k]);
+                              const std::set<std::pair<double, double>> points(r.points.begin(), r.points.end());
+                              judge.expectTrue("distinct screen points among " + std::to_string(distinct[k].samples) +
+                                                   " samples of " + distinct[k].name(),
+                                               points.size() == std::size_t(distinct[k].samples),
+                                               std::to_string(distinct[k].samples), std::to_string(points.size()),
+                                               "call sampler.next2D() once per sample, inside the loop");
+                          }
+                      }});
 }
 
-TEST_CASE("renderPixel: N rays and their average") {
-    const Scene scene;
-    const RecordingCamera camera(8, 4);
-    const PointIntegrator integrator;
-    Renderer renderer(scene, camera, integrator);
-    for (int n : {1, 5, 16}) {
-        renderer.setNbPixelSamples(n);
-        camera.points.clear();
-        PixelSampler sampler(SamplerKind::Random, n, 7, 3, 2, 8);
-        const Color got = renderer.renderPixel(3, 2, sampler);
-        const std::string what = "pixel (3, 2) with " + std::to_string(n) + " samples";
-        if (!expectTrue(what + ": rays traced", camera.points.size() == std::size_t(n), std::to_string(n),
-                        std::to_string(camera.points.size()), "trace exactly one ray per sample"))
-            continue;
-        Color mean(0.f);
-        for (const auto& [sx, sy] : camera.points) mean += Color(sx, sy, 1.f);
-        mean /= float(n);
-        expectNear(what + ": the colour", got, mean, 1e-5f,
-                   "return the sum of the samples divided by the number of samples (blue is 1 for every sample)");
-        bool inside = true;
-        for (const auto& [sx, sy] : camera.points) inside = inside && sx >= 3.f / 8.f && sx <= 4.f / 8.f && sy >= 2.f / 4.f && sy <= 3.f / 4.f;
-        expectTrue(what + ": screen points", inside, "every (sx, sy) inside the pixel", "a point outside it",
-                   "sx = (i + offset.x) / W, sy = (j + offset.y) / H");
-    }
-}
-
-TEST_CASE("renderPixel: each sample takes its own offset from the sampler") {
-    const Scene scene;
-    const RecordingCamera camera(8, 8);
-    const PointIntegrator integrator;
-    Renderer renderer(scene, camera, integrator);
-    renderer.setNbPixelSamples(8);
-    PixelSampler sampler(SamplerKind::Random, 8, 3, 1, 1, 8);
-    renderer.renderPixel(1, 1, sampler);
-    const std::set<std::pair<float, float>> distinct(camera.points.begin(), camera.points.end());
-    expectTrue("distinct screen points among 8 samples", distinct.size() == 8, "8", std::to_string(distinct.size()),
-               "call sampler.next2D() once per sample, inside the loop");
-}
-
-} // TEST_SUITE
+} // namespace raylab::grader

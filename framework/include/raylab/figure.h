@@ -5,6 +5,7 @@
 #include "raylab/render_space.h"
 #include "raylab/renderer.h"
 #include "raylab/scene_file.h"
+#include "raylab/todo.h"
 
 #include <memory>
 #include <optional>
@@ -51,6 +52,7 @@ struct FigureResult {
     };
     Status status = Status::Failed;
     std::string message;
+    std::optional<NotDoneYet> todo; // NotDoneYet: the stub that was reached
     std::optional<Texture> image;
     RenderStats stats;
 };

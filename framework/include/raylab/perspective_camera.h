@@ -12,6 +12,9 @@ public:
     // Throws std::invalid_argument when a size or fovy has no meaning.
     PerspectiveCamera(int width, int height, float fovyDegrees = 60.f);
 
+    // The default camera's frame moved to `position` (no lookAt needed: lab 2's code alone).
+    PerspectiveCamera(int width, int height, const glm::vec3& position, float fovyDegrees);
+
     // Lab 4: a camera at `position` looking at `target`, `up` giving the vertical.
     PerspectiveCamera(int width, int height, const glm::vec3& position, const glm::vec3& target,
                       const glm::vec3& up, float fovyDegrees = 60.f);

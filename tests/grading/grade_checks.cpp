@@ -1,0 +1,54 @@
+// The function checks see what the figures cannot: lookAt mistakes that only show when `up` is not
+// perpendicular to the view direction, and a viewport left stale by the lookAt constructor (the
+// reference generateRay never reads it, so the figures pass).
+#include "grading_support.h"
+
+using namespace raylab::test;
+
+namespace {
+
+const CheckOutcome& check(const GradeResult& r, const std::string& name) {
+    const CheckOutcome* c = findCheck(r, name);
+    REQUIRE_MESSAGE(c, name);
+    return *c;
+}
+
+} // namespace
+
+TEST_SUITE("checks") {
+
+    TEST_CASE("lookAt: v = up and an unnormalized u fail on an oblique up, and only there") {
+        for (const auto& [id, field] : {std::pair{"v_is_up", ": v:"}, std::pair{"u_not_normalized", ": u:"}}) {
+            CAPTURE(id);
+            const GradeResult r = gradeAgent(courseSetup(), std::string("raylab-bad-") + id);
+            const CheckOutcome& basis = check(r, "lookAt: the basis of the handout's four cameras");
+            CHECK_FALSE(basis.passed);
+            CHECK_MESSAGE(basis.message.find(std::string("not perpendicular to the view") + field) != std::string::npos,
+                          basis.message);
+            CHECK_MESSAGE(basis.message.find("camera (a)") == std::string::npos,
+                          basis.message); // the handout's cameras are right
+            CHECK(r.labs[2].points == r.labs[2].maxPoints);
+        }
+    }
+
+    TEST_CASE("lookAt: a viewport left stale by the constructor is caught, though every figure passes") {
+        const GradeResult r = gradeAgent(courseSetup(), "raylab-bad-stale_viewport");
+        const CheckOutcome& viewport = check(r, "lookAt: the viewport follows the new frame");
+        CHECK_FALSE(viewport.passed);
+        CHECK_MESSAGE(viewport.message.find("top-left corner") != std::string::npos, viewport.message);
+        CHECK_MESSAGE(viewport.message.find("call updateViewport()") != std::string::npos, viewport.message);
+        CHECK(check(r, "lookAt: the basis of the handout's four cameras").passed);
+        for (const char* id : {"lab4_a", "lab4_b", "lab4_c", "lab4_d"})
+            CHECK(findFigure(r, id)->passed);
+    }
+
+    TEST_CASE("lab 2's checks need no lab 4: with lab 4 a stub, lab 2 keeps every point") {
+        GradeSetup setup = courseSetup();
+        // raylab-agent-lab4: lab 4 from labs/ (the stub), every other lab from the reference; all labs graded.
+        const GradeResult r = gradeCode(setup, {{binDir() / "raylab-agent-lab4", 0}}, false);
+        fs::remove_all(setup.scratch);
+        CHECK_MESSAGE(r.labs[1].points == r.labs[1].maxPoints, failures(r));
+        CHECK(r.labs[3].points == 0.);
+    }
+
+} // TEST_SUITE
