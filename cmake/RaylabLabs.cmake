@@ -1,21 +1,69 @@
 # Each lab folder is a small object library, built once from labs/ (the student's code) and once
 # from solutions/ (the reference), when solutions/ is there. A program links one of each lab:
 # which one comes from where is a list of the labs taken from solutions/.
+#
+# The labs are found, not listed: every labs/lab*/lab.toml is a lab, whose `number` and `id` (its
+# folder's name) are read here. Sets RAYLAB_LAB_NUMBERS (sorted), RAYLAB_LAB_FOLDER_<n> and
+# RAYLAB_LABS (the folders, in the order of their numbers).
 
-set(RAYLAB_LABS lab1_first_image lab2_primary_rays lab3_sphere lab4_lookat_camera lab5_antialiasing)
 if(EXISTS ${CMAKE_SOURCE_DIR}/solutions)
   set(RAYLAB_HAVE_SOLUTIONS ON)
 else()
   set(RAYLAB_HAVE_SOLUTIONS OFF)
 endif()
 
-# raylab_lab_target(OUT N ORIGIN): the object library of lab N (1..5) from ORIGIN (labs or solutions).
+# raylab_read_lab_key(OUT FILE KEY REGEX): the value of FILE's top-level line `KEY = value` (the
+# lines before its first [table]; the figures' and checks' keys come after).
+function(raylab_read_lab_key out file key value_regex)
+  file(READ ${file} text)
+  string(REGEX REPLACE "\n\\[.*" "" top "${text}")
+  string(REGEX MATCHALL "(^|\n)${key}[ \t]*=[^\n]*" lines "${top}")
+  list(LENGTH lines count)
+  string(STRIP "${lines}" line)
+  if(NOT count EQUAL 1 OR NOT line MATCHES "^${key}[ \t]*=[ \t]*${value_regex}[ \t]*(#.*)?$")
+    message(FATAL_ERROR "${file}: expected one top-level line `${key} = ...` matching ${value_regex} (see docs/instructors.md)")
+  endif()
+  set(${out} ${CMAKE_MATCH_1} PARENT_SCOPE)
+endfunction()
+
+file(GLOB raylab_lab_files CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/labs/lab*/lab.toml)
+set(RAYLAB_LAB_NUMBERS "")
+foreach(file IN LISTS raylab_lab_files)
+  get_filename_component(folder_path ${file} DIRECTORY)
+  get_filename_component(folder ${folder_path} NAME)
+  raylab_read_lab_key(number ${file} number "([0-9]+)")
+  raylab_read_lab_key(id ${file} id "\"([^\"]+)\"")
+  if(NOT id STREQUAL folder OR NOT id MATCHES "^lab${number}_")
+    message(FATAL_ERROR "${file}: id = \"${id}\" must be the folder's name and begin with lab${number}_")
+  endif()
+  if(number IN_LIST RAYLAB_LAB_NUMBERS)
+    message(FATAL_ERROR "${file}: number = ${number} is also lab ${RAYLAB_LAB_FOLDER_${number}}'s")
+  endif()
+  list(APPEND RAYLAB_LAB_NUMBERS ${number})
+  set(RAYLAB_LAB_FOLDER_${number} ${folder})
+endforeach()
+if(NOT RAYLAB_LAB_NUMBERS)
+  message(FATAL_ERROR "no lab: there is no labs/lab*/lab.toml")
+endif()
+list(SORT RAYLAB_LAB_NUMBERS COMPARE NATURAL)
+set(RAYLAB_LABS "")
+foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
+  list(APPEND RAYLAB_LABS ${RAYLAB_LAB_FOLDER_${n}})
+endforeach()
+message(STATUS "raylab labs: ${RAYLAB_LABS}")
+
+# raylab_lab_target(OUT N ORIGIN): the object library of lab N from ORIGIN (labs or solutions).
 function(raylab_lab_target out n origin)
-  math(EXPR index "${n} - 1")
-  list(GET RAYLAB_LABS ${index} folder)
+  set(folder ${RAYLAB_LAB_FOLDER_${n}})
+  if(NOT folder)
+    message(FATAL_ERROR "there is no lab ${n} (the labs are ${RAYLAB_LAB_NUMBERS})")
+  endif()
   set(target raylab_lab${n}_${origin})
   if(NOT TARGET ${target})
     file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/${origin}/${folder}/*.cpp)
+    if(NOT sources)
+      message(FATAL_ERROR "${origin}/${folder} has no .cpp file")
+    endif()
     add_library(${target} OBJECT ${sources})
     target_link_libraries(${target} PUBLIC raylab_framework PRIVATE raylab_warnings)
     if(origin STREQUAL "labs")
@@ -26,12 +74,12 @@ function(raylab_lab_target out n origin)
   set(${out} ${target} PARENT_SCOPE)
 endfunction()
 
-# raylab_link_labs(TARGET REFERENCE_LABS): links the five labs, those listed from solutions/.
+# raylab_link_labs(TARGET REFERENCE_LABS): links every lab, those listed from solutions/.
 # Sets RAYLAB_LAB_ORIGINS on the target's compile definitions ("lab1=labs lab2=solutions ...").
 function(raylab_link_labs target)
   set(reference_labs ${ARGN})
   set(origins "")
-  foreach(n RANGE 1 5)
+  foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
     if(n IN_LIST reference_labs)
       if(NOT RAYLAB_HAVE_SOLUTIONS)
         message(FATAL_ERROR "${target}: lab ${n} is asked from solutions/, but this tree has no solutions/")

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <string>
 
 namespace raylab::cli {
@@ -24,6 +25,11 @@ struct Context {
     // (the student and the reference code define the same functions, so each has its own program).
     bool ranInOtherImpl();
 };
+
+// The course's data in the source tree this program was built from: the lab descriptions
+// (labs/<lab>/lab.toml) and the grader's references (made by `raylab references`).
+std::filesystem::path labsFolder();
+std::filesystem::path referencesFolder();
 
 // The `study` subcommand, made by whichever study registers first; each study adds its own under it.
 CLI::App* studyCommand(CLI::App& app);

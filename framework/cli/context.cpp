@@ -23,6 +23,12 @@ void Context::addImplOption(CLI::App* command) {
         ->check(CLI::IsMember({"student", "reference"}));
 }
 
+std::filesystem::path labsFolder() { return std::filesystem::path(build::kSourceDir) / "labs"; }
+
+std::filesystem::path referencesFolder() {
+    return std::filesystem::path(build::kSourceDir) / "framework/grader/data/references";
+}
+
 CLI::App* studyCommand(CLI::App& app) {
     try {
         return app.get_subcommand("study");

@@ -1,7 +1,9 @@
 // raylab distribute: writes the tree students receive: everything but the reference solutions and
 // what would give them away (the mistakes, valid variants and bad submissions of tests/ are patches
-// against the solutions, which show their lines). It builds, runs and self-grades on its own
-// (tests/references stay). tests/grading/distribute_ships_no_solution.cpp checks what it writes.
+// against the solutions, which show their lines). It builds, runs and self-grades on its own: the
+// labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's references
+// (framework/grader/data/references/) go with it. tests/grading/distribute_ships_no_solution.cpp
+// checks what it writes.
 #include "build_info.h"
 #include "commands.h"
 

@@ -24,13 +24,11 @@ namespace fs = std::filesystem;
 using namespace raylab::grader;
 
 struct GradeOptions {
-    std::string labs, images, report = "out/report", references, points, buildDir;
+    std::string labs, images, report = "out/report", references, buildDir;
     std::vector<std::string> agents; // expert: grade these agent programs (each runs every lab)
     double timeout = 180.;
     int lab = 0; // 0: every lab
 };
-
-fs::path sourcePath(const char* relative) { return fs::path(build::kSourceDir) / relative; }
 
 // A fresh folder of our own for the agents' files.
 fs::path scratchFolder(const std::string& what) {
@@ -40,10 +38,19 @@ fs::path scratchFolder(const std::string& what) {
     return folder;
 }
 
+std::string labList(const LabCatalog& catalog) {
+    std::string list = "the labs are";
+    for (int n : catalog.numbers()) list += " " + std::to_string(n);
+    return list;
+}
+
 GradeSetup setupFor(const GradeOptions& o, const Context& context, const fs::path& scratch) {
-    GradeSetup setup = loadGradeSetup(o.references.empty() ? sourcePath("tests/references") : fs::path(o.references),
-                                      o.points.empty() ? sourcePath("tests/grading/points.toml") : fs::path(o.points),
+    GradeSetup setup = loadGradeSetup(o.references.empty() ? referencesFolder() : fs::path(o.references), labsFolder(),
                                       context.scenes, scratch);
+    if (o.lab != 0 && setup.labs.lab(o.lab) == nullptr) {
+        fs::remove_all(scratch);
+        throw std::invalid_argument("--lab " + std::to_string(o.lab) + ": there is no such lab (" + labList(setup.labs) + ")");
+    }
     setup.limits.wallSeconds = o.timeout;
     setup.threads = context.threads;
     return setup;
@@ -82,13 +89,14 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
     } else if (!o.labs.empty()) {
         std::printf("building %s in %s ...\n", o.labs.c_str(), buildDir.string().c_str());
         std::fflush(stdout);
-        const SubmissionBuild b = buildSubmission(toolchain(), build::kSourceDir, submissionLabsFolder(o.labs), buildDir);
+        const SubmissionBuild b =
+            buildSubmission(toolchain(), build::kSourceDir, submissionLabsFolder(o.labs), buildDir, setup.labs.numbers());
         agents = b.agents;
         isolated = b.isolated;
         unbuilt = b.brokenLabs;
         message = b.compilerMessage;
     } else {
-        agents = findAgents(build::kBinaryDir, isolated);
+        agents = findAgents(build::kBinaryDir, setup.labs.numbers(), isolated);
         if (agents.empty())
             throw std::runtime_error(std::string("no grading agent in ") + build::kBinaryDir +
                                      "; build first: cmake --build build");
@@ -139,13 +147,18 @@ int gradeClass(const std::string& classDir, const std::string& outDir, GradeOpti
     fs::create_directories(out);
     const fs::path csv = out / "grades.csv";
     const std::set<std::string> done = gradedStudents(csv);
-    if (!fs::exists(csv)) std::ofstream(csv) << "student,lab1,lab2,lab3,lab4,lab5,total,max,problems\n";
+    const fs::path scratch = scratchFolder("class");
+    const GradeSetup setup = setupFor(o, context, scratch);
+    if (!fs::exists(csv)) {
+        std::ofstream header(csv);
+        header << "student";
+        for (const LabDescription& lab : setup.labs.labs) header << ",lab" << lab.number;
+        header << ",total,max,problems\n";
+    }
     std::vector<fs::path> students;
     for (const auto& entry : fs::directory_iterator(classDir))
         if (entry.is_directory()) students.push_back(entry.path());
     std::sort(students.begin(), students.end());
-    const fs::path scratch = scratchFolder("class");
-    const GradeSetup setup = setupFor(o, context, scratch);
     for (const fs::path& student : students) {
         const std::string name = student.filename().string();
         if (done.count(name)) {
@@ -180,8 +193,7 @@ int gradeClass(const std::string& classDir, const std::string& outDir, GradeOpti
 }
 
 void addCommonOptions(CLI::App* command, GradeOptions& o) {
-    command->add_option("--references", o.references, "the reference folder (default: tests/references)");
-    command->add_option("--points", o.points, "the points table (default: tests/grading/points.toml)");
+    command->add_option("--references", o.references, "the reference folder (default: framework/grader/data/references)");
     command->add_option("--timeout", o.timeout, "seconds a check or figure may run before it is stopped");
     command->add_option("--build-dir", o.buildDir, "where submissions are built");
 }
@@ -194,7 +206,7 @@ void addGradeCommands(CLI::App& app, Context& context) {
     grade->add_option("--labs", o->labs, "a submission: a copy of labs/ to build and grade")->check(CLI::ExistingDirectory);
     grade->add_option("--images", o->images, "grade pictures DIR/<figure id>.png, no code");
     grade->add_option("--report", o->report, "where the reports go (default: out/report)");
-    grade->add_option("--lab", o->lab, "grade this lab only (1 to 5)")->check(CLI::Range(1, 5));
+    grade->add_option("--lab", o->lab, "grade this lab only (its number)")->check(CLI::PositiveNumber);
     grade->add_option("--agent", o->agents, "expert: grade this agent program (all labs)")->group("");
     addCommonOptions(grade, *o);
     context.addRenderOptions(grade);

@@ -1,5 +1,5 @@
-// raylab references: renders the graded figures from solutions/ into tests/references/, with the
-// data the image checks need (docs/grading.md), and the mistakes' signatures.
+// raylab references: renders the graded figures from solutions/ into framework/grader/data/references/,
+// with the data the image checks need (docs/grading.md), and the mistakes' signatures.
 #include "build_info.h"
 #include "commands.h"
 
@@ -82,15 +82,15 @@ void addReferencesCommand(CLI::App& app, Context& context) {
     auto out = std::make_shared<std::string>();
     auto mistakes = std::make_shared<std::string>();
     CLI::App* references = app.add_subcommand(
-        "references", "instructors: render the reference data of every figure from solutions/ (tests/references)");
-    references->add_option("--out", *out, "the reference folder (default: tests/references)");
+        "references", "instructors: render the reference data of every figure from solutions/ (framework/grader/data/references)");
+    references->add_option("--out", *out, "the reference folder (default: framework/grader/data/references)");
     references->add_option("--mistakes", *mistakes,
                            "also render the mistakes' signatures with the raylab-mistake-* programs of this folder");
     context.addRenderOptions(references);
     references->callback([&context, out, mistakes] {
         context.impl = "reference";
         if (context.ranInOtherImpl()) return;
-        const fs::path folder = out->empty() ? fs::path(build::kSourceDir) / "tests/references" : fs::path(*out);
+        const fs::path folder = out->empty() ? referencesFolder() : fs::path(*out);
         context.exitStatus = makeReferences(folder, context.scenes, *mistakes, context.threads);
     });
 }

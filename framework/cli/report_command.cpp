@@ -17,7 +17,6 @@
 #include <cstdlib>
 #include <cstddef>
 #include <filesystem>
-#include <iterator>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -34,42 +33,11 @@ namespace {
 namespace fs = std::filesystem;
 using namespace raylab::grader;
 
-// The handout's figure numbers and captions (docs/figures/README.md).
-struct HandoutFigure {
-    const char* id;
-    const char* number;
-    const char* en;
-    const char* fr;
-};
-
-constexpr HandoutFigure kHandoutFigures[] = {
-    {"lab1_gradient", "1", "A red/green gradient: red i / (W - 1), green j / (H - 1)",
-     "Un dégradé rouge/vert : rouge i / (W - 1), vert j / (H - 1)"},
-    {"lab2_directions", "2", "The primary rays' directions d, drawn as (d + 1) / 2",
-     "Les directions d des rayons primaires, affichées comme (d + 1) / 2"},
-    {"lab3_flat", "3(a)", "The sphere's colour where a ray hits it", "La couleur de la sphère là où un rayon la touche"},
-    {"lab3_placeholder_normal", "3(b)", "Cosine shading with the constant normal normalize(1, 1, 1)",
-     "Ombrage en cosinus avec la normale constante normalize(1, 1, 1)"},
-    {"lab3_cosine", "3(c)", "Cosine shading: colour * max(-d·n, 0)", "Ombrage en cosinus : couleur * max(-d·n, 0)"},
-    {"lab4_a", "5(a)", "lookAt from (0, 0, -2) to (0, 0, 79)", "lookAt de (0, 0, -2) vers (0, 0, 79)"},
-    {"lab4_b", "5(b)", "lookAt from (1, 0, 0) to (1, 0, 1)", "lookAt de (1, 0, 0) vers (1, 0, 1)"},
-    {"lab4_c", "5(c)", "lookAt from (0, 1, 0) to (0, 1, 1)", "lookAt de (0, 1, 0) vers (0, 1, 1)"},
-    {"lab4_d", "5(d)", "lookAt from (4, -1, 0) to (-1, -1, 2)", "lookAt de (4, -1, 0) vers (-1, -1, 2)"},
-    {"lab5_antialiased", "6", "32 uniform random samples per pixel", "32 échantillons aléatoires uniformes par pixel"},
-};
-
-const HandoutFigure* handoutFigure(const std::string& id) {
-    for (const HandoutFigure& f : kHandoutFigures)
-        if (id == f.id) return &f;
-    return nullptr;
-}
-
 // The report's words, in English or French.
 struct Words {
     const char* title;
     const char* intro;
     const char* lab;
-    const char* labNames[5];
     const char* figure;
     const char* yours;
     const char* reference;
@@ -93,7 +61,6 @@ constexpr Words kEnglish{
     "the difference, with its render time and the grader's verdict. Write your own text in the sections "
     "marked \"Your text\".",
     "Lab",
-    {"First image", "Primary rays", "A sphere", "lookAt camera", "Antialiasing"},
     "Figure",
     "yours",
     "reference",
@@ -117,7 +84,6 @@ constexpr Words kFrench{
     "côté de la référence et d'une carte de la différence, avec son temps de rendu et le verdict du "
     "correcteur. Écrivez votre propre texte dans les sections « Votre texte ».",
     "TP",
-    {"Première image", "Rayons primaires", "Une sphère", "Caméra lookAt", "Anticrénelage"},
     "Figure",
     "la vôtre",
     "référence",
@@ -247,27 +213,31 @@ int runReport(const ReportOptions& o, const Context& context) {
         rendered.push_back(std::move(f));
     }
 
-    // In the handout's order (3(a), 3(b), 3(c) ...), the figures it does not number last.
-    const auto order = [](const RenderedFigure& f) {
-        const HandoutFigure* h = handoutFigure(f.id);
-        return h ? h - kHandoutFigures : std::ptrdiff_t(std::size(kHandoutFigures));
-    };
-    std::stable_sort(rendered.begin(), rendered.end(),
-                     [&](const RenderedFigure& a, const RenderedFigure& b) { return order(a) < order(b); });
-
     // 2. Grade the pictures: the grader's image checks, its report (heat maps) in DIR/grade/.
     std::random_device random;
     const fs::path scratch = fs::temp_directory_path() / ("raylab-report-" + std::to_string(random()));
     fs::create_directories(scratch);
-    const fs::path source = build::kSourceDir;
-    const GradeSetup setup = loadGradeSetup(source / "tests/references", source / "tests/grading/points.toml",
-                                            context.scenes, scratch);
+    const GradeSetup setup = loadGradeSetup(referencesFolder(), labsFolder(), context.scenes, scratch);
+    const LabCatalog& catalog = setup.labs;
     GradeResult result = gradeImages(setup, figures);
     result.title = "raylab report: the image checks of your figures";
     writeReports(result, setup.references, out / "grade");
     fs::remove_all(scratch);
     std::map<std::string, const FigureOutcome*> outcomes;
     for (const FigureOutcome& f : result.figures) outcomes[f.id] = &f;
+
+    // In the handout's order (the labs' descriptions: 3(a), 3(b), 3(c) ...), the figures it does not number last.
+    std::map<std::string, std::size_t> handoutOrder;
+    for (const LabDescription& lab : catalog.labs)
+        for (const LabFigure& f : lab.figures) handoutOrder.emplace(f.id, handoutOrder.size());
+    const auto order = [&](const RenderedFigure& f) {
+        const auto it = handoutOrder.find(f.id);
+        return it != handoutOrder.end() ? it->second : handoutOrder.size();
+    };
+    std::stable_sort(rendered.begin(), rendered.end(),
+                     [&](const RenderedFigure& a, const RenderedFigure& b) { return order(a) < order(b); });
+    // The antialiasing comparison closes the section of the lab that draws the antialiased figure.
+    const LabDescription* comparisonLab = catalog.figure("lab3_cosine") ? catalog.labOfFigure("lab5_antialiased") : nullptr;
 
     // 3. The pages.
     Page page;
@@ -301,16 +271,19 @@ int runReport(const ReportOptions& o, const Context& context) {
          << escape(w.fullReport) << "</a></p>\n";
     md << "[" << w.fullReport << "](grade/index.html)\n\n";
 
-    for (int lab = 1; lab <= 5; ++lab) {
-        const std::string labTitle = std::string(w.lab) + " " + std::to_string(lab) + w.colon + w.labNames[lab - 1];
+    for (const LabOutcome& points : result.labs) {
+        const int lab = points.lab;
+        const LabDescription* description = catalog.lab(lab);
+        const std::string labTitle =
+            std::string(w.lab) + " " + std::to_string(lab) + (description ? w.colon + description->title(o.lang) : "");
         md << "## " << labTitle << "\n\n";
         html << "<section id=\"lab" << lab << "\"><h2>" << escape(labTitle) << "</h2>\n";
         std::string lines;
         for (const RenderedFigure& f : rendered) {
             if (f.lab != lab) continue;
-            const HandoutFigure* h = handoutFigure(f.id);
-            const std::string number = h ? h->number : "-";
-            const std::string caption = h ? (o.lang == "fr" ? h->fr : h->en) : "";
+            const LabFigure* h = catalog.figure(f.id);
+            const std::string number = h ? h->handout : "-";
+            const std::string caption = h ? h->caption(o.lang) : "";
             const std::string heading = std::string(w.figure) + " " + number + " (" + f.id + ")";
             md << "### " << heading << "\n\n" << caption << "\n\n";
             html << "<h3 id=\"" << escape(f.id) << "\">" << escape(heading) << "</h3>\n<p>" << escape(caption) << "</p>\n";
@@ -346,7 +319,7 @@ int runReport(const ReportOptions& o, const Context& context) {
             if (f.rendered) html << "<p>" << escape(w.renderTime) << ": " << seconds(f.seconds) << "</p>\n";
             if (g) lines += gradeLine(*g) + "\n";
         }
-        if (lab == 5) { // the antialiasing comparison: figure 3(c) against figure 6, and a close-up
+        if (description != nullptr && description == comparisonLab) { // the antialiasing comparison: figure 3(c) against figure 6, and a close-up
             md << "### " << w.comparison << "\n\n" << w.comparisonIntro << "\n\n";
             html << "<h3 id=\"antialiasing-comparison\">" << escape(w.comparison) << "</h3>\n<p>"
                  << escape(w.comparisonIntro) << "</p>\n";
@@ -377,7 +350,6 @@ int runReport(const ReportOptions& o, const Context& context) {
             md << "\n" << zoomRow << "\n\n" << w.zoom << "\n\n";
             html << "\n<p>" << escape(w.zoom) << "</p>\n";
         }
-        const LabOutcome& points = result.labs[std::size_t(lab - 1)];
         lines += "lab " + std::to_string(lab) + ": " + pointsText(points.points) + " / " + pointsText(points.maxPoints) +
                  " points (figures)\n";
         md << "### " << w.gradeLines << "\n\n```text\n" << lines << "```\n\n";

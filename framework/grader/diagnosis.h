@@ -1,7 +1,7 @@
 #pragma once
-// The catalogue of classic mistakes (tests/references/mistakes.toml) and their signatures: each
+// The catalogue of classic mistakes (framework/grader/data/references/mistakes.toml) and their signatures: each
 // mistake's rendering of the figures it changes, a quarter of the size
-// (tests/references/mistakes/<mistake>/<figure>.png). A failing image is matched against them.
+// (framework/grader/data/references/mistakes/<mistake>/<figure>.png). A failing image is matched against them.
 
 #include "raylab/image_io.h"
 
@@ -15,7 +15,7 @@ namespace raylab::grader {
 inline constexpr int kSignatureScale = 4; // signatures are averaged over 4 x 4 pixel blocks
 
 struct Mistake {
-    std::string id;    // its patch tests/mistakes/<id>.patch, its folder in tests/references/mistakes/
+    std::string id;    // its patch tests/mistakes/<id>.patch, its folder in framework/grader/data/references/mistakes/
     std::string name;  // "fovy not halved"
     std::string hint;  // "use tan(fovy / 2): fovy is the full angle"
     int lab = 0;       // the lab whose file holds the mistake

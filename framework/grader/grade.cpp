@@ -19,8 +19,6 @@ namespace {
 constexpr double kDefaultCheckPoints = 1.;
 constexpr double kDefaultFigurePoints = 2.;
 
-bool isCheckItem(const std::string& item) { return item.rfind("figure ", 0) != 0; }
-
 // "all" or "labN": names the folders of an agent's runs and of its pictures.
 std::string agentName(const AgentPlan& plan) { return plan.lab ? "lab" + std::to_string(plan.lab) : "all"; }
 
@@ -73,9 +71,9 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan, bool withC
     }
 }
 
-void scoreLabs(GradeResult& result) {
+void scoreLabs(const LabCatalog& catalog, GradeResult& result) {
     std::map<int, LabOutcome> labs;
-    for (int lab = 1; lab <= 5; ++lab) labs[lab].lab = lab;
+    for (const LabDescription& lab : catalog.labs) labs[lab.number].lab = lab.number;
     for (const CheckOutcome& c : result.checks) {
         labs[c.lab].points += c.points;
         labs[c.lab].maxPoints += c.maxPoints;
@@ -88,7 +86,7 @@ void scoreLabs(GradeResult& result) {
 }
 
 void addCheck(const GradeSetup& setup, GradeResult& result, CheckOutcome c) {
-    c.maxPoints = setup.points.points(c.lab, c.name, kDefaultCheckPoints);
+    c.maxPoints = setup.labs.checkPoints(c.lab, c.name, kDefaultCheckPoints);
     c.points = c.passed ? c.maxPoints : 0.;
     result.checks.push_back(std::move(c));
 }
@@ -100,7 +98,7 @@ FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& refer
     FigureOutcome f;
     f.id = reference.id;
     f.lab = reference.lab;
-    f.maxPoints = setup.points.points(f.lab, figureItem(f.id), kDefaultFigurePoints);
+    f.maxPoints = setup.labs.figurePoints(f.id, kDefaultFigurePoints);
     std::error_code error;
     if (!fs::exists(file, error)) {
         f.found = false;
@@ -132,7 +130,7 @@ FigureOutcome gradeImage(const GradeSetup& setup, const FigureReference& referen
     FigureOutcome f;
     f.id = reference.id;
     f.lab = reference.lab;
-    f.maxPoints = setup.points.points(f.lab, figureItem(f.id), kDefaultFigurePoints);
+    f.maxPoints = setup.labs.figurePoints(f.id, kDefaultFigurePoints);
     f.studentImage = file;
     f.verdict = compareImage(reference, image);
     f.passed = f.verdict.passed;
@@ -147,17 +145,58 @@ FigureOutcome gradeImage(const GradeSetup& setup, const FigureReference& referen
 
 // Every item of a lab at zero, because its code did not build.
 void addUnbuiltLab(const GradeSetup& setup, GradeResult& result, int lab) {
-    if (const auto it = setup.points.labs.find(lab); it != setup.points.labs.end())
-        for (const auto& [item, points] : it->second)
-            if (isCheckItem(item)) addCheck(setup, result, CheckOutcome{lab, item, false, "the code does not build (the compiler's message is at the top of the report)", 0., 0.});
+    if (const LabDescription* description = setup.labs.lab(lab))
+        for (const LabCheck& check : description->checks)
+            addCheck(setup, result, CheckOutcome{lab, check.name, false, "the code does not build (the compiler's message is at the top of the report)", 0., 0.});
     for (const FigureReference& reference : setup.references.figures) {
         if (reference.lab != lab) continue;
         FigureOutcome f;
         f.id = reference.id;
         f.lab = reference.lab;
-        f.maxPoints = setup.points.points(f.lab, figureItem(f.id), kDefaultFigurePoints);
+        f.maxPoints = setup.labs.figurePoints(f.id, kDefaultFigurePoints);
         f.reason = "the code does not build (the compiler's message is at the top of the report)";
         result.figures.push_back(std::move(f));
+    }
+}
+
+const LabOutcome* outcomeOf(const GradeResult& result, int lab) {
+    for (const LabOutcome& l : result.labs)
+        if (l.lab == lab) return &l;
+    return nullptr;
+}
+
+bool hasFailures(const LabOutcome* lab) { return lab != nullptr && lab->points < lab->maxPoints; }
+
+// Whether a failure of lab `lab` can come from lab `other`: a failed figure or check of `lab`
+// whose description says it runs `other`'s code, while `other` has failures itself.
+bool failsThrough(const LabCatalog& catalog, const GradeResult& result, int lab, int other) {
+    const LabDescription* description = catalog.lab(lab);
+    if (description == nullptr || !hasFailures(outcomeOf(result, lab)) || !hasFailures(outcomeOf(result, other)))
+        return false;
+    const auto uses = [other](const std::vector<int>& labs) { return std::find(labs.begin(), labs.end(), other) != labs.end(); };
+    const bool figure = std::any_of(result.figures.begin(), result.figures.end(), [&](const FigureOutcome& f) {
+        const LabFigure* item = description->figure(f.id);
+        return f.lab == lab && !f.passed && item != nullptr && uses(item->uses);
+    });
+    const bool check = std::any_of(result.checks.begin(), result.checks.end(), [&](const CheckOutcome& c) {
+        const LabCheck* item = description->check(c.name);
+        return c.lab == lab && !c.passed && item != nullptr && uses(item->uses);
+    });
+    return figure || check;
+}
+
+// "lab 3 uses lab 2, which has failures: fix lab 2 first". When two labs use each other and both
+// fail through the other, only the later lab is told to fix the earlier one (the course's order).
+void addDependencyNotes(const LabCatalog& catalog, GradeResult& result) {
+    for (LabOutcome& lab : result.labs) {
+        const LabDescription* description = catalog.lab(lab.lab);
+        if (description == nullptr) continue;
+        for (int other : description->uses) {
+            if (!failsThrough(catalog, result, lab.lab, other)) continue;
+            if (other > lab.lab && failsThrough(catalog, result, other, lab.lab)) continue; // said the other way
+            lab.notes.push_back("lab " + std::to_string(lab.lab) + " uses lab " + std::to_string(other) +
+                                ", which has failures: fix lab " + std::to_string(other) + " first");
+        }
     }
 }
 
@@ -180,19 +219,12 @@ bool GradeResult::allPassed() const {
            std::all_of(figures.begin(), figures.end(), [](const auto& f) { return f.passed || !f.found; });
 }
 
-const std::vector<int>& labDependencies(int lab) {
-    static const std::map<int, std::vector<int>> deps{{1, {}}, {2, {4}}, {3, {2}}, {4, {2, 3}}, {5, {2, 3}}};
-    static const std::vector<int> none;
-    const auto it = deps.find(lab);
-    return it == deps.end() ? none : it->second;
-}
-
-GradeSetup loadGradeSetup(const fs::path& references, const fs::path& points, const fs::path& scenes,
+GradeSetup loadGradeSetup(const fs::path& references, const fs::path& labs, const fs::path& scenes,
                           const fs::path& scratch) {
     GradeSetup setup;
     setup.references = loadReferences(references);
     setup.mistakes = loadMistakes(references);
-    setup.points = loadPointsTable(points);
+    setup.labs = loadLabCatalog(labs, scenes);
     setup.scenes = scenes;
     setup.scratch = scratch;
     return setup;
@@ -207,15 +239,16 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         result.problems.push_back("lab" + labs + ": the code does not build, so those labs get 0:\n" + buildMessage);
     }
     std::map<int, const AgentPlan*> agentOfLab;
+    const std::vector<int> labs = setup.labs.numbers();
     for (const AgentPlan& plan : agents)
-        for (int lab = 1; lab <= 5; ++lab)
+        for (int lab : labs)
             if (plan.lab == 0 || plan.lab == lab) agentOfLab[lab] = &plan;
     std::map<const AgentPlan*, Reported> reports;
     for (const AgentPlan& plan : agents) {
         reports[&plan] = runUntilDone(setup, plan);
         for (const std::string& p : reports[&plan].problems) result.problems.push_back(p);
     }
-    for (int lab = 1; lab <= 5; ++lab) {
+    for (int lab : labs) {
         const auto planIt = agentOfLab.find(lab);
         if (std::find(unbuilt.begin(), unbuilt.end(), lab) != unbuilt.end()) {
             addUnbuiltLab(setup, result, lab);
@@ -228,10 +261,10 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         // never reported, failed.
         for (const std::string& name : r.order)
             if (r.checks[name].lab == lab) addCheck(setup, result, r.checks[name]);
-        if (const auto it = setup.points.labs.find(lab); it != setup.points.labs.end())
-            for (const auto& [item, points] : it->second)
-                if (isCheckItem(item) && !r.checks.count(item))
-                    addCheck(setup, result, CheckOutcome{lab, item, false, "never ran: the code stopped before this check", 0., 0.});
+        if (const LabDescription* description = setup.labs.lab(lab))
+            for (const LabCheck& check : description->checks)
+                if (!r.checks.count(check.name))
+                    addCheck(setup, result, CheckOutcome{lab, check.name, false, "never ran: the code stopped before this check", 0., 0.});
         for (const FigureReference& reference : setup.references.figures) {
             if (reference.lab != lab) continue;
             const auto it = r.figures.find(reference.id);
@@ -245,36 +278,17 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
             } else {
                 f.id = reference.id;
                 f.lab = lab;
-                f.maxPoints = setup.points.points(lab, figureItem(f.id), kDefaultFigurePoints);
+                f.maxPoints = setup.labs.figurePoints(f.id, kDefaultFigurePoints);
                 f.reason = it == r.figures.end() ? "not rendered: the code stopped before this figure" : it->second.reason;
             }
             result.figures.push_back(std::move(f));
         }
     }
-    scoreLabs(result);
-    for (LabOutcome& lab : result.labs) {
-        if (isolated) {
-            lab.notes.push_back("graded on its own: the other labs came from the reference solutions");
-            continue;
-        }
-        if (lab.points >= lab.maxPoints) continue;
-        for (int dep : labDependencies(lab.lab)) {
-            const LabOutcome& other = result.labs[std::size_t(dep - 1)];
-            if (other.points >= other.maxPoints) continue;
-            // Only when a failure of this lab can come from that one: a figure drawn with its code,
-            // or a check whose message names it ("lab 4 not done yet").
-            const std::string name = "lab " + std::to_string(dep);
-            const bool figure = std::any_of(result.figures.begin(), result.figures.end(), [&](const FigureOutcome& f) {
-                return f.lab == lab.lab && !f.passed && dep != 4;
-            });
-            const bool check = std::any_of(result.checks.begin(), result.checks.end(), [&](const CheckOutcome& c) {
-                return c.lab == lab.lab && !c.passed && c.message.find(name + " ") != std::string::npos;
-            });
-            if (figure || check)
-                lab.notes.push_back("lab " + std::to_string(lab.lab) + " uses lab " + std::to_string(dep) +
-                                    ", which has failures: fix lab " + std::to_string(dep) + " first");
-        }
-    }
+    scoreLabs(setup.labs, result);
+    if (isolated)
+        for (LabOutcome& lab : result.labs) lab.notes.push_back("graded on its own: the other labs came from the reference solutions");
+    else
+        addDependencyNotes(setup.labs, result);
     return result;
 }
 
@@ -295,12 +309,12 @@ GradeResult gradeImages(const GradeSetup& setup, const fs::path& folder) {
         for (const auto& entry : fs::directory_iterator(folder))
             if (entry.path().extension() == ".png" && !setup.references.find(entry.path().stem().string()))
                 result.problems.push_back("ignored " + entry.path().filename().string() + ": no figure has this id");
-    scoreLabs(result);
+    scoreLabs(setup.labs, result);
     return result;
 }
 
 GradeResult gradeBuildFailure(const GradeSetup& setup, const std::string& compilerMessage) {
-    return gradeCode(setup, {}, false, {1, 2, 3, 4, 5}, compilerMessage);
+    return gradeCode(setup, {}, false, setup.labs.numbers(), compilerMessage);
 }
 
 } // namespace raylab::grader

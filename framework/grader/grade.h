@@ -1,12 +1,12 @@
 #pragma once
 // Grading: runs the agents that hold the code (sandbox.h), compares their pictures with the
-// references itself (compare.h), names likely mistakes (diagnosis.h) and scores by the points
-// table (points.h). It keeps going whatever the code does: an item the code never reported has
+// references itself (compare.h), names likely mistakes (diagnosis.h) and scores by the labs'
+// descriptions (lab_catalog.h). It keeps going whatever the code does: an item the code never reported has
 // failed, with the reason.
 
 #include "grader/compare.h"
 #include "grader/diagnosis.h"
-#include "grader/points.h"
+#include "grader/lab_catalog.h"
 #include "grader/references.h"
 #include "grader/sandbox.h"
 
@@ -40,7 +40,7 @@ struct FigureOutcome {
 struct LabOutcome {
     int lab = 0;
     double points = 0., maxPoints = 0.;
-    std::vector<std::string> notes; // "graded with the other labs from the reference", dependencies
+    std::vector<std::string> notes; // "graded with the other labs from the reference", the labs to fix first
 };
 
 struct GradeResult {
@@ -59,7 +59,7 @@ struct GradeResult {
 struct GradeSetup {
     ReferenceSet references;
     std::vector<Mistake> mistakes;
-    PointsTable points;
+    LabCatalog labs;               // the labs' descriptions: their items, points and dependencies
     std::filesystem::path scenes;  // the figure scene files, for the agents
     std::filesystem::path scratch; // a folder of our own: agents run and write here
     SandboxLimits limits;
@@ -67,7 +67,8 @@ struct GradeSetup {
     long long seed = -1; // >= 0: the agents render with this seed instead of the scenes' own
 };
 
-GradeSetup loadGradeSetup(const std::filesystem::path& references, const std::filesystem::path& points,
+// `labs`: the folder of the lab descriptions (labs/<lab>/lab.toml); `scenes`: the figures' scene files.
+GradeSetup loadGradeSetup(const std::filesystem::path& references, const std::filesystem::path& labs,
                           const std::filesystem::path& scenes, const std::filesystem::path& scratch);
 
 struct AgentPlan {
@@ -88,9 +89,5 @@ GradeResult gradeImages(const GradeSetup& setup, const std::filesystem::path& fo
 
 // A submission that did not build: every item at zero, with the compiler's message.
 GradeResult gradeBuildFailure(const GradeSetup& setup, const std::string& compilerMessage);
-
-// The labs whose code a lab's figures and checks also use (lab 4's figures use labs 2 and 3; one
-// lab 2 check builds its camera with lab 4's lookAt).
-const std::vector<int>& labDependencies(int lab);
 
 } // namespace raylab::grader

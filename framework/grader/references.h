@@ -1,5 +1,5 @@
 #pragma once
-// The reference outputs the grader compares against (tests/references/): data made once by
+// The reference outputs the grader compares against (framework/grader/data/references/), made by
 // `raylab references` from solutions/, so grading never needs solutions/.
 //
 //   <id>.png   the reference picture (8-bit, as the student's)

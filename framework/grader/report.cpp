@@ -139,7 +139,8 @@ void writeGradescopeJson(const GradeResult& result, const fs::path& file) {
 void writeJUnitXml(const GradeResult& result, const fs::path& file) {
     std::ofstream out = openOut(file);
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"" << escape(result.title) << "\">\n";
-    for (int lab = 1; lab <= 5; ++lab) {
+    for (const LabOutcome& outcome : result.labs) {
+        const int lab = outcome.lab;
         std::ostringstream cases;
         int tests = 0, failures = 0;
         auto item = [&](const std::string& name, bool passed, const std::string& message) {
@@ -172,7 +173,8 @@ void writeReports(const GradeResult& result, const ReferenceSet& references, con
 
 std::string terminalSummary(const GradeResult& result) {
     std::ostringstream out;
-    for (int lab = 1; lab <= 5; ++lab) {
+    for (const LabOutcome& l : result.labs) {
+        const int lab = l.lab;
         bool any = false;
         for (const CheckOutcome& c : result.checks)
             if (c.lab == lab) {
@@ -190,7 +192,6 @@ std::string terminalSummary(const GradeResult& result) {
                 if (!f.diagnosis.empty()) out << "        " << f.diagnosis << "\n";
             }
         if (!any) continue;
-        const LabOutcome& l = result.labs[std::size_t(lab - 1)];
         out << "  lab " << lab << ": " << number(l.points) << " / " << number(l.maxPoints) << " points\n";
         for (const std::string& n : l.notes) out << "        " << n << "\n";
     }

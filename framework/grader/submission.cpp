@@ -40,14 +40,17 @@ std::string errorLines(const fs::path& log) {
     return all;
 }
 
+// The agent of one lab, built with the other labs from the reference (framework/grader/CMakeLists.txt).
+fs::path labAgent(const fs::path& binDir, int lab) { return agentFile(binDir, "raylab-agent-lab" + std::to_string(lab)); }
+
 } // namespace
 
-std::vector<AgentPlan> findAgents(const fs::path& binDir, bool& isolated) {
+std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>& labs, bool& isolated) {
     std::vector<AgentPlan> agents;
     std::error_code error;
-    isolated = fs::exists(agentFile(binDir, "raylab-agent-lab1"), error);
+    isolated = !labs.empty() && fs::exists(labAgent(binDir, labs.front()), error);
     if (isolated)
-        for (int lab = 1; lab <= 5; ++lab) agents.push_back({agentFile(binDir, "raylab-agent-lab" + std::to_string(lab)), lab});
+        for (int lab : labs) agents.push_back({labAgent(binDir, lab), lab});
     else if (fs::exists(agentFile(binDir, "raylab-agent"), error))
         agents.push_back({agentFile(binDir, "raylab-agent"), 0});
     return agents;
@@ -59,16 +62,15 @@ fs::path submissionLabsFolder(const fs::path& submission) {
 }
 
 SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDir, const fs::path& labs,
-                                const fs::path& buildDir) {
+                                const fs::path& buildDir, const std::vector<int>& numbers) {
     SubmissionBuild b;
     fs::create_directories(buildDir);
     b.log = fs::absolute(buildDir / "build.log");
     const fs::path bin = buildDir / "bin";
     // A build folder serves a whole class: the last student's agents must not pass for these.
     std::error_code error;
-    for (const char* name : {"raylab-agent", "raylab-agent-lab1", "raylab-agent-lab2", "raylab-agent-lab3",
-                             "raylab-agent-lab4", "raylab-agent-lab5"})
-        fs::remove(agentFile(bin, name), error);
+    fs::remove(agentFile(bin, "raylab-agent"), error);
+    for (int lab : numbers) fs::remove(labAgent(bin, lab), error);
     std::string configure = quote(tools.cmake) + " -S " + quote(sourceDir) + " -B " + quote(buildDir) +
                             " -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DRAYLAB_SUBMISSION_DIR=" +
                             quote(fs::absolute(labs));
@@ -81,22 +83,22 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     fs::remove(b.log, error);
     if (std::system((configure + redirect).c_str()) != 0) {
         b.compilerMessage = errorLines(b.log);
-        for (int lab = 1; lab <= 5; ++lab) b.brokenLabs.push_back(lab);
+        b.brokenLabs = numbers;
         return b;
     }
     const int status = std::system((build + redirect).c_str());
     if (status != 0) b.compilerMessage = errorLines(b.log);
     b.isolated = fs::is_directory(sourceDir / "solutions", error);
     if (b.isolated) {
-        for (int lab = 1; lab <= 5; ++lab) {
-            const fs::path program = agentFile(bin, "raylab-agent-lab" + std::to_string(lab));
+        for (int lab : numbers) {
+            const fs::path program = labAgent(bin, lab);
             if (fs::exists(program, error)) b.agents.push_back({program, lab});
             else b.brokenLabs.push_back(lab);
         }
     } else if (fs::exists(agentFile(bin, "raylab-agent"), error)) {
         b.agents.push_back({agentFile(bin, "raylab-agent"), 0});
     } else {
-        for (int lab = 1; lab <= 5; ++lab) b.brokenLabs.push_back(lab);
+        b.brokenLabs = numbers;
     }
     return b;
 }

@@ -23,13 +23,15 @@ struct SubmissionBuild {
     std::filesystem::path log;
 };
 
-// The agents of a build folder's bin/: one a lab when solutions/ was there, else one for all.
-std::vector<AgentPlan> findAgents(const std::filesystem::path& binDir, bool& isolated);
+// The agents of a build folder's bin/: one for each of `labs` when solutions/ was there, else one
+// for all.
+std::vector<AgentPlan> findAgents(const std::filesystem::path& binDir, const std::vector<int>& labs, bool& isolated);
 
-// Configures (once) and builds the agents of `labs` in `buildDir`, keeping going past errors so
-// that the labs that compile are still graded.
+// Configures (once) and builds the agents of the submission's folder `labs` in `buildDir`, keeping
+// going past errors so that the labs that compile are still graded. `numbers`: the course's labs.
 SubmissionBuild buildSubmission(const Toolchain& tools, const std::filesystem::path& sourceDir,
-                                const std::filesystem::path& labs, const std::filesystem::path& buildDir);
+                                const std::filesystem::path& labs, const std::filesystem::path& buildDir,
+                                const std::vector<int>& numbers);
 
 // A submission folder holds the lab folders directly or in a labs/ subfolder.
 std::filesystem::path submissionLabsFolder(const std::filesystem::path& submission);

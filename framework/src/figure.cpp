@@ -1,6 +1,7 @@
 #include "raylab/figure.h"
 
 #include "raylab/gradient.h"
+#include "raylab/integrator_registry.h"
 #include "raylab/todo.h"
 
 #include <chrono>
@@ -23,8 +24,9 @@ PerspectiveCamera makeCamera(const SceneDescription& d, const RenderSpace& space
     return PerspectiveCamera(d.width, d.height, space.toRender(c.position), space.toRender(c.target), c.up, c.fovy);
 }
 
-std::unique_ptr<Integrator> makeIntegrator(Picture picture) {
-    switch (picture) {
+std::unique_ptr<Integrator> makeIntegrator(const SceneDescription& d) {
+    switch (d.picture) {
+    case Picture::Registered: return makeRegisteredIntegrator(d.integrator);
     case Picture::Directions: return std::make_unique<DirectionIntegrator>();
     case Picture::Flat: return std::make_unique<RayCastIntegrator>(Shading::Flat);
     case Picture::PlaceholderNormal: return std::make_unique<RayCastIntegrator>(Shading::PlaceholderNormal);
@@ -44,7 +46,7 @@ Texture renderGradient(const SceneDescription& d, RenderStats& stats) {
 
 SceneRender::SceneRender(const SceneDescription& d, const RenderOptions& options)
     : m_space(renderSpaceOf(d)), m_scene(m_space.toRender(d.scene)), m_camera(makeCamera(d, m_space)),
-      m_integrator(makeIntegrator(d.picture)), m_renderer(m_scene, m_camera, *m_integrator) {
+      m_integrator(makeIntegrator(d)), m_renderer(m_scene, m_camera, *m_integrator) {
     m_renderer.setThreads(options.threads);
     m_renderer.setProgress(options.progress);
     m_renderer.setSampler(d.sampler);

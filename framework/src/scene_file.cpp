@@ -1,5 +1,6 @@
 #include "raylab/scene_file.h"
 
+#include "raylab/integrator_registry.h"
 #include "raylab/text.h"
 
 #include <toml++/toml.h>
@@ -197,6 +198,7 @@ std::string_view pictureName(Picture picture) {
     case Picture::Flat: return "flat";
     case Picture::PlaceholderNormal: return "placeholder_normal";
     case Picture::Cosine: return "cosine";
+    case Picture::Registered: return "registered";
     }
     return "?";
 }
@@ -234,10 +236,16 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
         if (auto shading = r.string(*t, "[render] ", "shading")) {
             auto found = std::find_if(std::begin(kPictures), std::end(kPictures),
                                       [&](Picture p) { return pictureName(p) == *shading; });
-            if (found == std::end(kPictures))
-                r.fail(t->get("shading"), "[render] shading",
-                       "'" + *shading + "' is not one of gradient, directions, flat, placeholder_normal, cosine");
-            d.picture = *found;
+            if (found != std::end(kPictures)) {
+                d.picture = *found;
+            } else if (isRegisteredIntegrator(*shading)) { // a lab's own (integrator_registry.h)
+                d.picture = Picture::Registered;
+                d.integrator = *shading;
+            } else {
+                std::string known = "gradient, directions, flat, placeholder_normal, cosine";
+                for (const std::string& name : registeredIntegratorNames()) known += ", " + name;
+                r.fail(t->get("shading"), "[render] shading", "'" + *shading + "' is not one of " + known);
+            }
         }
         d.samples = int(r.integer(*t, "[render] ", "samples", 1, kMaxSamples).value_or(1));
         if (auto sampler = r.string(*t, "[render] ", "sampler")) {

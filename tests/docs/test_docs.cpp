@@ -1,12 +1,17 @@
-// The docs: every relative link and image of every Markdown file resolves; the contact sheet.
+// The docs: every relative link and image of every Markdown file resolves; the figure tables
+// agree with the labs' descriptions (labs/<lab>/lab.toml); the contact sheet.
 #include "link_check.h"
+
+#include "grader/lab_catalog.h"
 
 #include "raylab/contact_sheet.h"
 
 #include <doctest/doctest.h>
 
 #include <fstream>
+#include <map>
 #include <random>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -32,7 +37,69 @@ std::set<fs::path> pendingLinks() {
     return pending;
 }
 
+std::string readFile(const fs::path& file) {
+    std::ifstream in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// Every "Figure <number>: `<id>`" of a Markdown file (French puts a space, often a no-break one,
+// before the colon), as id -> numbers.
+std::multimap<std::string, std::string> figureMentions(const std::string& text) {
+    static const std::regex mention("Figure ([0-9]+(\\([a-z]\\))?)(?: |\u00a0|\u202f)?: `([a-z0-9_]+)`");
+    std::multimap<std::string, std::string> found;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), mention); it != std::sregex_iterator(); ++it)
+        found.emplace((*it)[3].str(), (*it)[1].str());
+    return found;
+}
+
 } // namespace
+
+TEST_SUITE("figure tables") {
+    TEST_CASE("each handout numbers its lab's figures and names its files as its lab.toml does") {
+        const auto catalog = raylab::grader::loadLabCatalog(kRoot / "labs", kRoot / "scenes/figures");
+        for (const auto& lab : catalog.labs)
+            for (const char* handout : {"README.md", "README.fr.md"}) {
+                const fs::path file = kRoot / "labs" / lab.id / handout;
+                CAPTURE(file);
+                const std::string text = readFile(file);
+                const std::multimap<std::string, std::string> mentions = figureMentions(text);
+                for (const auto& f : lab.figures)
+                    CHECK_MESSAGE(mentions.count(f.id) >= 1, "no \"Figure " << f.handout << ": `" << f.id << "`\"");
+                for (const auto& f : lab.functions) {
+                    const std::string path = "`labs/" + lab.id + "/" + f.file + "`";
+                    CHECK_MESSAGE(text.find(path) != std::string::npos, "the table of what to write has no " << path);
+                }
+                for (const auto& [id, number] : mentions) {
+                    const auto* figure = catalog.figure(id);
+                    CHECK_MESSAGE(figure != nullptr, id << " is the figure of no lab.toml");
+                    if (figure != nullptr) CHECK_MESSAGE(number == figure->handout, id << " is Figure " << figure->handout << " in its lab.toml, not " << number);
+                }
+            }
+    }
+
+    TEST_CASE("docs/figures/README.md has a row per figure: its lab, handout number and caption") {
+        const auto catalog = raylab::grader::loadLabCatalog(kRoot / "labs", kRoot / "scenes/figures");
+        const std::string text = readFile(kRoot / "docs/figures/README.md");
+        static const std::regex row(R"(\| \[`([a-z0-9_]+)`\]\(([a-z0-9_]+)\.png\) \| ([0-9]+) \| Figure ([^|]+) \| ([^|\n]+) \|)");
+        std::set<std::string> listed;
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), row); it != std::sregex_iterator(); ++it) {
+            const std::string id = (*it)[1];
+            CAPTURE(id);
+            listed.insert(id);
+            const auto* lab = catalog.labOfFigure(id);
+            REQUIRE_MESSAGE(lab != nullptr, id << " is the figure of no lab.toml");
+            const auto& figure = *lab->figure(id);
+            CHECK((*it)[2] == id);
+            CHECK(std::stoi((*it)[3]) == lab->number);
+            CHECK((*it)[4] == figure.handout);
+            CHECK((*it)[5] == figure.captionEn);
+        }
+        for (const auto& lab : catalog.labs)
+            for (const auto& f : lab.figures) CHECK_MESSAGE(listed.count(f.id) == 1, f.id << " has no row");
+    }
+}
 
 TEST_SUITE("docs links") {
     TEST_CASE("every relative link and image of every Markdown file resolves") {

@@ -86,7 +86,7 @@ TEST_CASE("fake test output on stdout changes nothing") {
 TEST_CASE("overwriting the references does not help: they were read before the code ran") {
     const fs::path copy = fs::temp_directory_path() / "raylab-bad-references";
     fs::remove_all(copy);
-    fs::copy(sourceDir() / "tests/references", copy, fs::copy_options::recursive);
+    fs::copy(referencesDir(), copy, fs::copy_options::recursive);
     const fs::path target = copy / "lab1_gradient.png";
     const auto before = fs::file_size(target);
 #ifdef _WIN32

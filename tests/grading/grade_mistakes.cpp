@@ -22,7 +22,7 @@ TEST_CASE("each catalogued mistake is caught and named") {
         CHECK_MESSAGE(catcher->message.find("Hint:") != std::string::npos, catcher->message);
         // The labs that do not use the mistaken lab keep every point.
         for (const LabOutcome& lab : r.labs) {
-            const std::vector<int>& uses = labDependencies(lab.lab);
+            const std::vector<int>& uses = setup.labs.lab(lab.lab)->uses;
             if (lab.lab != m.lab && std::find(uses.begin(), uses.end(), m.lab) == uses.end())
                 CHECK_MESSAGE(lab.points == lab.maxPoints, "lab " << lab.lab << failures(r));
         }

@@ -19,29 +19,30 @@ TEST_CASE("the reference solutions get every point, on 1 or 2 threads and severa
         const GradeResult r = gradeAgent(setup, "raylab-agent-reference");
         CHECK_MESSAGE(r.allPassed(), "threads " << threads << ", seed " << seed << failures(r));
         CHECK(r.score() == r.maxScore());
-        std::size_t tableChecks = 0;
-        for (const auto& [lab, items] : setup.points.labs)
-            for (const auto& [item, points] : items) tableChecks += item.rfind("figure ", 0) != 0;
-        CHECK(r.checks.size() == tableChecks);
+        std::size_t describedChecks = 0;
+        for (const LabDescription& lab : setup.labs.labs) describedChecks += lab.checks.size();
+        CHECK(r.checks.size() == describedChecks);
         CHECK(r.figures.size() == setup.references.figures.size());
     }
 }
 
-TEST_CASE("every check the grader runs is in the points table, and the other way round") {
+TEST_CASE("every check the grader runs is in its lab's description, and the other way round") {
+    const GradeSetup setup = courseSetup();
     std::set<std::string> listed;
     for (const FunctionCheck& c : functionChecks(1)) {
         listed.insert(c.name);
-        CHECK_MESSAGE(courseSetup().points.has(c.lab, c.name), "lab " << c.lab << ": \"" << c.name << "\" has no points");
+        const LabDescription* lab = setup.labs.lab(c.lab);
+        CHECK_MESSAGE((lab != nullptr && lab->check(c.name) != nullptr), "lab " << c.lab << ": \"" << c.name << "\" is in no lab.toml");
     }
-    for (const auto& [lab, items] : courseSetup().points.labs)
-        for (const auto& [item, points] : items)
-            if (item.rfind("figure ", 0) != 0) CHECK_MESSAGE(listed.count(item), "the points table names \"" << item << "\", which no check has");
+    for (const LabDescription& lab : setup.labs.labs)
+        for (const LabCheck& check : lab.checks)
+            CHECK_MESSAGE(listed.count(check.name), lab.file.string() << " names \"" << check.name << "\", which no check has");
 }
 
 TEST_CASE("the stubs of labs/ get zero, each check saying what to write") {
     GradeSetup setup = courseSetup();
     std::vector<AgentPlan> agents;
-    for (int lab = 1; lab <= 5; ++lab) agents.push_back({binDir() / ("raylab-agent-lab" + std::to_string(lab)), lab});
+    for (int lab : setup.labs.numbers()) agents.push_back({binDir() / ("raylab-agent-lab" + std::to_string(lab)), lab});
     const GradeResult r = gradeCode(setup, agents, true);
     fs::remove_all(setup.scratch);
     CHECK(r.score() == 0.);
@@ -94,11 +95,13 @@ TEST_CASE("without the reference, grading is cumulative and names the earlier la
     GradeSetup setup = courseSetup();
     const GradeResult r = gradeCode(setup, {{binDir() / "raylab-agent", 0}}, false); // labs/: all stubs
     fs::remove_all(setup.scratch);
-    REQUIRE(r.labs.size() == 5);
+    REQUIRE(r.labs.size() == setup.labs.labs.size());
     CHECK(r.labs[0].notes.empty());
     REQUIRE_FALSE(r.labs[2].notes.empty());
     CHECK(r.labs[2].notes.front() == "lab 3 uses lab 2, which has failures: fix lab 2 first");
     CHECK(r.labs[3].notes.size() == 2); // labs 2 and 3
+    // Labs 2 and 4 use each other (a lab 2 check builds a lookAt camera): said once, from the later lab.
+    CHECK(r.labs[1].notes.empty());
 }
 
 } // TEST_SUITE

@@ -1,5 +1,5 @@
 #pragma once
-// Helpers of the grader's end-to-end tests: the course's references and points, and grading an
+// Helpers of the grader's end-to-end tests: the course's references and labs, and grading an
 // agent built by tests/grading/CMakeLists.txt.
 
 #include "grader/grade.h"
@@ -17,11 +17,12 @@ using namespace raylab::grader;
 
 inline fs::path binDir() { return RAYLAB_GRADING_BIN; }
 inline fs::path sourceDir() { return RAYLAB_SOURCE_DIR; }
+inline fs::path referencesDir() { return sourceDir() / "framework/grader/data/references"; }
 
 // A setup with a scratch folder of its own (tests run in parallel).
-inline GradeSetup courseSetup(const fs::path& references = sourceDir() / "tests/references") {
+inline GradeSetup courseSetup(const fs::path& references = referencesDir()) {
     std::random_device random;
-    GradeSetup setup = loadGradeSetup(references, sourceDir() / "tests/grading/points.toml", RAYLAB_SCENES_DIR,
+    GradeSetup setup = loadGradeSetup(references, sourceDir() / "labs", RAYLAB_SCENES_DIR,
                                       fs::temp_directory_path() / ("raylab-grading-test-" + std::to_string(random())));
     setup.limits.wallSeconds = 60.;
     setup.threads = 2;

@@ -1,54 +1,143 @@
-// The points table: the instructor's file, read strictly.
-#include "grader/points.h"
+// The labs' descriptions (labs/<lab>/lab.toml): the instructor's files, read strictly, and the
+// course's own, which agree with the references and the scene files.
+#include "grader/lab_catalog.h"
+#include "grader/references.h"
+
+#include "raylab/scene_file.h"
 
 #include <doctest/doctest.h>
 
 #include <fstream>
+#include <random>
 
 using namespace raylab::grader;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path writeTable(const std::string& name, const std::string& text) {
-    const fs::path file = fs::temp_directory_path() / name;
-    std::ofstream(file) << text;
-    return file;
-}
+// A scratch course: labs/<id>/lab.toml (+ the files it names) and scenes/<figure>.toml.
+struct Course {
+    fs::path root = fs::temp_directory_path() / ("raylab-lab-catalog-" + std::to_string(std::random_device{}()));
+    Course() { fs::create_directories(root / "scenes"); }
+    ~Course() { fs::remove_all(root); }
+    Course(const Course&) = delete;
+    Course& operator=(const Course&) = delete;
+
+    fs::path lab(const std::string& id, const std::string& text) const {
+        fs::create_directories(root / "labs" / id);
+        std::ofstream(root / "labs" / id / "code.cpp") << "// stub\n";
+        std::ofstream(root / "labs" / id / "lab.toml") << text;
+        return root / "labs" / id / "lab.toml";
+    }
+    void scene(const std::string& id) const { std::ofstream(root / "scenes" / (id + ".toml")) << "[figure]\n"; }
+    LabCatalog load() const { return loadLabCatalog(root / "labs", root / "scenes"); }
+};
+
+const std::string kLab2 = R"toml(number = 2
+id = "lab2_rays"
+title = { en = "Rays", fr = "Rayons" }
+uses = [1]
+
+[[function]]
+file = "code.cpp"
+name = "trace"
+
+[[figure]]
+id = "lab2_picture"
+scene = "lab2_picture.toml"
+handout = "2(b)"
+caption = { en = "A picture", fr = "Une image" }
+points = 1.5
+
+[[check]]
+name = "trace: a check"
+points = 3
+
+[[check]]
+name = "trace: another check"
+points = 1
+uses = [1]
+)toml";
+
+const std::string kLab1 = "number = 1\nid = \"lab1_first\"\ntitle = { en = \"First\", fr = \"Premier\" }\n";
 
 } // namespace
 
-TEST_SUITE("points table") {
+TEST_SUITE("lab descriptions") {
 
-TEST_CASE("points by lab and item, with a fallback") {
-    const PointsTable t = loadPointsTable(writeTable("raylab-points-ok.toml", "[lab2]\n\"a check\" = 3\n\"figure x\" = 1.5\n"));
-    CHECK(t.points(2, "a check") == 3.);
-    CHECK(t.points(2, "figure x") == 1.5);
-    CHECK(t.points(2, "unknown", 7.) == 7.);
-    CHECK(t.points(4, "a check", 1.) == 1.);
-    CHECK(t.has(2, "a check"));
-    CHECK_FALSE(t.has(3, "a check"));
+TEST_CASE("a lab's items, points, titles and the labs it uses") {
+    const Course course;
+    course.scene("lab2_picture");
+    course.lab("lab1_first", kLab1);
+    course.lab("lab2_rays", kLab2);
+    const LabCatalog catalog = course.load();
+    REQUIRE(catalog.numbers() == std::vector<int>{1, 2});
+    const LabDescription& lab = *catalog.lab(2);
+    CHECK(lab.title("fr") == "Rayons");
+    CHECK(lab.uses == std::vector<int>{1});
+    REQUIRE(lab.functions.size() == 1);
+    CHECK(lab.functions[0].name == "trace");
+    CHECK(catalog.figure("lab2_picture")->handout == "2(b)");
+    CHECK(catalog.figure("lab2_picture")->caption("en") == "A picture");
+    CHECK(catalog.figure("lab2_picture")->uses == std::vector<int>{1}); // the lab's, unless it says
+    CHECK(catalog.labOfFigure("lab2_picture") == &lab);
+    CHECK(catalog.figurePoints("lab2_picture", 7.) == 1.5);
+    CHECK(catalog.checkPoints(2, "trace: a check", 7.) == 3.);
+    CHECK(catalog.checkPoints(2, "unknown", 7.) == 7.);
+    CHECK(catalog.checkPoints(1, "trace: a check", 7.) == 7.);
+    CHECK(lab.check("trace: a check")->uses.empty()); // a check runs its own lab's code unless it says
+    CHECK(lab.check("trace: another check")->uses == std::vector<int>{1});
 }
 
-TEST_CASE("a bad table is refused, naming the file and the problem") {
-    CHECK_THROWS_WITH_AS(loadPointsTable(writeTable("raylab-points-bad1.toml", "[lab9]\nx = 1\n")),
-                         doctest::Contains("[lab9]"), std::runtime_error);
-    CHECK_THROWS_WITH_AS(loadPointsTable(writeTable("raylab-points-bad2.toml", "[lab1]\nx = -1\n")),
-                         doctest::Contains("\"x\": points must be a number >= 0"), std::runtime_error);
-    CHECK_THROWS_WITH_AS(loadPointsTable(writeTable("raylab-points-bad3.toml", "[lab1\n")),
-                         doctest::Contains("raylab-points-bad3.toml:1"), std::runtime_error);
+TEST_CASE("a bad description is refused, naming the file, the line and the key") {
+    const Course course;
+    course.scene("lab2_picture");
+    course.lab("lab1_first", kLab1);
+    const auto refused = [&](const std::string& text, const std::string& expected) {
+        const fs::path file = course.lab("lab2_rays", text);
+        CHECK_THROWS_WITH_AS(course.load(), doctest::Contains(expected.c_str()), std::runtime_error);
+        CHECK_THROWS_WITH_AS(course.load(), doctest::Contains(file.string().c_str()), std::runtime_error);
+    };
+    const auto replaced = [](std::string text, const std::string& from, const std::string& to) {
+        return text.replace(text.find(from), from.size(), to);
+    };
+    refused(replaced(kLab2, "points = 3", "points = -1"), ":19: [[check]] #1 points: points must be a number >= 0");
+    refused(replaced(kLab2, "points = 1.5", "points = \"two\""), ":15: [[figure]] #1 points: points must be a number >= 0");
+    refused(replaced(kLab2, "uses = [1]\n\n[[function]]", "uses = [1, 3]\n\n[[function]]"), "uses: there is no lab 3");
+    refused(replaced(kLab2, "points = 1\nuses = [1]", "points = 1\nuses = [4]"), ":24: [[check]] #2 uses: lab 4 is not in the lab's uses");
+    refused(replaced(kLab2, "id = \"lab2_rays\"", "id = \"lab2_other\""), ":2: id: \"lab2_other\" is not the folder's name");
+    refused(replaced(kLab2, "number = 2", "number = 3"), "must begin with lab3_");
+    refused(replaced(kLab2, "handout = \"2(b)\"", "hand_out = \"2(b)\""), ":13: [[figure]] #1 hand_out: unknown key");
+    refused(replaced(kLab2, "lab2_picture.toml", "lab2_missing.toml"), "[[figure]] #1 scene: expected lab2_picture.toml");
+    refused(replaced(kLab2, "file = \"code.cpp\"", "file = \"gone.cpp\""), ":7: [[function]] #1 file: no file gone.cpp");
+    refused(replaced(kLab2, ", fr = \"Rayons\" }", " }"), "title.fr: missing");
+    refused(replaced(kLab2, "[[check]]\nname = \"trace: another check\"", "[[check]]\nname = \"trace: a check\""),
+            "check: the name \"trace: a check\" is there twice");
+    refused(replaced(kLab2, "number = 2\n", "number = 2\n[oops\n"), "lab.toml:2: not valid TOML");
+    course.lab("lab2_rays", kLab2);
+    course.lab("lab1_again", replaced(kLab1, "lab1_first", "lab1_again"));
+    CHECK_THROWS_WITH_AS(course.load(), doctest::Contains("number: 1 is also the number of"), std::runtime_error);
 }
 
-TEST_CASE("the course's table names every check of the agent and every figure") {
-    const PointsTable t = loadPointsTable(fs::path(RAYLAB_SOURCE_DIR) / "tests/grading/points.toml");
-    for (int lab = 1; lab <= 5; ++lab) {
-        int checks = 0, figures = 0;
-        for (const auto& [item, points] : t.labs.at(lab)) (item.rfind("figure ", 0) == 0 ? figures : checks) += 1;
-        CHECK_MESSAGE(checks >= 3, "lab " << lab);
-        CHECK_MESSAGE(figures >= 1, "lab " << lab);
+TEST_CASE("the course's descriptions agree with the references and the scene files") {
+    const LabCatalog catalog = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
+    const ReferenceSet references = loadReferences(fs::path(RAYLAB_SOURCE_DIR) / "framework/grader/data/references");
+    REQUIRE_FALSE(catalog.labs.empty());
+    std::size_t figures = 0;
+    for (const LabDescription& lab : catalog.labs) {
+        CAPTURE(lab.file);
+        CHECK(lab.checks.size() >= 3);
+        CHECK(lab.figures.size() >= 1);
+        CHECK(lab.functions.size() >= 1);
+        for (const LabFigure& f : lab.figures) {
+            const FigureReference* reference = references.find(f.id);
+            CHECK_MESSAGE(reference != nullptr, f.id << " has no reference (raylab references)");
+            if (reference != nullptr) CHECK_MESSAGE(reference->lab == lab.number, f.id);
+            CHECK_MESSAGE(raylab::loadSceneFile(f.scene).lab == lab.number, f.id << ": the scene's [figure] lab");
+        }
+        figures += lab.figures.size();
     }
-    for (const char* figure : {"lab1_gradient", "lab2_directions", "lab3_flat", "lab3_cosine", "lab4_d", "lab5_antialiased"})
-        CHECK_MESSAGE(t.has(figure[3] - '0', figureItem(figure)), figure);
+    CHECK(figures == references.figures.size());
 }
 
 } // TEST_SUITE

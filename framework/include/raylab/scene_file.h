@@ -20,6 +20,7 @@ enum class Picture {
     Flat,              // lab 3: hit or miss, no normals
     PlaceholderNormal, // lab 3: cosine shading with a constant normal
     Cosine,            // lab 3: cosine shading with the true normal
+    Registered,        // a lab's own integrator, named by SceneDescription::integrator (integrator_registry.h)
 };
 
 struct CameraDescription {
@@ -40,6 +41,7 @@ struct SceneDescription {
     CameraDescription camera;
     Scene scene;
     Picture picture = Picture::Cosine;
+    std::string integrator; // with Picture::Registered: the registered integrator's name
     int samples = 1;
     SamplerKind sampler = SamplerKind::Center;
     std::uint64_t seed = 0;

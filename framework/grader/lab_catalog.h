@@ -1,0 +1,69 @@
+#pragma once
+// The labs, as their descriptions say: every labs/lab*/lab.toml (number, id, titles, the functions
+// a student writes, the labs it uses, its figures and checks with their points). The grader, the
+// report, `raylab distribute` and the docs test read them; nothing else names a lab or counts them.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace raylab::grader {
+
+struct LabFunction {
+    std::string file; // in the lab's folder
+    std::string name;
+};
+
+struct LabFigure {
+    std::string id;              // the scene file's name without .toml
+    std::filesystem::path scene; // scenes/figures/<id>.toml
+    std::string handout;         // the handout's figure number, e.g. "3(a)"
+    std::string captionEn, captionFr;
+    double points = 0.;
+    std::vector<int> uses; // the other labs whose code draws it (the lab's `uses` unless it says)
+
+    const std::string& caption(const std::string& lang) const { return lang == "fr" ? captionFr : captionEn; }
+};
+
+struct LabCheck {
+    std::string name; // the check's name, as the agent reports it
+    double points = 0.;
+    std::vector<int> uses; // the other labs whose code it calls (none unless it says)
+};
+
+struct LabDescription {
+    std::filesystem::path file; // its lab.toml
+    int number = 0;
+    std::string id; // its folder's name, e.g. "lab3_sphere"
+    std::string titleEn, titleFr;
+    std::vector<LabFunction> functions;
+    std::vector<int> uses; // every lab a figure or a check of this one uses
+    std::vector<LabFigure> figures;
+    std::vector<LabCheck> checks;
+
+    const std::string& title(const std::string& lang) const { return lang == "fr" ? titleFr : titleEn; }
+    const LabFigure* figure(const std::string& id) const;
+    const LabCheck* check(const std::string& name) const;
+};
+
+struct LabCatalog {
+    std::vector<LabDescription> labs; // by number
+
+    const LabDescription* lab(int number) const;
+    const LabFigure* figure(const std::string& id) const;
+    const LabDescription* labOfFigure(const std::string& id) const;
+    std::vector<int> numbers() const;
+    // The points of a check or a figure; `fallback` when its lab's description does not name it.
+    double checkPoints(int lab, const std::string& name, double fallback) const;
+    double figurePoints(const std::string& id, double fallback) const;
+};
+
+// One lab.toml, checked on its own; throws std::runtime_error "FILE:LINE: key: problem".
+// `scenes`: the folder its figures' scene files must be in.
+LabDescription loadLabDescription(const std::filesystem::path& file, const std::filesystem::path& scenes);
+
+// Every <labs>/lab*/lab.toml, checked together (numbers and figure ids unique, `uses` names labs
+// that exist); throws std::runtime_error naming the file, line and key.
+LabCatalog loadLabCatalog(const std::filesystem::path& labs, const std::filesystem::path& scenes);
+
+} // namespace raylab::grader

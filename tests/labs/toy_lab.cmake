@@ -1,0 +1,117 @@
+# The toy-lab test: adding a lab is one folder. In a copy of the tree it adds labs/lab6_toy/ (its
+# lab.toml, one stub function, a README), its completed twin in solutions/ and its scene file, then
+# builds, renders, makes lab 6's references, grades and reports it as an instructor and a student
+# would, and checks that framework/'s sources are the same as before.
+#
+#   cmake -DSOURCE=<tree> -DWORK=<scratch folder> -DTOY=tests/labs/toy [-DGENERATOR=Ninja]
+#         [-DCCACHE=<ccache>] -P tests/labs/toy_lab.cmake
+# Every program runs from an argument vector (execute_process), never through a shell.
+
+foreach(var SOURCE WORK TOY)
+  if(NOT ${var})
+    message(FATAL_ERROR "toy lab: -D${var}=... is required")
+  endif()
+endforeach()
+set(tree ${WORK}/tree)
+set(build ${WORK}/build)
+set(bin ${build}/bin)
+
+# run(NAME EXPECTED_STATUS COMMAND...): runs COMMAND in WORK, fails unless it exits with
+# EXPECTED_STATUS ("nonzero" for any failure); its output is in the variable NAME.
+function(run name expected)
+  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(REPLACE ";" " " shown "${ARGN}")
+  message(STATUS "toy lab: ${shown} -> ${status}\n${out}${err}")
+  if((expected STREQUAL "nonzero" AND status EQUAL 0) OR (NOT expected STREQUAL "nonzero" AND NOT status EQUAL expected))
+    message(FATAL_ERROR "toy lab: `${shown}` exited with ${status}, expected ${expected}:\n${out}${err}")
+  endif()
+  set(${name} "${out}${err}" PARENT_SCOPE)
+endfunction()
+
+# expect(TEXT NEEDLE WHAT): fails unless TEXT contains NEEDLE.
+function(expect text needle what)
+  string(FIND "${text}" "${needle}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "toy lab: ${what}: no \"${needle}\" in:\n${text}")
+  endif()
+endfunction()
+
+# 1. The copy of the tree (no build folders, no out/, no tests/), and the toy lab added to it.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${tree})
+foreach(part framework labs solutions scenes cmake)
+  file(COPY ${SOURCE}/${part} DESTINATION ${tree})
+endforeach()
+file(COPY ${SOURCE}/CMakeLists.txt ${SOURCE}/CMakePresets.json DESTINATION ${tree})
+file(COPY ${TOY}/lab.toml ${TOY}/README.md ${TOY}/toy_colour.cpp DESTINATION ${tree}/labs/lab6_toy)
+file(COPY ${TOY}/solution/toy_colour.cpp DESTINATION ${tree}/solutions/lab6_toy)
+file(COPY ${TOY}/lab6_toy.toml DESTINATION ${tree}/scenes/figures)
+
+# 2. Configure and build the programs a course uses (no test suite: tests/ is not copied).
+set(configure ${CMAKE_COMMAND} -S ${tree} -B ${build} -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF)
+if(GENERATOR)
+  list(APPEND configure -G ${GENERATOR})
+endif()
+if(CCACHE)
+  list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CCACHE})
+endif()
+run(output 0 ${configure})
+expect("${output}" "lab5_antialiasing;lab6_toy" "CMake found the sixth lab")
+run(output 0 ${CMAKE_COMMAND} --build ${build} --target raylab raylab-reference raylab-agents raylab-agent-reference -j 2)
+foreach(agent raylab-agent-lab6 raylab-agent-reference raylab-agent)
+  if(NOT EXISTS ${bin}/${agent})
+    message(FATAL_ERROR "toy lab: ${agent} was not built")
+  endif()
+endforeach()
+
+# 3. Rendered by the reference build, and lab 6's references made from it (its scene alone).
+run(output 0 ${bin}/raylab-reference figures --out ${WORK}/figures)
+expect("${output}" "lab6_toy" "raylab-reference figures lists lab 6's figure")
+if(NOT EXISTS ${WORK}/figures/lab6_toy.png)
+  message(FATAL_ERROR "toy lab: raylab-reference figures wrote no lab6_toy.png")
+endif()
+file(MAKE_DIRECTORY ${WORK}/lab6-scenes)
+file(COPY ${tree}/scenes/figures/lab6_toy.toml DESTINATION ${WORK}/lab6-scenes)
+run(output 0 ${bin}/raylab-reference references --scenes ${WORK}/lab6-scenes)
+expect("${output}" "lab6_toy" "raylab references made lab 6's reference")
+
+# 4. Graded: the reference code gets every point, the stub is told to write toyColour.
+run(output 0 ${bin}/raylab grade --lab 6 --agent ${bin}/raylab-agent-reference --report ${WORK}/grade-reference)
+expect("${output}" "PASS  lab6  figure lab6_toy" "the reference's figure passes")
+expect("${output}" "lab 6: 5 / 5 points" "the reference gets lab 6's points")
+run(output nonzero ${bin}/raylab grade --lab 6 --report ${WORK}/grade-student)
+expect("${output}" "lab 6 not done yet: write toyColour" "the stub is not done yet")
+expect("${output}" "lab 6: 0 / 5 points" "the stub gets no point")
+
+# 5. Reported: the lab's section with its title, handout number and caption, from its lab.toml.
+run(output 0 ${bin}/raylab report --impl reference --out ${WORK}/report-reference)
+file(READ ${WORK}/report-reference/report.md report)
+expect("${report}" "## Lab 6: A toy lab" "the report has lab 6's section")
+expect("${report}" "### Figure 7 (lab6_toy)" "the report numbers lab 6's figure")
+expect("${report}" "1 - (d + 1) / 2" "the report shows lab 6's caption")
+expect("${report}" "![lab6_toy](figures/lab6_toy.png)" "the report shows lab 6's picture")
+run(output 0 ${bin}/raylab report --lang fr --out ${WORK}/report-student)
+file(READ ${WORK}/report-student/report.md report)
+expect("${report}" "## TP 6 : Un TP jouet" "the French report has lab 6's section")
+# The student build's labs are all stubs: lab 6's figure waits for lab 2's camera first.
+string(FIND "${report}" "## TP 6 : Un TP jouet" section)
+string(SUBSTRING "${report}" ${section} -1 section)
+expect("${section}" "La direction d de chaque rayon primaire" "the French report shows lab 6's French caption")
+expect("${section}" "not done yet: write" "the student's report says lab 6's figure is not drawn yet")
+
+# 6. framework/'s sources are those of the tree: the lab needed none of its files changed (its
+# data folder holds what `raylab references` made).
+file(GLOB_RECURSE sources RELATIVE ${SOURCE}/framework ${SOURCE}/framework/*)
+file(GLOB_RECURSE copied RELATIVE ${tree}/framework ${tree}/framework/*)
+list(FILTER copied EXCLUDE REGEX "^grader/data/references/lab6_toy\\.")
+if(NOT sources STREQUAL copied)
+  message(FATAL_ERROR "toy lab: framework/ has other files than the tree's")
+endif()
+foreach(file IN LISTS sources)
+  file(SHA256 ${SOURCE}/framework/${file} a)
+  file(SHA256 ${tree}/framework/${file} b)
+  if(NOT a STREQUAL b)
+    message(FATAL_ERROR "toy lab: framework/${file} changed")
+  endif()
+endforeach()
+message(STATUS "toy lab: lab 6 built, rendered, graded and reported; framework/ unchanged")
