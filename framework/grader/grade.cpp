@@ -56,7 +56,13 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan, bool withC
                 requests += protocol::serialize(requestFor(setup, item)) + "\n";
             }
         if (sent.empty()) return r;
-        const AgentRun run = runAgent(plan.program, {}, scratch / ("run" + std::to_string(attempt)), setup.limits, requests);
+        const AgentRun run =
+            runAgent({plan.program, {}, scratch / ("run" + std::to_string(attempt)), {setup.scenes}, {}, requests}, setup.limits);
+        if (!run.violations.empty()) { // a run that attacked the grader earns nothing, and is not run again
+            for (Item* item : sent) ledger.fail(*item, "the code graded " + run.violations.front());
+            for (const std::string& v : run.violations) r.problems.push_back(plan.program.filename().string() + " " + v);
+            return r;
+        }
         const bool hello = readRun(run.lines, sent, byId, ledger);
         const auto unanswered = std::find_if(sent.begin(), sent.end(), [](const Item* i) { return !i->resolved; });
         if (unanswered == sent.end()) continue;

@@ -1,7 +1,9 @@
 #include "grader/submission.h"
 
-#include <cstdlib>
+#include "grader/process.h"
+
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace raylab::grader {
@@ -18,11 +20,20 @@ fs::path agentFile(const fs::path& binDir, const std::string& name) {
 #endif
 }
 
-std::string quote(const fs::path& p) {
-    std::string quoted(1, '"');
-    quoted += p.string();
-    quoted += '"';
-    return quoted;
+// The submission's folder as CMake can hold it: a cache value cannot hold a newline, and `;` or a
+// quote would change its meaning, so an unusual name is reached through a link of a plain name.
+// The link's name is the folder's own (hashed): a build folder shared by a class must never take
+// one student's objects, built from the same paths, for another's.
+fs::path cmakeSafe(const fs::path& labs, const fs::path& buildDir) {
+    const std::string path = fs::absolute(labs).generic_string();
+    if (path.find_first_of("\n\r;\"\\$#[]") == std::string::npos) return fs::absolute(labs);
+    std::ostringstream name;
+    name << "submission-" << std::hex << std::hash<std::string>{}(path);
+    const fs::path link = fs::absolute(buildDir) / name.str();
+    std::error_code ignored;
+    fs::remove(link, ignored);
+    fs::create_directory_symlink(fs::absolute(labs), link);
+    return link;
 }
 
 // The lines that say what went wrong, not the whole log.
@@ -71,23 +82,24 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     std::error_code error;
     fs::remove(agentFile(bin, "raylab-agent"), error);
     for (int lab : numbers) fs::remove(labAgent(bin, lab), error);
-    std::string configure = quote(tools.cmake) + " -S " + quote(sourceDir) + " -B " + quote(buildDir) +
-                            " -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DRAYLAB_SUBMISSION_DIR=" +
-                            quote(fs::absolute(labs));
+    std::vector<std::string> configure{tools.cmake, "-S", fs::absolute(sourceDir).string(), "-B",
+                                       fs::absolute(buildDir).string(), "-DCMAKE_BUILD_TYPE=Release",
+                                       "-DBUILD_TESTING=OFF", "-DRAYLAB_SUBMISSION_DIR=" + cmakeSafe(labs, buildDir).generic_string()};
     if (!tools.generator.empty() && !fs::exists(buildDir / "CMakeCache.txt", error))
-        configure += " -G " + quote(tools.generator);
-    const bool ninja = tools.generator.find("Ninja") != std::string::npos;
-    const std::string build = quote(tools.cmake) + " --build " + quote(buildDir) + " --target raylab-agents -j 2" +
-                              (ninja ? " -- -k 0" : tools.generator.find("Makefiles") != std::string::npos ? " -- -k" : "");
-    const std::string redirect = " >> " + quote(b.log) + " 2>&1";
+        configure.insert(configure.end(), {"-G", tools.generator});
+    std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--target", "raylab-agents", "-j", "2"};
+    if (tools.generator.find("Ninja") != std::string::npos) build.insert(build.end(), {"--", "-k", "0"});
+    else if (tools.generator.find("Makefiles") != std::string::npos) build.insert(build.end(), {"--", "-k"});
     fs::remove(b.log, error);
-    if (std::system((configure + redirect).c_str()) != 0) {
-        b.compilerMessage = errorLines(b.log);
+    const ProcessOptions toLog{{}, b.log};
+    const ProcessResult configured = runProcess(configure, toLog);
+    if (!configured.succeeded()) {
+        b.compilerMessage = configured.started ? errorLines(b.log) : configured.error;
         b.brokenLabs = numbers;
         return b;
     }
-    const int status = std::system((build + redirect).c_str());
-    if (status != 0) b.compilerMessage = errorLines(b.log);
+    const ProcessResult built = runProcess(build, toLog);
+    if (!built.succeeded()) b.compilerMessage = built.started ? errorLines(b.log) : built.error;
     b.isolated = fs::is_directory(sourceDir / "solutions", error);
     if (b.isolated) {
         for (int lab : numbers) {

@@ -1,8 +1,6 @@
 // Bad submissions get the grade they earned, with a clear reason, and the run goes on.
 #include "grading_support.h"
 
-#include <cstdlib>
-
 using namespace raylab::test;
 
 namespace {
@@ -83,20 +81,42 @@ TEST_CASE("fake test output on stdout changes nothing") {
     CHECK(r.labs[0].points == 0.);
 }
 
-TEST_CASE("overwriting the references does not help: they were read before the code ran") {
-    const fs::path copy = fs::temp_directory_path() / "raylab-bad-references";
+TEST_CASE("overwriting the references does not help: under bubblewrap it cannot, without it they were read first") {
+    const fs::path copy = fs::temp_directory_path() / "raylab-bad-references"; // where the bad code writes
+    for (const bool bubblewrap : {false, true}) {
+        CAPTURE(bubblewrap);
+        fs::remove_all(copy);
+        fs::copy(referencesDir(), copy, fs::copy_options::recursive);
+        const fs::path target = copy / "lab1_gradient.png";
+        const auto before = fs::file_size(target);
+        GradeSetup setup = courseSetup(copy);
+        setup.limits.bubblewrap = bubblewrap;
+        const bool confined = sandboxKind(setup.limits) == "bubblewrap";
+        const GradeResult r = gradeAgent(setup, "raylab-bad-writes_references");
+        CHECK((fs::file_size(target) == before) == confined); // the attack happened only outside bubblewrap
+        expectFigure(r, "lab1_gradient", false, "differ from the reference");
+    }
     fs::remove_all(copy);
-    fs::copy(referencesDir(), copy, fs::copy_options::recursive);
-    const fs::path target = copy / "lab1_gradient.png";
-    const auto before = fs::file_size(target);
-#ifdef _WIN32
-    _putenv_s("RAYLAB_BAD_REFERENCE_TARGET", target.string().c_str());
-#else
-    setenv("RAYLAB_BAD_REFERENCE_TARGET", target.string().c_str(), 1);
-#endif
-    const GradeResult r = gradeAgent(courseSetup(copy), "raylab-bad-writes_references");
-    CHECK(fs::file_size(target) != before); // the attack happened
-    expectFigure(r, "lab1_gradient", false, "differ from the reference");
+}
+
+TEST_CASE("a submission that signals the grader: the grader goes on; without bubblewrap that run earns nothing") {
+    for (const bool bubblewrap : {false, true}) {
+        CAPTURE(bubblewrap);
+        GradeSetup setup = courseSetup();
+        setup.limits.wallSeconds = 20.;
+        setup.limits.bubblewrap = bubblewrap;
+        const bool confined = sandboxKind(setup.limits) == "bubblewrap";
+        const GradeResult r = gradeAgent(setup, "raylab-bad-signals_grader"); // and this test is still running
+        expectCheck(r, "fillGradient: every pixel is written", false);
+        if (confined) { // the signal went to bubblewrap's init, inside the sandbox
+            expectCheck(r, "renderPixel: N rays and their average", true);
+        } else { // the grader took it: every result of that run fails, with the reason
+            expectCheck(r, "renderPixel: N rays and their average", false, "sent signal 15");
+            bool said = false;
+            for (const std::string& p : r.problems) said |= p.find("sent signal 15") != std::string::npos;
+            CHECK_MESSAGE(said, failures(r));
+        }
+    }
 }
 
 } // TEST_SUITE

@@ -1,10 +1,12 @@
 // raylab grade-class: a row per student, resumable; a submission that does not build gets zero
 // for the labs that do not build, with the compiler's message.
 #include "grading_support.h"
+#include "support/run_program.h"
 
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 using namespace raylab::test;
 
@@ -17,12 +19,28 @@ std::string slurp(const fs::path& file) {
     return text.str();
 }
 
+// Runs grade-class from the class's parent folder (where a command run by mistake would write).
 int gradeClass(const fs::path& classDir, const fs::path& out, const fs::path& buildDir) {
-    std::ostringstream command;
-    command << '"' << (binDir() / "raylab").string() << "\" grade-class \"" << classDir.string() << "\" --out \""
-            << out.string() << "\" --build-dir \"" << buildDir.string() << "\" > \""
-            << (out.parent_path() / "class-output.txt").string() << "\" 2>&1";
-    return std::system(command.str().c_str());
+    return runProgram({(binDir() / "raylab").string(), "grade-class", classDir.string(), "--out", out.string(),
+                       "--build-dir", buildDir.string()},
+                      out.parent_path() / "class-output.txt", classDir.parent_path())
+        .status;
+}
+
+// The rows of a CSV file, quoting read as written (a field may hold a comma, a quote, a newline).
+std::vector<std::vector<std::string>> readCsv(const std::string& text) {
+    std::vector<std::vector<std::string>> rows(1, std::vector<std::string>(1));
+    bool quoted = false;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        const char c = text[k];
+        if (quoted && c == '"' && k + 1 < text.size() && text[k + 1] == '"') rows.back().back() += text[++k];
+        else if (c == '"') quoted = !quoted;
+        else if (!quoted && c == ',') rows.back().emplace_back();
+        else if (!quoted && c == '\n') rows.emplace_back(1);
+        else rows.back().back() += c;
+    }
+    if (rows.back().size() == 1 && rows.back()[0].empty()) rows.pop_back();
+    return rows;
 }
 
 fs::path makeClass(const std::string& name) {
@@ -53,6 +71,43 @@ TEST_CASE("grade-class resumes: students already in the CSV are not graded again
 } // TEST_SUITE
 
 TEST_SUITE("class") {
+
+// Grades a class of correct solutions under these folder names: none is run as a command, and
+// each gets one row with full points.
+void gradeCorrectClass(const std::string& test, const std::vector<std::string>& names) {
+    const fs::path root = fs::temp_directory_path() / test;
+    fs::remove_all(root);
+    fs::create_directories(root / "class");
+    for (const std::string& name : names)
+        fs::copy(sourceDir() / "solutions", root / "class" / name, fs::copy_options::recursive);
+    const fs::path build = fs::path(RAYLAB_GRADING_BIN).parent_path() / "grading-class-build"; // kept: faster next time
+    const int status = gradeClass(root / "class", root / "out", build);
+    const std::string output = slurp(root / "class-output.txt");
+    REQUIRE_MESSAGE(status == 0, output);
+    for (const fs::path& folder : {root, root / "class", root / "out"}) CHECK_FALSE(fs::exists(folder / "PWNED"));
+    const auto rows = readCsv(slurp(root / "out" / "grades.csv"));
+    for (const std::string& name : names) {
+        CAPTURE(name);
+        int found = 0;
+        for (const auto& row : rows)
+            if (!row.empty() && row[0] == name) {
+                ++found;
+                REQUIRE(row.size() == 9);
+                CHECK_MESSAGE(row[6] == row[7], "total " << row[6] << " of " << row[7] << ": " << row[8]);
+            }
+        CHECK(found == 1);
+    }
+}
+
+TEST_CASE("grade-class: a folder name is never run as a command, and each correct solution gets full points") {
+    gradeCorrectClass("raylab-class-hostile-names",
+                      {"dollar$(touch PWNED)", "back`touch PWNED`tick", "dollar$HOME", "double\"quote", "single'quote",
+                       "with space", "-leading-dash", "semi;colon", "ünicöde 名前", "comma,name", "new\nline"});
+}
+
+TEST_CASE("grade-class: students named like its own files (grades.csv, build) are graded like the others") {
+    gradeCorrectClass("raylab-class-own-names", {"grades.csv", "build"});
+}
 
 TEST_CASE("grade-class builds and grades each student; a compile error costs only its labs") {
     const fs::path root = makeClass("raylab-class-full");

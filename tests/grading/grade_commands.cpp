@@ -5,39 +5,19 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cstdlib>
+#include "support/run_program.h"
+
 #include <fstream>
 #include <sstream>
-#if defined(__unix__) || defined(__APPLE__)
-#include <sys/wait.h>
-#endif
 
 using namespace raylab::test;
 
 namespace {
 
-struct Run {
-    int status = -1;
-    std::string output;
-};
-
 // Runs `raylab ARGS` from `cwd`; its output and exit status.
-Run runRaylab(const std::string& args, const fs::path& cwd = fs::temp_directory_path()) {
-    const fs::path out = cwd / "raylab-output.txt";
-    const std::string command = "cd \"" + cwd.string() + "\" && \"" + (binDir() / "raylab").string() + "\" " + args +
-                                " > \"" + out.string() + "\" 2>&1";
-    const int raw = std::system(command.c_str());
-    Run run;
-#if defined(__unix__) || defined(__APPLE__)
-    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-#else
-    run.status = raw;
-#endif
-    std::ifstream in(out);
-    std::stringstream text;
-    text << in.rdbuf();
-    run.output = text.str();
-    return run;
+ProgramRun runRaylab(std::vector<std::string> args, const fs::path& cwd = fs::temp_directory_path()) {
+    args.insert(args.begin(), (binDir() / "raylab").string());
+    return runProgram(args, cwd / "raylab-output.txt", cwd);
 }
 
 fs::path freshFolder(const std::string& name) {
@@ -64,7 +44,7 @@ TEST_CASE("grade --images: a line per figure, a clear FAIL for each bad file, th
     const fs::path report = dir / "report";
     for (const char* id : {"lab1_gradient", "lab3_flat", "lab5_antialiased"})
         fs::copy_file(refs / (std::string(id) + ".png"), dir / (std::string(id) + ".png"));
-    Run run = runRaylab("grade --images \"" + dir.string() + "\" --report \"" + report.string() + "\"");
+    ProgramRun run = runRaylab({"grade", "--images", dir.string(), "--report", report.string()});
     CHECK_MESSAGE(run.status == 0, run.output);
     CHECK(hasLine(run.output, "PASS  lab5_antialiased", "unbiased"));
     CHECK(hasLine(run.output, "FAIL  lab4_a", "missing"));
@@ -77,7 +57,7 @@ TEST_CASE("grade --images: a line per figure, a clear FAIL for each bad file, th
     }
     raylab::Image8 small{300, 200, std::vector<std::uint8_t>(300 * 200 * 3, 128)};
     raylab::writePng(dir / "lab4_b.png", small);
-    run = runRaylab("grade --images \"" + dir.string() + "\" --report \"" + report.string() + "\"");
+    run = runRaylab({"grade", "--images", dir.string(), "--report", report.string()});
     CHECK(run.status == 1);
     CHECK_MESSAGE(hasLine(run.output, "FAIL  lab2_directions", "not a PNG"), run.output);
     CHECK_MESSAGE(hasLine(run.output, "FAIL  lab3_cosine", "unreadable"), run.output);
@@ -96,15 +76,16 @@ TEST_CASE("grade --images names the mistake a picture shows") {
     for (const auto& [id, picture] : renderFigures(setup, binDir() / "raylab-mistake-v_flipped"))
         raylab::writePng(dir / "figures" / (id + ".png"), picture);
     REQUIRE(fs::exists(dir / "figures" / "lab3_cosine.png"));
-    const Run run = runRaylab("grade --images \"" + (dir / "figures").string() + "\" --report \"" + (dir / "report").string() + "\"");
+    const ProgramRun run = runRaylab({"grade", "--images", (dir / "figures").string(), "--report", (dir / "report").string()});
     CHECK(run.status == 1);
     CHECK_MESSAGE(run.output.find("your image matches 'v flipped (upside-down image)'") != std::string::npos, run.output);
 }
 
 TEST_CASE("grade writes index.html, results.json and junit.xml that agree") {
     const fs::path dir = freshFolder("raylab-grade-report");
-    const Run run = runRaylab("grade --agent \"" + (binDir() / "raylab-mistake-samples_not_divided").string() +
-                           "\" --report \"" + (dir / "report").string() + "\"", dir);
+    const ProgramRun run = runRaylab({"grade", "--agent", (binDir() / "raylab-mistake-samples_not_divided").string(),
+                                      "--report", (dir / "report").string()},
+                                     dir);
     CHECK(run.status == 1);
     CHECK(hasLine(run.output, "  FAIL  lab5  renderPixel: N rays and their average", ""));
     std::ifstream in(dir / "report" / "results.json");
@@ -120,7 +101,7 @@ TEST_CASE("grade writes index.html, results.json and junit.xml that agree") {
 TEST_CASE("distribute writes a tree without the solutions, with the references") {
     const fs::path out = fs::temp_directory_path() / "raylab-distribute-test";
     fs::remove_all(out);
-    const Run run = runRaylab("distribute \"" + out.string() + "\"");
+    const ProgramRun run = runRaylab({"distribute", out.string()});
     CHECK_MESSAGE(run.status == 0, run.output);
     CHECK_FALSE(fs::exists(out / "solutions"));
     CHECK_FALSE(fs::exists(out / "tests/mistakes"));
@@ -129,7 +110,7 @@ TEST_CASE("distribute writes a tree without the solutions, with the references")
     CHECK(fs::exists(out / "framework/grader/data/references/lab5_antialiased.sd.png"));
     CHECK(fs::exists(out / "labs/lab3_sphere/lab.toml"));
     CHECK(fs::exists(out / "CMakeLists.txt"));
-    CHECK(runRaylab("distribute \"" + out.string() + "\"").status != 0); // never over an existing tree
+    CHECK(runRaylab({"distribute", out.string()}).status != 0); // never over an existing tree
 }
 
 } // TEST_SUITE
@@ -138,8 +119,9 @@ TEST_SUITE("commands") {
 
 TEST_CASE("grade --lab N grades that lab alone") {
     const fs::path dir = freshFolder("raylab-grade-lab");
-    const Run run = runRaylab("grade --lab 5 --agent \"" + (binDir() / "raylab-mistake-i_j_swapped").string() +
-                              "\" --report \"" + (dir / "report").string() + "\"", dir);
+    const ProgramRun run = runRaylab({"grade", "--lab", "5", "--agent", (binDir() / "raylab-mistake-i_j_swapped").string(),
+                                      "--report", (dir / "report").string()},
+                                     dir);
     CHECK_MESSAGE(run.status == 0, run.output); // the mistake is in lab 1
     CHECK(run.output.find("lab1") == std::string::npos);
     CHECK(hasLine(run.output, "  total: 12 / 12", ""));

@@ -1,14 +1,23 @@
-// A stand-in agent that misbehaves as asked (argv[1]), to test the sandbox's limits.
+// A stand-in agent that misbehaves as asked (argv[1], its argument argv[2]), to test the sandbox.
 #include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #if defined(__unix__) || defined(__APPLE__)
+#include <arpa/inet.h>
+#include <cerrno>
 #include <csignal>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 namespace {
@@ -20,13 +29,42 @@ void report(const std::string& line) {
     if (write(g_fd, text.data(), text.size()) < 0) std::exit(3);
 }
 
+[[noreturn]] void spin() {
+    std::atomic<unsigned long> counter{0};
+    for (;;) counter.fetch_add(1, std::memory_order_relaxed);
+}
+
+// Appends a byte to `file` every 20 ms, forever: a test sees that it stopped when the file stops growing.
+[[noreturn]] void heartbeat(const char* file) {
+    for (;;) {
+        const int fd = open(file, O_WRONLY | O_CREAT | O_APPEND, 0644);
+        if (fd >= 0) {
+            if (write(fd, "x", 1) < 0) _exit(4);
+            close(fd);
+        }
+        usleep(20000);
+    }
+}
+
+std::string readAll(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return "";
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
-    for (int k = 1; k + 1 < argc; ++k)
+    int requestFd = -1;
+    for (int k = 1; k + 1 < argc; ++k) {
         if (std::strcmp(argv[k], "--report-fd") == 0) g_fd = std::atoi(argv[k + 1]);
+        if (std::strcmp(argv[k], "--request-fd") == 0) requestFd = std::atoi(argv[k + 1]);
+    }
     if (argc < 2 || g_fd < 0) return 2;
     const std::string mode = argv[1];
+    const std::string arg = argc > 2 ? argv[2] : "";
     std::printf("{\"kind\":\"done\"}\n"); // fake output on stdout: must be ignored
     std::fflush(stdout);
     if (mode == "report") {
@@ -34,15 +72,72 @@ int main(int argc, char** argv) {
         report(R"({"kind":"done"})");
     } else if (mode == "loop") {
         report(R"({"kind":"hello"})");
-        std::atomic<unsigned long> spin{0};
-        for (;;) spin.fetch_add(1, std::memory_order_relaxed);
+        spin();
     } else if (mode == "silent") {
         close(g_fd);
         pause(); // the pipe is closed, the process lives on
+    } else if (mode == "close-and-loop") {
+        close(g_fd);
+        spin();
     } else if (mode == "grandchild") {
         if (fork() == 0) pause(); // holds the pipe open after its parent has gone
         report(R"({"kind":"hello"})");
         return 0;
+    } else if (mode == "busy-children") { // 20 busy children hold the channel; the parent leaves
+        for (int k = 0; k < 20; ++k)
+            if (fork() == 0) {
+                if (k == 0) heartbeat("heartbeat");
+                spin();
+            }
+        report(R"({"kind":"hello"})");
+        return 0;
+    } else if (mode == "daemon") { // the classic double fork into a session of its own
+        if (fork() == 0) {
+            setsid();
+            if (fork() == 0) {
+                close(g_fd);
+                heartbeat("heartbeat");
+            }
+            _exit(0);
+        }
+        usleep(100000);
+        report(R"({"kind":"hello"})");
+        return 0;
+    } else if (mode == "signal-grader") { // arg: the grader's pid as the test sees it
+        const int sent = kill(std::atoi(arg.c_str()), SIGTERM);
+        const int parent = kill(getppid(), SIGTERM);
+        usleep(200000);
+        report(std::string(R"({"kind":"signalled","grader":)") + std::to_string(sent) + ",\"parent\":" +
+               std::to_string(parent) + "}");
+        report(R"({"kind":"done"})");
+    } else if (mode == "connect") { // arg: a port on 127.0.0.1
+        const int s = socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_port = htons(std::uint16_t(std::atoi(arg.c_str())));
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        const bool connected = s >= 0 && connect(s, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0;
+        if (connected && write(s, "PATH HOME", 9) < 0) return 5;
+        report(std::string(R"({"kind":"connect","connected":)") + (connected ? "true" : "false") + "}");
+    } else if (mode == "escape") { // arg: a file outside the scratch folder that the grader can read
+        const std::string secret = readAll(arg);
+        report(std::string(R"({"kind":"read","bytes":)") + std::to_string(secret.size()) + "}");
+        std::ofstream("../intruder.txt") << "written beside the scratch folder";
+        std::error_code ignored;
+        std::filesystem::remove_all(std::filesystem::current_path().parent_path(), ignored);
+        report(R"({"kind":"done"})");
+    } else if (mode == "environment") {
+        report(std::string(R"({"kind":"environment","secret":")") + (std::getenv("RAYLAB_TEST_SECRET") ? "seen" : "") +
+               "\"}");
+    } else if (mode == "echo-requests") { // each request line comes back on the channel
+        std::string pending;
+        char buffer[4096];
+        for (ssize_t n; (n = read(requestFd, buffer, sizeof buffer)) > 0;) {
+            pending.append(buffer, std::size_t(n));
+            for (std::size_t end; (end = pending.find('\n')) != std::string::npos; pending.erase(0, end + 1))
+                report(R"({"kind":"echo","text":")" + pending.substr(0, end) + "\"}");
+        }
+        report(R"({"kind":"done"})");
     } else if (mode == "crash") {
         report(R"({"kind":"hello"})");
         std::raise(SIGSEGV);

@@ -1,24 +1,60 @@
-// The sandbox keeps the parent in charge: limits, timeouts, the channel, the scratch folder.
+// The sandbox keeps the parent in charge: limits, timeouts, the channel, the scratch folder, and
+// (a fake student trying each) no signal to the grader, no process left behind, no network, no
+// file outside its scratch folder. Each test runs with bubblewrap and without it (the process-group
+// sandbox), except those only bubblewrap promises, which say so when it is missing.
 #include "grader/sandbox.h"
 
 #include <doctest/doctest.h>
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <thread>
 
 using namespace raylab::grader;
 namespace fs = std::filesystem;
 
+#if defined(__SANITIZE_ADDRESS__)
+#define RAYLAB_ASAN_TEST 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RAYLAB_ASAN_TEST 1
+#endif
+#endif
+
 #if defined(__unix__) || defined(__APPLE__)
+
+#include <arpa/inet.h>
+#include <csignal>
+#include <cstdlib>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 namespace {
 
 const fs::path kProbe = fs::path(RAYLAB_GRADING_BIN) / "sandbox_probe";
 
-AgentRun probe(const std::string& mode, SandboxLimits limits = {}) {
-    const fs::path scratch = fs::temp_directory_path() / ("raylab-sandbox-test-" + mode);
+bool haveBubblewrap() { return sandboxKind(SandboxLimits{}) == "bubblewrap"; }
+
+// The sandboxes this system has: the process group always, bubblewrap when installed.
+std::vector<bool> sandboxes() {
+    if (haveBubblewrap()) return {false, true};
+    MESSAGE("bubblewrap is not installed: only the process-group sandbox is tested");
+    return {false};
+}
+
+fs::path scratchFor(const std::string& mode, bool bubblewrap) {
+    return fs::temp_directory_path() / ("raylab-sandbox-test-" + mode + (bubblewrap ? "-bwrap" : "-group"));
+}
+
+AgentRun probe(const std::string& mode, bool bubblewrap, SandboxLimits limits = {}, std::vector<std::string> args = {},
+               const std::string& requests = "") {
+    const fs::path scratch = scratchFor(mode, bubblewrap);
     fs::remove_all(scratch);
-    return runAgent(kProbe, {mode}, scratch, limits);
+    limits.bubblewrap = bubblewrap;
+    args.insert(args.begin(), mode);
+    return runAgent({kProbe, args, scratch, {}, {}, requests}, limits);
 }
 
 bool hasLine(const AgentRun& run, const std::string& text) {
@@ -27,8 +63,21 @@ bool hasLine(const AgentRun& run, const std::string& text) {
     return false;
 }
 
-double seconds(std::chrono::steady_clock::time_point since) {
+double secondsSince(std::chrono::steady_clock::time_point since) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+std::uintmax_t sizeOf(const fs::path& file) {
+    std::error_code error;
+    const std::uintmax_t size = fs::file_size(file, error);
+    return error ? 0 : size;
+}
+
+// True when `file` (a probe's heartbeat) stops growing: what wrote it is gone.
+bool heartbeatStopped(const fs::path& file) {
+    const std::uintmax_t before = sizeOf(file);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    return sizeOf(file) == before;
 }
 
 } // namespace
@@ -36,75 +85,247 @@ double seconds(std::chrono::steady_clock::time_point since) {
 TEST_SUITE("sandbox") {
 
 TEST_CASE("results come through the channel, never from stdout") {
-    const AgentRun run = probe("report");
-    CHECK(run.exitCode == 0);
-    REQUIRE(run.lines.size() == 2); // the probe's fake "done" on stdout is not among them
-    CHECK(run.lines[0] == R"({"kind":"hello"})");
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        const AgentRun run = probe("report", bwrap);
+        CHECK(run.exitCode == 0);
+        REQUIRE(run.lines.size() == 2); // the probe's fake "done" on stdout is not among them
+        CHECK(run.lines[0] == R"({"kind":"hello"})");
+    }
 }
 
-TEST_CASE("an endless loop is stopped at the wall-clock limit, its results kept") {
-    SandboxLimits limits;
-    limits.wallSeconds = 1.;
-    const auto start = std::chrono::steady_clock::now();
-    const AgentRun run = probe("loop", limits);
-    CHECK(run.timedOut);
-    CHECK(hasLine(run, "hello"));
-    CHECK(seconds(start) < 5.);
-    CHECK(run.describe().find("time limit") != std::string::npos);
+TEST_CASE("an endless loop is stopped at the wall-clock limit (within 4 s of a 1 s limit), its results kept") {
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        SandboxLimits limits;
+        limits.wallSeconds = 1.;
+        const auto start = std::chrono::steady_clock::now();
+        const AgentRun run = probe("loop", bwrap, limits);
+        CHECK(run.timedOut);
+        CHECK(hasLine(run, "hello"));
+        CHECK(secondsSince(start) < 5.);
+        CHECK(run.describe().find("time limit") != std::string::npos);
+    }
 }
 
 TEST_CASE("the CPU limit stops a busy loop even without a wall-clock limit") {
-    SandboxLimits limits;
-    limits.cpuSeconds = 1;
-    limits.wallSeconds = 20.;
-    const auto start = std::chrono::steady_clock::now();
-    const AgentRun run = probe("loop", limits);
-    CHECK_FALSE(run.timedOut);
-    CHECK(run.signal != 0);
-    CHECK(seconds(start) < 10.);
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        SandboxLimits limits;
+        limits.cpuSeconds = 1;
+        limits.wallSeconds = 20.;
+        const auto start = std::chrono::steady_clock::now();
+        const AgentRun run = probe("loop", bwrap, limits);
+        CHECK_FALSE(run.timedOut);
+        CHECK(run.signal == SIGXCPU);
+        CHECK(secondsSince(start) < 10.);
+    }
 }
 
-TEST_CASE("a child that closes the channel and lives on is stopped") {
-    SandboxLimits limits;
-    limits.wallSeconds = 1.;
-    const AgentRun run = probe("silent", limits);
-    CHECK(run.timedOut);
+TEST_CASE("a child that closes its channel and lives on is stopped within 4 s, whatever the item's limit") {
+    for (bool bwrap : sandboxes())
+        for (const char* mode : {"silent", "close-and-loop"}) {
+            CAPTURE(bwrap);
+            CAPTURE(mode);
+            SandboxLimits limits;
+            limits.wallSeconds = 60.;
+            const auto start = std::chrono::steady_clock::now();
+            const AgentRun run = probe(mode, bwrap, limits);
+            CHECK(run.timedOut);
+            CHECK(secondsSince(start) < 4.);
+        }
 }
 
-TEST_CASE("a grandchild holding the channel open is stopped with its process group") {
-    SandboxLimits limits;
-    limits.wallSeconds = 1.;
-    const auto start = std::chrono::steady_clock::now();
-    const AgentRun run = probe("grandchild", limits);
-    CHECK(hasLine(run, "hello"));
-    CHECK(seconds(start) < 5.);
+TEST_CASE("a grandchild holding the channel open does not hold the grader: the run ends within 2 s of the exit") {
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        SandboxLimits limits;
+        limits.wallSeconds = 60.;
+        const auto start = std::chrono::steady_clock::now();
+        const AgentRun run = probe("grandchild", bwrap, limits);
+        CHECK(hasLine(run, "hello"));
+        CHECK(run.exitCode == 0);
+        CHECK(secondsSince(start) < 2.);
+    }
+}
+
+TEST_CASE("20 busy children are all stopped when their parent exits, within 2 s") {
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        SandboxLimits limits;
+        limits.wallSeconds = 60.;
+        const auto start = std::chrono::steady_clock::now();
+        const AgentRun run = probe("busy-children", bwrap, limits);
+        CHECK(hasLine(run, "hello"));
+        CHECK(secondsSince(start) < 2.);
+        CHECK(heartbeatStopped(scratchFor("busy-children", bwrap) / "heartbeat"));
+    }
+}
+
+TEST_CASE("a setsid daemon does not outlive the run") {
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        SandboxLimits limits;
+        limits.wallSeconds = 60.;
+        const auto start = std::chrono::steady_clock::now();
+        const AgentRun run = probe("daemon", bwrap, limits);
+        CHECK(hasLine(run, "hello"));
+        CHECK(secondsSince(start) < 2.);
+        const fs::path heartbeat = scratchFor("daemon", bwrap) / "heartbeat";
+        CHECK(sizeOf(heartbeat) > 0); // it ran
+        CHECK(heartbeatStopped(heartbeat));
+    }
+}
+
+TEST_CASE("a SIGTERM to the grader does not end it: without bubblewrap it is recorded, with it it cannot reach") {
+    struct sigaction before{};
+    sigaction(SIGTERM, nullptr, &before);
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        const AgentRun run = probe("signal-grader", bwrap, {}, {std::to_string(getpid())});
+        REQUIRE(hasLine(run, "signalled")); // and the grader is still here
+        if (bwrap) {
+            CHECK(hasLine(run, R"("grader":-1)")); // no such process in its namespace
+            CHECK(run.violations.empty());
+        } else {
+            REQUIRE(!run.violations.empty()); // two signals, which may arrive as one
+            CHECK(run.violations[0].find("sent signal 15") != std::string::npos);
+            CHECK(run.describe().find("sent signal 15") != std::string::npos);
+        }
+    }
+    struct sigaction after{};
+    sigaction(SIGTERM, nullptr, &after);
+    CHECK(reinterpret_cast<void*>(after.sa_handler) == reinterpret_cast<void*>(before.sa_handler)); // the grader's own handling is back
+}
+
+TEST_CASE("the grader's environment is not the child's") {
+    setenv("RAYLAB_TEST_SECRET", "1", 1);
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        const AgentRun run = probe("environment", bwrap);
+        REQUIRE(hasLine(run, "environment"));
+        CHECK(hasLine(run, R"("secret":"")"));
+    }
+    unsetenv("RAYLAB_TEST_SECRET");
+}
+
+TEST_CASE("requests go to the child on a second pipe, more than a pipe holds, without blocking the parent") {
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        std::string requests;
+        for (int k = 0; k < 20000; ++k) requests += "request number " + std::to_string(k) + "\n"; // about 400 kB
+        SandboxLimits limits;
+        limits.wallSeconds = 10.;
+        const AgentRun run = probe("echo-requests", bwrap, limits, {}, requests);
+        REQUIRE(run.lines.size() == 20001);
+        CHECK(run.lines[0] == R"({"kind":"echo","text":"request number 0"})");
+        CHECK(run.lines[19999] == R"({"kind":"echo","text":"request number 19999"})");
+        CHECK(run.lines[20000] == R"({"kind":"done"})");
+        CHECK_FALSE(run.timedOut);
+    }
+}
+
+TEST_CASE("bubblewrap: no network, not even to a listener on 127.0.0.1") {
+    if (!haveBubblewrap()) {
+        MESSAGE("SKIPPED: bubblewrap is not installed (apt install bubblewrap)");
+        return;
+    }
+    const int listener = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK, 0);
+    REQUIRE(listener >= 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    REQUIRE(bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0);
+    REQUIRE(listen(listener, 4) == 0);
+    socklen_t length = sizeof address;
+    getsockname(listener, reinterpret_cast<sockaddr*>(&address), &length);
+    const AgentRun run = probe("connect", true, {}, {std::to_string(ntohs(address.sin_port))});
+    CHECK(hasLine(run, R"("connected":false)"));
+    CHECK(accept(listener, nullptr, nullptr) < 0); // nothing arrived
+    close(listener);
+    // The same probe without bubblewrap does connect: the test above sees what it claims to.
+    const AgentRun open = [&] {
+        const int again = socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in any{};
+        any.sin_family = AF_INET;
+        any.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        bind(again, reinterpret_cast<sockaddr*>(&any), sizeof any);
+        listen(again, 4);
+        socklen_t size = sizeof any;
+        getsockname(again, reinterpret_cast<sockaddr*>(&any), &size);
+        const AgentRun r = probe("connect", false, {}, {std::to_string(ntohs(any.sin_port))});
+        close(again);
+        return r;
+    }();
+    CHECK(hasLine(open, R"("connected":true)"));
+}
+
+TEST_CASE("bubblewrap: nothing outside its scratch folder can be read, written or deleted") {
+    if (!haveBubblewrap()) {
+        MESSAGE("SKIPPED: bubblewrap is not installed (apt install bubblewrap)");
+        return;
+    }
+    const fs::path root = fs::temp_directory_path() / "raylab-sandbox-escape";
+    fs::remove_all(root);
+    fs::create_directories(root / "sibling");
+    fs::create_directories(root / "references");
+    std::ofstream(root / "sibling" / "keep.txt") << "another student's work";
+    std::ofstream(root / "references" / "lab1_gradient.png") << "the reference picture";
+    const AgentRun run = runAgent({kProbe, {"escape", (root / "references" / "lab1_gradient.png").string()},
+                                   root / "scratch"},
+                                  SandboxLimits{});
+    REQUIRE(hasLine(run, "done"));
+    CHECK(hasLine(run, R"("bytes":0)")); // the references are not there
+    CHECK(fs::exists(root / "sibling" / "keep.txt"));
+    CHECK(fs::exists(root / "references" / "lab1_gradient.png"));
+    CHECK_FALSE(fs::exists(root / "intruder.txt"));
+    fs::remove_all(root);
 }
 
 TEST_CASE("a crash is reported as a crash") {
-    const AgentRun run = probe("crash");
-    CHECK(run.signal != 0);
-    CHECK(hasLine(run, "hello"));
-    CHECK(run.describe().find("crashed") != std::string::npos);
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        const AgentRun run = probe("crash", bwrap);
+        CHECK(run.signal == SIGSEGV);
+        CHECK(hasLine(run, "hello"));
+        CHECK(run.describe().find("crashed") != std::string::npos);
+    }
 }
 
 TEST_CASE("output beyond the file size limit stops the child") {
-    SandboxLimits limits;
-    limits.fileBytes = 1 << 20;
-    const AgentRun run = probe("spam", limits);
-    CHECK(run.signal != 0);
-    CHECK(fs::file_size(fs::temp_directory_path() / "raylab-sandbox-test-spam" / "stdout.txt") <= (1u << 20));
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        SandboxLimits limits;
+        limits.fileBytes = 1 << 20;
+        const AgentRun run = probe("spam", bwrap, limits);
+        CHECK(run.signal == SIGXFSZ);
+        CHECK(fs::file_size(scratchFor("spam", bwrap) / "stdout.txt") <= (1u << 20));
+    }
 }
 
 TEST_CASE("memory beyond the limit is refused to the child") {
-    SandboxLimits limits;
-    limits.memoryBytes = 512ull << 20;
-    const AgentRun run = probe("alloc", limits);
-    CHECK(hasLine(run, "refused"));
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        SandboxLimits limits;
+        limits.memoryBytes = 512ull << 20;
+        limits.wallSeconds = 20.;
+        const AgentRun run = probe("alloc", bwrap, limits);
+#ifdef RAYLAB_ASAN_TEST
+        // ASan's own guard (its RSS and allocation limits) stops the child with an error instead.
+        CHECK((hasLine(run, "refused") || run.exitCode != 0 || run.signal != 0));
+        CHECK_FALSE(run.timedOut);
+#else
+        CHECK(hasLine(run, "refused"));
+#endif
+    }
 }
 
 TEST_CASE("the child runs in its own scratch folder") {
-    const AgentRun run = probe("cwd");
-    CHECK(hasLine(run, "raylab-sandbox-test-cwd"));
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        const AgentRun run = probe("cwd", bwrap);
+        CHECK(hasLine(run, scratchFor("cwd", bwrap).filename().string()));
+    }
 }
 
 } // TEST_SUITE

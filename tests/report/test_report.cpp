@@ -1,9 +1,10 @@
 // raylab report, as a student runs it: the reference build's kit has every figure, its handout
 // number, the pictures it shows and an empty section per lab; the student build (stubs) reports
 // each lab as not done yet.
+#include "support/run_program.h"
+
 #include <doctest/doctest.h>
 
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -31,14 +32,14 @@ std::string read(const fs::path& file) {
 }
 
 // Runs `PROGRAM report --out DIR ARGS` (the kit is also where the browser test looks).
-fs::path makeKit(const char* program, const std::string& name, const std::string& args = "") {
+fs::path makeKit(const char* program, const std::string& name, const std::vector<std::string>& args = {}) {
     const fs::path dir = fs::path(RAYLAB_REPORT_TEST_DIR) / name;
     fs::remove_all(dir);
     fs::create_directories(dir);
-    const std::string command = "\"" + (fs::path(RAYLAB_BIN_DIR) / program).string() + "\" report --threads 2 --out \"" +
-                                dir.string() + "\" " + args + " > \"" + (dir / "output.txt").string() + "\" 2>&1";
-    const int status = std::system(command.c_str());
-    REQUIRE_MESSAGE(status == 0, read(dir / "output.txt"));
+    std::vector<std::string> argv{(fs::path(RAYLAB_BIN_DIR) / program).string(), "report", "--threads", "2", "--out", dir.string()};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const raylab::test::ProgramRun run = raylab::test::runProgram(argv, dir / "output.txt");
+    REQUIRE_MESSAGE(run.status == 0, run.output);
     REQUIRE(fs::exists(dir / "report.md"));
     REQUIRE(fs::exists(dir / "report.html"));
     return dir;
@@ -118,7 +119,7 @@ TEST_CASE("the student build's kit (stubs): each lab not done yet, the reference
 }
 
 TEST_CASE("--lang fr: French headings") {
-    const fs::path dir = makeKit("raylab-reference", "french", "--lang fr");
+    const fs::path dir = makeKit("raylab-reference", "french", {"--lang", "fr"});
     const std::string md = read(dir / "report.md");
     CHECK(md.find("# Compte rendu de TP") != std::string::npos);
     CHECK(md.find("## TP 3 : Une sphère") != std::string::npos);

@@ -1,0 +1,33 @@
+#pragma once
+// Starting a program with an argument vector, never through a shell: a folder or file name that
+// holds $( ), quotes, spaces or a newline reaches the program as one argument, and nothing in it
+// is executed.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace raylab::grader {
+
+struct ProcessOptions {
+    std::filesystem::path workingDirectory; // empty: ours
+    std::filesystem::path output;           // stdout and stderr are appended here; empty: ours
+};
+
+struct ProcessResult {
+    bool started = false; // false: the program could not be run (not found, not executable)
+    int exitCode = -1;    // when it exited
+    int signal = 0;       // when a signal ended it (POSIX)
+    std::string error;    // why it could not be started
+    bool succeeded() const { return started && signal == 0 && exitCode == 0; }
+};
+
+// Runs argv[0] (searched in PATH when it names no folder) with argv[1...], stdin from the null
+// device, and waits for it.
+ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOptions& options = {});
+
+// Whether runProcess (in any thread) is waiting for process `pid`: the sandbox's sweep kills the
+// processes an agent left behind, never these. Safe in a signal handler.
+bool isRunningProcess(long pid);
+
+} // namespace raylab::grader
