@@ -1,0 +1,234 @@
+// raylab grade-class as a ledger: interrupted at random points it resumes to the CSV of a quiet run;
+// a second run on the same --out refuses (or waits); hostile folder names each get their own row.
+// The students are graded by a prebuilt agent (--agent), so no test here runs CMake.
+#include "grading_support.h"
+#include "support/read_csv.h"
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+#if defined(__unix__) || defined(__APPLE__)
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#define RAYLAB_LEDGER_TESTS 1
+#endif
+
+using namespace raylab::test;
+
+#ifdef RAYLAB_LEDGER_TESTS
+
+namespace {
+
+std::string slurp(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// raylab running in its own process group, as a shell starts a command; its output in `output`.
+struct Raylab {
+    pid_t pid = -1;
+    fs::path output;
+
+    // Its exit status, 128 + the signal when one ended it.
+    int finish() {
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0)
+            if (errno != EINTR) return -1;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    }
+    std::string text() const { return slurp(output); }
+};
+
+Raylab startRaylab(const std::vector<std::string>& args, const fs::path& output) {
+    std::vector<std::string> argv{(binDir() / "raylab").string()};
+    argv.insert(argv.end(), args.begin(), args.end());
+    std::vector<char*> cargs;
+    for (std::string& a : argv) cargs.push_back(a.data());
+    cargs.push_back(nullptr);
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+        setpgid(0, 0);
+        const int out = open(output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int null = open("/dev/null", O_RDONLY);
+        if (out < 0 || null < 0) _exit(126);
+        dup2(null, 0);
+        dup2(out, 1);
+        dup2(out, 2);
+        execv(cargs[0], cargs.data());
+        _exit(127);
+    }
+    setpgid(pid, pid);
+    return {pid, output};
+}
+
+// grade-class of `classDir` into `out`, every student graded by the reference agent.
+std::vector<std::string> classArgs(const fs::path& classDir, const fs::path& out) {
+    return {"grade-class", classDir.string(), "--out", out.string(), "--agent",
+            (binDir() / "raylab-agent-reference").string(), "--threads", "2", "--timeout", "60"};
+}
+
+fs::path freshFolder(const std::string& name) {
+    const fs::path folder = fs::temp_directory_path() / name;
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
+}
+
+// A class of small submissions (the agent grades, so their content does not matter; they are not empty).
+fs::path makeClass(const fs::path& root, const std::vector<std::string>& names) {
+    for (const std::string& name : names) {
+        fs::create_directories(root / "class" / name / "lab1_first_image");
+        std::ofstream(root / "class" / name / "lab1_first_image" / "gradient.cpp") << "// " << name << "\n";
+    }
+    return root / "class";
+}
+
+// The results of a run, by the folder each student got.
+std::map<std::string, std::string> results(const fs::path& out) {
+    std::map<std::string, std::string> found;
+    for (const auto& entry : fs::directory_iterator(out / "students"))
+        if (fs::exists(entry.path() / "result.json")) found[entry.path().filename().string()] = slurp(entry.path() / "result.json");
+    return found;
+}
+
+const std::vector<std::string> kSix{"ann", "bob", "chloé", "dan", "eve", "fay"};
+
+} // namespace
+
+TEST_SUITE("class ledger") {
+
+TEST_CASE("grade-class interrupted 5 times at random points resumes to the CSV of an uninterrupted run") {
+    const fs::path root = freshFolder("raylab-ledger-interrupted");
+    const fs::path classDir = makeClass(root, kSix);
+
+    const auto start = std::chrono::steady_clock::now();
+    Raylab quiet = startRaylab(classArgs(classDir, root / "quiet"), root / "quiet.txt");
+    REQUIRE_MESSAGE(quiet.finish() == 0, quiet.text());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string expected = slurp(root / "quiet" / "grades.csv");
+    REQUIRE(readCsv(expected).size() == kSix.size() + 1);
+    const auto expectedResults = results(root / "quiet");
+
+    const unsigned seed = std::random_device{}();
+    std::mt19937 random(seed);
+    // Up to a third of a whole run: each stop lands on a student being graded (or on the start).
+    std::uniform_real_distribution<double> when(0., seconds / 3.);
+    int stoppedWhileGrading = 0;
+    for (int stop = 0; stop < 5; ++stop) {
+        CAPTURE(seed);
+        CAPTURE(stop);
+        Raylab run = startRaylab(classArgs(classDir, root / "stopped"), root / "stopped.txt");
+        std::this_thread::sleep_for(std::chrono::duration<double>(when(random)));
+        kill(run.pid, SIGINT); // to raylab alone: the grading processes must be stopped by it
+        const int status = run.finish();
+        const std::string output = run.text();
+        CHECK_MESSAGE((status == 130 || status == 0), output);
+        if (status == 130) CHECK_MESSAGE(output.find("stopped by SIGINT") != std::string::npos, output);
+        if (output.find("interrupted: not graded") != std::string::npos) ++stoppedWhileGrading;
+        // Every result written so far is the one an uninterrupted run writes: none is partial.
+        for (const auto& [student, result] : results(root / "stopped")) CHECK(result == expectedResults.at(student));
+        const auto rows = readCsv(slurp(root / "stopped" / "grades.csv"));
+        CHECK(rows.size() == results(root / "stopped").size() + 1);
+    }
+    MESSAGE(stoppedWhileGrading << " of 5 stops fell on a student being graded (seed " << seed << ")");
+    Raylab last = startRaylab(classArgs(classDir, root / "stopped"), root / "stopped.txt");
+    REQUIRE_MESSAGE(last.finish() == 0, last.text());
+    CHECK(slurp(root / "stopped" / "grades.csv") == expected);
+}
+
+TEST_CASE("a second grade-class on the same --out refuses, naming the lock and the first run's pid; --wait waits") {
+    const fs::path root = freshFolder("raylab-ledger-twice");
+    const fs::path classDir = makeClass(root, kSix);
+    Raylab first = startRaylab(classArgs(classDir, root / "out"), root / "first.txt");
+    // The lock holds the first run's pid once it has taken it.
+    const fs::path lock = root / "out" / "grade-class.lock";
+    for (int k = 0; k < 500 && slurp(lock) != std::to_string(first.pid) + "\n"; ++k)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    REQUIRE(slurp(lock) == std::to_string(first.pid) + "\n");
+
+    Raylab second = startRaylab(classArgs(classDir, root / "out"), root / "second.txt");
+    const int secondStatus = second.finish();
+    const std::string refused = second.text();
+    CHECK(secondStatus == 1);
+    CHECK_MESSAGE(refused.find("another grade-class run (pid " + std::to_string(first.pid) + ")") != std::string::npos, refused);
+    CHECK_MESSAGE(refused.find(lock.string()) != std::string::npos, refused);
+    CHECK_MESSAGE(refused.find("--wait") != std::string::npos, refused);
+
+    std::vector<std::string> waitArgs = classArgs(classDir, root / "out");
+    waitArgs.push_back("--wait");
+    Raylab waiting = startRaylab(waitArgs, root / "waiting.txt");
+    CHECK(first.finish() == 0);
+    CHECK(waiting.finish() == 0);
+    const std::string waited = waiting.text();
+    CHECK_MESSAGE(waited.find("waiting: another grade-class run (pid " + std::to_string(first.pid) + ")") != std::string::npos,
+                  waited);
+    for (const std::string& name : kSix) CHECK_MESSAGE(waited.find(name) != std::string::npos, waited);
+    CHECK(waited.find("already graded") != std::string::npos);
+    CHECK(readCsv(slurp(root / "out" / "grades.csv")).size() == kSix.size() + 1);
+
+    // The lock of a run that died (its pid still in the file) is simply taken.
+    std::ofstream(lock) << "999999999\n";
+    Raylab after = startRaylab(classArgs(classDir, root / "out"), root / "after.txt");
+    CHECK_MESSAGE(after.finish() == 0, after.text());
+}
+
+TEST_CASE("hostile folder names each get their own row with the real name and full points; odd entries are skipped") {
+    const fs::path root = freshFolder("raylab-ledger-names");
+    const std::vector<std::string> names{"x$(touch PWNED)", "back`touch PWNED`tick", "double\"quote", "it's", "with space",
+                                         "-leading-dash", "ünïcödé 名前", "a,b", "new\nline", "grades.csv", "build",
+                                         "students", "%41", "A"};
+    const fs::path classDir = makeClass(root, names);
+    std::ofstream(classDir / "notes.txt") << "not a submission";
+    fs::create_directories(classDir / "empty");
+    fs::create_directory_symlink(classDir / "A", classDir / "link");
+    fs::create_directory_symlink("loop", classDir / "loop"); // a link to itself
+
+    Raylab run = startRaylab(classArgs(classDir, root / "out"), root / "output.txt");
+    const int status = run.finish();
+    const std::string output = run.text();
+    REQUIRE_MESSAGE(status == 0, output);
+    CHECK_MESSAGE(output.find("\nskipped 'notes.txt': not a folder\n") != std::string::npos, output);
+    CHECK_MESSAGE(output.find("\nskipped 'empty': an empty folder\n") != std::string::npos, output);
+    CHECK_MESSAGE(output.find("\nskipped 'link': a symbolic link") != std::string::npos, output);
+    CHECK_MESSAGE(output.find("\nskipped 'loop': a symbolic link") != std::string::npos, output);
+    CHECK_MESSAGE(output.find("new\\nline") != std::string::npos, output); // one line in the terminal
+
+    const auto rows = readCsv(slurp(root / "out" / "grades.csv"));
+    REQUIRE(!rows.empty());
+    const std::vector<std::string>& header = rows[0];
+    REQUIRE(header.size() >= 4);
+    CHECK(header[0] == "student");
+    const std::size_t total = std::size_t(std::find(header.begin(), header.end(), "total") - header.begin());
+    REQUIRE(total + 1 < header.size());
+    CHECK(rows.size() == names.size() + 1);
+    for (const std::string& name : names) {
+        CAPTURE(name);
+        int found = 0;
+        for (const auto& row : rows)
+            if (row[0] == name) {
+                ++found;
+                REQUIRE(row.size() == header.size());
+                CHECK(row[total] == row[total + 1]); // total == max
+                CHECK(std::stod(row[total]) > 0.);
+            }
+        CHECK(found == 1);
+    }
+    CHECK(results(root / "out").size() == names.size()); // a folder each
+    for (const fs::path& folder : {root, classDir, root / "out", fs::current_path()}) CHECK_FALSE(fs::exists(folder / "PWNED"));
+}
+
+} // TEST_SUITE
+
+#endif
