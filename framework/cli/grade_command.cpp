@@ -167,8 +167,9 @@ int gradeClass(const ClassRunOptions& run, const GradeOptions& o, const Context&
 
 void addCommonOptions(CLI::App* command, GradeOptions& o) {
     command->add_option("--references", o.references, "the reference folder (default: framework/grader/data/references)");
-    command->add_option("--timeout", o.timeout, "seconds a check or figure may run before it is stopped");
-    command->add_option("--build-dir", o.buildDir, "where submissions are built");
+    command->add_option("--timeout", o.timeout, "seconds a check or figure may run before it is stopped")
+        ->check(positiveSeconds());
+    command->add_option("--build-dir", o.buildDir, "where submissions are built (grade-class: a folder per student in it)");
 }
 
 } // namespace

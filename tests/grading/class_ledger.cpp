@@ -15,9 +15,7 @@
 #include <thread>
 #include <vector>
 #if defined(__unix__) || defined(__APPLE__)
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include "program_process.h"
 #define RAYLAB_LEDGER_TESTS 1
 #endif
 
@@ -34,43 +32,8 @@ std::string slurp(const fs::path& file) {
     return text.str();
 }
 
-// raylab running in its own process group, as a shell starts a command; its output in `output`.
-struct Raylab {
-    pid_t pid = -1;
-    fs::path output;
-
-    // Its exit status, 128 + the signal when one ended it.
-    int finish() {
-        int status = 0;
-        while (waitpid(pid, &status, 0) < 0)
-            if (errno != EINTR) return -1;
-        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    }
-    std::string text() const { return slurp(output); }
-};
-
-Raylab startRaylab(const std::vector<std::string>& args, const fs::path& output) {
-    std::vector<std::string> argv{(binDir() / "raylab").string()};
-    argv.insert(argv.end(), args.begin(), args.end());
-    std::vector<char*> cargs;
-    for (std::string& a : argv) cargs.push_back(a.data());
-    cargs.push_back(nullptr);
-    std::fflush(nullptr);
-    const pid_t pid = fork();
-    REQUIRE(pid >= 0);
-    if (pid == 0) {
-        setpgid(0, 0);
-        const int out = open(output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int null = open("/dev/null", O_RDONLY);
-        if (out < 0 || null < 0) _exit(126);
-        dup2(null, 0);
-        dup2(out, 1);
-        dup2(out, 2);
-        execv(cargs[0], cargs.data());
-        _exit(127);
-    }
-    setpgid(pid, pid);
-    return {pid, output};
+ProgramProcess startRaylab(const std::vector<std::string>& args, const fs::path& output) {
+    return startProgram(binDir() / "raylab", args, output);
 }
 
 // grade-class of `classDir` into `out`, every student graded by the reference agent.
@@ -114,7 +77,7 @@ TEST_CASE("grade-class interrupted 5 times at random points resumes to the CSV o
     const fs::path classDir = makeClass(root, kSix);
 
     const auto start = std::chrono::steady_clock::now();
-    Raylab quiet = startRaylab(classArgs(classDir, root / "quiet"), root / "quiet.txt");
+    ProgramProcess quiet = startRaylab(classArgs(classDir, root / "quiet"), root / "quiet.txt");
     REQUIRE_MESSAGE(quiet.finish() == 0, quiet.text());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::string expected = slurp(root / "quiet" / "grades.csv");
@@ -129,7 +92,7 @@ TEST_CASE("grade-class interrupted 5 times at random points resumes to the CSV o
     for (int stop = 0; stop < 5; ++stop) {
         CAPTURE(seed);
         CAPTURE(stop);
-        Raylab run = startRaylab(classArgs(classDir, root / "stopped"), root / "stopped.txt");
+        ProgramProcess run = startRaylab(classArgs(classDir, root / "stopped"), root / "stopped.txt");
         std::this_thread::sleep_for(std::chrono::duration<double>(when(random)));
         kill(run.pid, SIGINT); // to raylab alone: the grading processes must be stopped by it
         const int status = run.finish();
@@ -143,7 +106,7 @@ TEST_CASE("grade-class interrupted 5 times at random points resumes to the CSV o
         CHECK(rows.size() == results(root / "stopped").size() + 1);
     }
     MESSAGE(stoppedWhileGrading << " of 5 stops fell on a student being graded (seed " << seed << ")");
-    Raylab last = startRaylab(classArgs(classDir, root / "stopped"), root / "stopped.txt");
+    ProgramProcess last = startRaylab(classArgs(classDir, root / "stopped"), root / "stopped.txt");
     REQUIRE_MESSAGE(last.finish() == 0, last.text());
     CHECK(slurp(root / "stopped" / "grades.csv") == expected);
 }
@@ -151,14 +114,14 @@ TEST_CASE("grade-class interrupted 5 times at random points resumes to the CSV o
 TEST_CASE("a second grade-class on the same --out refuses, naming the lock and the first run's pid; --wait waits") {
     const fs::path root = freshFolder("raylab-ledger-twice");
     const fs::path classDir = makeClass(root, kSix);
-    Raylab first = startRaylab(classArgs(classDir, root / "out"), root / "first.txt");
+    ProgramProcess first = startRaylab(classArgs(classDir, root / "out"), root / "first.txt");
     // The lock holds the first run's pid once it has taken it.
     const fs::path lock = root / "out" / "grade-class.lock";
     for (int k = 0; k < 500 && slurp(lock) != std::to_string(first.pid) + "\n"; ++k)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     REQUIRE(slurp(lock) == std::to_string(first.pid) + "\n");
 
-    Raylab second = startRaylab(classArgs(classDir, root / "out"), root / "second.txt");
+    ProgramProcess second = startRaylab(classArgs(classDir, root / "out"), root / "second.txt");
     const int secondStatus = second.finish();
     const std::string refused = second.text();
     CHECK(secondStatus == 1);
@@ -168,7 +131,7 @@ TEST_CASE("a second grade-class on the same --out refuses, naming the lock and t
 
     std::vector<std::string> waitArgs = classArgs(classDir, root / "out");
     waitArgs.push_back("--wait");
-    Raylab waiting = startRaylab(waitArgs, root / "waiting.txt");
+    ProgramProcess waiting = startRaylab(waitArgs, root / "waiting.txt");
     CHECK(first.finish() == 0);
     CHECK(waiting.finish() == 0);
     const std::string waited = waiting.text();
@@ -180,7 +143,7 @@ TEST_CASE("a second grade-class on the same --out refuses, naming the lock and t
 
     // The lock of a run that died (its pid still in the file) is simply taken.
     std::ofstream(lock) << "999999999\n";
-    Raylab after = startRaylab(classArgs(classDir, root / "out"), root / "after.txt");
+    ProgramProcess after = startRaylab(classArgs(classDir, root / "out"), root / "after.txt");
     CHECK_MESSAGE(after.finish() == 0, after.text());
 }
 
@@ -195,7 +158,7 @@ TEST_CASE("hostile folder names each get their own row with the real name and fu
     fs::create_directory_symlink(classDir / "A", classDir / "link");
     fs::create_directory_symlink("loop", classDir / "loop"); // a link to itself
 
-    Raylab run = startRaylab(classArgs(classDir, root / "out"), root / "output.txt");
+    ProgramProcess run = startRaylab(classArgs(classDir, root / "out"), root / "output.txt");
     const int status = run.finish();
     const std::string output = run.text();
     REQUIRE_MESSAGE(status == 0, output);
