@@ -307,8 +307,7 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, st
     }
     if (stoppedAt != Clock::time_point{}) kill(-pid, SIGKILL); // whatever of its group is left
     std::error_code error;
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && fs::exists(work.folder / kResultFile, error))
-        return Outcome::Graded;
+    if (fs::exists(work.folder / kResultFile, error)) return Outcome::Graded; // written whole, even if stopped just after
     if (g_stopSignal != 0) return Outcome::Stopped;
     why = describeStatus(status);
     return Outcome::Failed;

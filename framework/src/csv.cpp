@@ -15,8 +15,12 @@ std::string csvCell(const std::string& cell) {
 
 std::string csvLine(const std::vector<std::string>& cells) {
     std::string line;
-    for (std::size_t k = 0; k < cells.size(); ++k) line += (k ? "," : "") + csvCell(cells[k]);
-    return line + "\n";
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+        if (k > 0) line += ',';
+        line += csvCell(cells[k]);
+    }
+    line += '\n';
+    return line;
 }
 
 } // namespace raylab

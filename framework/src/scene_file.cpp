@@ -63,8 +63,6 @@ public:
         else if (auto i = node->as_integer()) value = double(i->get());
         else fail(node, name(section, key), "expected a number, got " + typeName(*node));
         if (!std::isfinite(*value)) fail(node, name(section, key), "must be finite, got " + showNumber(*value));
-        if (std::abs(*value) > kFloatMax)
-            fail(node, name(section, key), showNumber(*value) + " is beyond float's range (" + showNumber(kFloatMax) + ")");
         return value;
     }
 
@@ -211,6 +209,9 @@ void readAdaptive(const Reader& r, const toml::table& render, SceneDescription& 
     r.onlyKeys(*t, section, {"threshold", "max_samples", "widen", "sampler"});
     if (auto threshold = r.number(*t, section, "threshold")) {
         if (*threshold < 0.) r.fail(t->get("threshold"), "[render.adaptive] threshold", std::to_string(*threshold) + " must be >= 0");
+        if (*threshold > kFloatMax)
+            r.fail(t->get("threshold"), "[render.adaptive] threshold",
+                   showNumber(*threshold) + " is beyond float's range (" + showNumber(kFloatMax) + ")");
         d.adaptive.threshold = float(*threshold);
     }
     d.adaptive.maxSamples = int(r.integer(*t, section, "max_samples", 1, kMaxSamples).value_or(d.adaptive.maxSamples));

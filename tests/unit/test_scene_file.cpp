@@ -141,7 +141,8 @@ TEST_CASE("every number is checked against the bounds the float numerics justify
           "stay within float)");
     CHECK(errorOf("background = [1e39, 0, 0]\n") ==
           "scene.toml:1: background: item 0 = 1e+39 is too large: at most 3.40282347e+38 (float's range)");
-    CHECK(errorOf("[camera]\nfovy = 1e39\n") == "scene.toml:2: [camera] fovy: 1e+39 is beyond float's range (3.40282347e+38)");
+    CHECK(errorOf("[camera]\nfovy = 1e39\n") ==
+          "scene.toml:2: [camera] fovy: 1e+39 degrees has no meaning; it must be strictly between 0 and 180");
     CHECK(errorOf("[render]\nsamples = 4\nsampler = \"adaptive\"\n[render.adaptive]\nthreshold = 1e300\n") ==
           "scene.toml:5: [render.adaptive] threshold: 1e+300 is beyond float's range (3.40282347e+38)");
     // A camera frame without meaning is named where it is written, not only when rendering.
