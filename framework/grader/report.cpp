@@ -87,7 +87,7 @@ void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, 
         }
         out << "</td><td>";
         if (!f.studentImage.empty()) {
-            fs::copy_file(f.studentImage, images / (f.id + ".student.png"), fs::copy_options::overwrite_existing);
+            copyFileAtomically(f.studentImage, images / (f.id + ".student.png"));
             out << "<img src=\"images/" << escape(f.id) << ".student.png\">";
         }
         out << "</td><td>";

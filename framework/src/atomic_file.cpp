@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <fstream>
 #include <string>
 #include <system_error>
 
@@ -10,7 +11,6 @@
 #include <fcntl.h>
 #include <unistd.h>
 #else
-#include <fstream>
 #include <process.h>
 #endif
 
@@ -145,6 +145,17 @@ void writeFileAtomically(const fs::path& file, std::string_view bytes) {
         if (error) fail(file, error.message());
     }
     writeReplacing(target, bytes);
+}
+
+void copyFileAtomically(const fs::path& from, const fs::path& to) {
+    std::error_code error;
+    if (!fs::is_regular_file(from, error)) throw std::runtime_error("cannot read " + from.string() + ": not a regular file");
+    std::ifstream in(from, std::ios::binary);
+    std::string bytes;
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) bytes.append(buffer, std::size_t(in.gcount()));
+    if (in.bad() || !in.eof()) throw std::runtime_error("cannot read " + from.string());
+    writeFileAtomically(to, bytes);
 }
 
 } // namespace raylab

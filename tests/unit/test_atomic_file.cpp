@@ -106,11 +106,16 @@ TEST_CASE("a folder nobody may create files in (/proc) is an error naming the fi
 }
 #endif
 
-TEST_CASE("a pipe nobody reads is refused at once instead of blocking") {
+TEST_CASE("a pipe nobody reads is refused at once instead of blocking, as a copy's source too") {
     const fs::path folder = freshFolder("raylab-atomic-fifo");
     REQUIRE(mkfifo((folder / "lab4_d.png").c_str(), 0600) == 0);
     const std::string message = writeError([&] { raylab::writeFileAtomically(folder / "lab4_d.png", "x"); });
     CHECK_MESSAGE(message.find("lab4_d.png") != std::string::npos, message);
+    CHECK_THROWS_WITH(raylab::copyFileAtomically(folder / "lab4_d.png", folder / "copy.png"),
+                      doctest::Contains("lab4_d.png: not a regular file"));
+    raylab::writeFileAtomically(folder / "a.png", "picture");
+    raylab::copyFileAtomically(folder / "a.png", folder / "report" / "a.png");
+    CHECK(slurp(folder / "report" / "a.png") == "picture");
     fs::remove_all(folder);
 }
 

@@ -22,4 +22,8 @@ public:
 // WriteError, after removing the temporary file, when any step fails; the old file is then intact.
 void writeFileAtomically(const std::filesystem::path& file, std::string_view bytes);
 
+// Copies a regular file to `to` as writeFileAtomically writes it; throws std::runtime_error naming
+// `from` when it cannot be read, WriteError when `to` cannot be written.
+void copyFileAtomically(const std::filesystem::path& from, const std::filesystem::path& to);
+
 } // namespace raylab
