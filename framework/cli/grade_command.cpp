@@ -196,7 +196,7 @@ void addGradeCommands(CLI::App& app, Context& context) {
     gradeClassCommand->add_option("DIR", run->classFolder, "one folder per student")->required()->check(CLI::ExistingDirectory);
     gradeClassCommand->add_option("--out", run->out, "grades.csv, and students/<name>/ for each (default: out/class)");
     gradeClassCommand->add_flag("--wait", run->wait, "another run is grading into --out: wait for it instead of stopping");
-    gradeClassCommand->add_option("--lab", classOptions->lab, "grade this lab only (1 to 5)")->check(CLI::Range(1, 5));
+    gradeClassCommand->add_option("--lab", classOptions->lab, "grade this lab only (its number)")->check(CLI::PositiveNumber);
     gradeClassCommand->add_option("--agent", classOptions->agents, "expert: grade every student with this agent program")
         ->group("");
     addCommonOptions(gradeClassCommand, *classOptions);
