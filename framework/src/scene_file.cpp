@@ -1,7 +1,6 @@
 #include "raylab/scene_file.h"
 
 #include "raylab/integrator_registry.h"
-#include "raylab/perspective_camera.h"
 #include "raylab/text.h"
 
 #include <toml++/toml.h>
@@ -156,11 +155,6 @@ void readCamera(const Reader& r, const toml::table& t, CameraDescription& camera
     camera.position = *position;
     camera.target = *target;
     if (up) camera.up = *up;
-    try { // the frames without meaning (up parallel to the view, position = look_at), named here
-        checkLookAtParameters(camera.position, camera.target, camera.up);
-    } catch (const std::invalid_argument& e) {
-        r.fail(&t, "[camera]", std::string(e.what()).substr(std::string_view("camera: ").size()));
-    }
 }
 
 void readSpheres(const Reader& r, const toml::node& node, Scene& scene) {
