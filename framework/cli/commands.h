@@ -31,6 +31,14 @@ struct Context {
 std::filesystem::path labsFolder();
 std::filesystem::path referencesFolder();
 
+// The most render threads raylab starts (--threads): more only exhausts the system.
+inline constexpr int kMaxThreads = 1024;
+
+// --threads: 0 (one per core) or 1 to kMaxThreads.
+CLI::Validator threadCount();
+// A number of seconds: positive and finite (--timeout).
+CLI::Validator positiveSeconds();
+
 // The `study` subcommand, made by whichever study registers first; each study adds its own under it.
 CLI::App* studyCommand(CLI::App& app);
 

@@ -1,7 +1,10 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -13,8 +16,35 @@
 
 namespace raylab::cli {
 
+CLI::Validator threadCount() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            long long n = 0;
+            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
+            if (error == std::errc::result_out_of_range || (error == std::errc() && n > kMaxThreads))
+                return text + " is more threads than raylab starts: at most " + std::to_string(kMaxThreads) +
+                       " (0: one per core)";
+            if (error != std::errc() || end != text.data() + text.size() || n < 0)
+                return "'" + text + "' is not a number of threads: 1 to " + std::to_string(kMaxThreads) + ", or 0 for one per core";
+            return "";
+        },
+        "0.." + std::to_string(kMaxThreads));
+}
+
+CLI::Validator positiveSeconds() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double seconds = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || !std::isfinite(seconds) || !(seconds > 0.))
+                return "'" + text + "' is not a time limit: give a positive number of seconds, such as 180";
+            return "";
+        },
+        "SECONDS > 0");
+}
+
 void Context::addRenderOptions(CLI::App* command) {
-    command->add_option("--threads", threads, "render threads (0: one per core)")->check(CLI::NonNegativeNumber);
+    command->add_option("--threads", threads, "render threads (0: one per core)")->check(threadCount());
     command->add_option("--scenes", scenes, "the folder of figure scene files")->check(CLI::ExistingDirectory);
 }
 

@@ -1,6 +1,7 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "raylab/atomic_file.h"
 #include "raylab/contact_sheet.h"
 #include "raylab/figure.h"
 #include "raylab/image_io.h"
@@ -17,6 +18,17 @@ namespace raylab::cli {
 
 namespace {
 
+// Writes a PNG; a file that cannot be written is a failed figure, with the reason on its line.
+bool writeFigure(const std::string& id, const std::filesystem::path& file, const Image8& image) {
+    try {
+        writePng(file, image);
+        return true;
+    } catch (const WriteError& e) {
+        std::printf("  %-24s FAILED  %s\n", id.c_str(), e.what());
+        return false;
+    }
+}
+
 // Writes the figure's PNG and prints its line; returns false when the figure is not usable.
 bool report(const SceneDescription& d, const FigureResult& r, const std::filesystem::path& file) {
     switch (r.status) {
@@ -29,7 +41,7 @@ bool report(const SceneDescription& d, const FigureResult& r, const std::filesys
     case FigureResult::Status::Rendered: break;
     }
     std::uint64_t nonFinite = 0;
-    writePng(file, quantize(*r.image, &nonFinite));
+    if (!writeFigure(d.id, file, quantize(*r.image, &nonFinite))) return false;
     char speed[64] = "";
     if (d.picture != Picture::Gradient && r.stats.seconds > 0.)
         std::snprintf(speed, sizeof speed, "%8.1f Mrays/s", double(r.stats.primaryRays) / r.stats.seconds * 1e-6);
@@ -77,13 +89,15 @@ int runFigures(const FiguresOptions& o) {
         else sheet.push_back({d.id, std::nullopt, r.status == FigureResult::Status::NotDoneYet ? "todo" : "failed"});
     }
     // Every figure at a glance, when all of them were asked for (`raylab figures` without --only).
+    bool sheetWritten = true;
     if (o.lab == 0 && o.only.empty() && !sheet.empty()) {
-        writePng(o.out / "contact_sheet.png", makeContactSheet(sheet));
-        std::printf("  %-24s           -> %s\n", "contact_sheet", (o.out / "contact_sheet.png").string().c_str());
+        sheetWritten = writeFigure("contact_sheet", o.out / "contact_sheet.png", makeContactSheet(sheet));
+        if (sheetWritten)
+            std::printf("  %-24s           -> %s\n", "contact_sheet", (o.out / "contact_sheet.png").string().c_str());
     }
     std::printf("%zu figures: %zu rendered, %d waiting for a lab not done yet, %d failed\n", scenes.size(),
                 scenes.size() - std::size_t(todo + failed), todo, failed);
-    return failed == 0 ? 0 : 1;
+    return failed == 0 && sheetWritten ? 0 : 1;
 }
 
 // Renders one scene file to a PNG.

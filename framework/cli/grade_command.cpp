@@ -2,6 +2,7 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "grader/class_run.h"
 #include "grader/grade.h"
 #include "grader/report.h"
 #include "grader/submission.h"
@@ -9,11 +10,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <random>
-#include <set>
 #include <sstream>
 
 namespace raylab::cli {
@@ -124,78 +123,53 @@ int gradeLabs(const GradeOptions& o, const Context& context) {
     return result.allPassed() ? 0 : 1;
 }
 
-// The students already in the CSV: a class run that stopped resumes after them.
-std::set<std::string> gradedStudents(const fs::path& csv) {
-    std::set<std::string> done;
-    std::ifstream in(csv);
-    std::string line;
-    std::getline(in, line); // header
-    while (std::getline(in, line))
-        if (!line.empty()) done.insert(line.substr(0, line.find(',')));
-    return done;
+// A student's row of grades.csv: points per lab, the total, and the first lines of the problems.
+StudentRecord classRecord(const std::string& name, const GradeResult& result) {
+    StudentRecord record{name, {}};
+    const auto number = [](double v) {
+        std::ostringstream text;
+        text << v;
+        return text.str();
+    };
+    for (const LabOutcome& lab : result.labs) record.cells.emplace_back("lab" + std::to_string(lab.lab), number(lab.points));
+    std::string problems;
+    for (const std::string& p : result.problems) { // its first two lines: what, and the first error
+        const std::size_t second = p.find('\n', p.find('\n') + 1);
+        problems += (problems.empty() ? "" : " | ") + p.substr(0, std::min<std::size_t>(second, 300));
+    }
+    record.cells.emplace_back("total", number(result.score()));
+    record.cells.emplace_back("max", number(result.maxScore()));
+    record.cells.emplace_back("problems", problems);
+    return record;
 }
 
-std::string csvField(std::string s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
-int gradeClass(const std::string& classDir, const std::string& outDir, GradeOptions o, const Context& context) {
-    const fs::path out = outDir.empty() ? fs::path("out/class") : fs::path(outDir);
-    fs::create_directories(out);
-    const fs::path csv = out / "grades.csv";
-    const std::set<std::string> done = gradedStudents(csv);
+int gradeClass(const ClassRunOptions& run, const GradeOptions& o, const Context& context) {
     const fs::path scratch = scratchFolder("class");
     const GradeSetup setup = setupFor(o, context, scratch);
-    if (!fs::exists(csv)) {
-        std::ofstream header(csv);
-        header << "student";
-        for (const LabDescription& lab : setup.labs.labs) header << ",lab" << lab.number;
-        header << ",total,max,problems\n";
-    }
-    std::vector<fs::path> students;
-    for (const auto& entry : fs::directory_iterator(classDir))
-        if (entry.is_directory()) students.push_back(entry.path());
-    std::sort(students.begin(), students.end());
-    for (const fs::path& student : students) {
-        const std::string name = student.filename().string();
-        if (done.count(name)) {
-            std::printf("%-20s already graded (in %s)\n", name.c_str(), csv.string().c_str());
-            continue;
-        }
-        o.labs = student.string();
+    const int status = runClass(run, [&](const StudentWork& work) {
+        GradeOptions student = o;
+        student.labs = work.submission.string();
+        const fs::path buildDir = o.buildDir.empty() ? work.folder / "build" : fs::path(o.buildDir) / work.folder.filename();
         GradeResult result;
         try {
-            result = gradeCodeOnce(o, setup, o.buildDir.empty() ? out / "build" : fs::path(o.buildDir), "raylab grade " + name);
+            result = gradeCodeOnce(student, setup, buildDir, "raylab grade " + work.name);
         } catch (const std::exception& e) { // one student's trouble never stops the class
             result = gradeBuildFailure(setup, e.what());
-            result.title = "raylab grade " + name;
+            result.title = "raylab grade " + work.name;
         }
-        writeReports(result, setup.references, out / name);
-        std::ostringstream row;
-        row << csvField(name);
-        for (const LabOutcome& lab : result.labs) row << "," << lab.points;
-        std::string problems;
-        for (const std::string& p : result.problems) { // its first two lines: what, and the first error
-            const std::size_t second = p.find('\n', p.find('\n') + 1);
-            problems += (problems.empty() ? "" : " | ") + p.substr(0, std::min<std::size_t>(second, 300));
-        }
-        row << "," << result.score() << "," << result.maxScore() << "," << csvField(problems) << "\n";
-        std::ofstream(csv, std::ios::app) << row.str() << std::flush; // a row a student: nothing lost on a stop
-        std::printf("%-20s %g / %g\n", name.c_str(), result.score(), result.maxScore());
-        std::fflush(stdout);
-    }
+        writeReports(result, setup.references, work.folder / "report");
+        std::printf("%-20s %g / %g\n", printableName(work.name).c_str(), result.score(), result.maxScore());
+        return classRecord(work.name, result);
+    });
     fs::remove_all(scratch);
-    std::printf("grades: %s, reports: %s/<student>/index.html\n", csv.string().c_str(), out.string().c_str());
-    return 0;
+    return status;
 }
 
 void addCommonOptions(CLI::App* command, GradeOptions& o) {
     command->add_option("--references", o.references, "the reference folder (default: framework/grader/data/references)");
-    command->add_option("--timeout", o.timeout, "seconds a check or figure may run before it is stopped");
-    command->add_option("--build-dir", o.buildDir, "where submissions are built");
+    command->add_option("--timeout", o.timeout, "seconds a check or figure may run before it is stopped")
+        ->check(positiveSeconds());
+    command->add_option("--build-dir", o.buildDir, "where submissions are built (grade-class: a folder per student in it)");
 }
 
 } // namespace
@@ -214,17 +188,20 @@ void addGradeCommands(CLI::App& app, Context& context) {
         context.exitStatus = o->images.empty() ? gradeLabs(*o, context) : gradeImageFolder(*o, context);
     });
 
-    auto classDir = std::make_shared<std::string>();
-    auto outDir = std::make_shared<std::string>();
+    auto classOptions = std::make_shared<GradeOptions>();
+    auto run = std::make_shared<ClassRunOptions>();
+    run->out = "out/class";
     CLI::App* gradeClassCommand = app.add_subcommand(
         "grade-class", "grade every submission of DIR (one folder per student) into a CSV and reports; resumable");
-    gradeClassCommand->add_option("DIR", *classDir, "one folder per student")->required()->check(CLI::ExistingDirectory);
-    gradeClassCommand->add_option("--out", *outDir, "grades.csv and the reports (default: out/class)");
-    addCommonOptions(gradeClassCommand, *o);
+    gradeClassCommand->add_option("DIR", run->classFolder, "one folder per student")->required()->check(CLI::ExistingDirectory);
+    gradeClassCommand->add_option("--out", run->out, "grades.csv, and students/<name>/ for each (default: out/class)");
+    gradeClassCommand->add_flag("--wait", run->wait, "another run is grading into --out: wait for it instead of stopping");
+    gradeClassCommand->add_option("--lab", classOptions->lab, "grade this lab only (its number)")->check(CLI::PositiveNumber);
+    gradeClassCommand->add_option("--agent", classOptions->agents, "expert: grade every student with this agent program")
+        ->group("");
+    addCommonOptions(gradeClassCommand, *classOptions);
     context.addRenderOptions(gradeClassCommand);
-    gradeClassCommand->callback([&context, o, classDir, outDir] {
-        context.exitStatus = gradeClass(*classDir, *outDir, *o, context);
-    });
+    gradeClassCommand->callback([&context, classOptions, run] { context.exitStatus = gradeClass(*run, *classOptions, context); });
 }
 
 } // namespace raylab::cli

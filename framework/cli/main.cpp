@@ -4,6 +4,22 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
+
+namespace {
+
+// CLI11 would say "The following arguments were not expected"; name the command and list them.
+std::string unknownCommand(CLI::App& app, int argc, char** argv) {
+    if (argc < 2 || argv[1][0] == '-') return "";
+    std::string names;
+    for (const CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+        if (command->get_name() == argv[1]) return "";
+        names += (names.empty() ? "" : ", ") + command->get_name();
+    }
+    return "unknown command '" + std::string(argv[1]) + "'; commands are: " + names + " (raylab --help says more)";
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     using namespace raylab;
@@ -20,6 +36,10 @@ int main(int argc, char** argv) {
     cli::addBenchEffectsCommand(app, context);
     cli::addNumericsCommands(app, context);
     cli::addReportCommand(app, context);
+    if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
+        std::fprintf(stderr, "raylab: error: %s\n", unknown.c_str());
+        return 1;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

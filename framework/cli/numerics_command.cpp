@@ -5,9 +5,10 @@
 
 #include "../study/numerics_study.h"
 
+#include "raylab/atomic_file.h"
+
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -41,7 +42,7 @@ int runMeasurements(const std::vector<Measurement>& measurements, const Numerics
         markdown += md + "\n";
     }
     const std::filesystem::path file = o.out / (name + ".md");
-    std::ofstream(file) << markdown;
+    writeFileAtomically(file, markdown);
     std::printf("\nwrote %s and one CSV per table in %s\n", file.filename().string().c_str(), o.out.string().c_str());
     return 0;
 }

@@ -8,6 +8,7 @@
 #include "grader/grade.h"
 #include "grader/report.h"
 
+#include "raylab/atomic_file.h"
 #include "raylab/figure.h"
 #include "raylab/image_io.h"
 #include "raylab/terminal.h"
@@ -17,12 +18,10 @@
 #include <cstdlib>
 #include <cstddef>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <random>
 #include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -361,10 +360,8 @@ int runReport(const ReportOptions& o, const Context& context) {
     }
     html << "<pre id=\"image-check\" hidden>image check: not run</pre>\n</body></html>\n";
 
-    std::ofstream(out / "report.md", std::ios::binary) << md.str();
-    std::ofstream(out / "report.html", std::ios::binary) << html.str();
-    if (!fs::exists(out / "report.md") || !fs::exists(out / "report.html"))
-        throw std::runtime_error("cannot write the report into " + out.string());
+    writeFileAtomically(out / "report.md", md.str());
+    writeFileAtomically(out / "report.html", html.str());
     std::printf("%s", terminalSummary(result).c_str());
     std::printf("report: %s and %s (the grader's report: %s)\n", (out / "report.md").string().c_str(),
                 (out / "report.html").string().c_str(), (out / "grade" / "index.html").string().c_str());

@@ -111,6 +111,10 @@ FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& refer
         f.reason = "missing: there is no " + file.string();
         return f;
     }
+    if (!fs::is_regular_file(file, error)) { // a pipe or a device would block the read, or never end
+        f.reason = "not a PNG file: " + file.string() + " is not a regular file (a pipe, a device or a folder)";
+        return f;
+    }
     {
         std::ifstream in(file, std::ios::binary);
         std::array<char, 8> magic{};

@@ -1,10 +1,12 @@
 #include "grader/references.h"
 
+#include "raylab/atomic_file.h"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace raylab::grader {
@@ -118,9 +120,9 @@ void writeReference(const fs::path& folder, const FigureReference& f) {
         writePng(folder / (f.id + ".meanfrac.png"), frac);
         writePng(folder / (f.id + ".sd.png"), sd);
     }
-    std::ofstream out(folder / (f.id + ".toml"));
+    std::ostringstream out;
     out << "# Made by `raylab references` from solutions/; see docs/grading.md.\n" << t << "\n";
-    if (!out) throw std::runtime_error("cannot write " + (folder / (f.id + ".toml")).string());
+    writeFileAtomically(folder / (f.id + ".toml"), out.str());
 }
 
 } // namespace raylab::grader

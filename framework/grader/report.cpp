@@ -1,10 +1,11 @@
 #include "grader/report.h"
 
+#include "raylab/atomic_file.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -33,12 +34,6 @@ std::string number(double v) {
     return text;
 }
 
-std::ofstream openOut(const fs::path& file) {
-    std::ofstream out(file, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot write the report " + file.string());
-    return out;
-}
-
 // The heat map: black where the pixel agrees, red to yellow as the error grows to `full`.
 Image8 heatMap(const ImageVerdict& v, float full) {
     Image8 image{v.width, v.height, {}};
@@ -64,7 +59,7 @@ std::string itemOutput(const FigureOutcome& f) {
 void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, const fs::path& folder) {
     const fs::path images = folder / "images";
     fs::create_directories(images);
-    std::ofstream out = openOut(folder / "index.html");
+    std::ostringstream out;
     out << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>" << escape(result.title)
         << "</title>\n<style>body{font-family:sans-serif;max-width:1400px;margin:auto}"
            "img{width:300px;image-rendering:pixelated;border:1px solid #ccc}.pass{color:#080}.fail{color:#b00}"
@@ -92,7 +87,7 @@ void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, 
         }
         out << "</td><td>";
         if (!f.studentImage.empty()) {
-            fs::copy_file(f.studentImage, images / (f.id + ".student.png"), fs::copy_options::overwrite_existing);
+            copyFileAtomically(f.studentImage, images / (f.id + ".student.png"));
             out << "<img src=\"images/" << escape(f.id) << ".student.png\">";
         }
         out << "</td><td>";
@@ -111,6 +106,7 @@ void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, 
             << number(c.maxPoints) << "</td><td><b class=\"" << (c.passed ? "pass\">PASS" : "fail\">FAIL")
             << "</b><pre>" << escape(c.message) << "</pre></td></tr>\n";
     out << "</table>\n</body></html>\n";
+    writeFileAtomically(folder / "index.html", out.str());
 }
 
 void writeGradescopeJson(const GradeResult& result, const fs::path& file) {
@@ -133,11 +129,11 @@ void writeGradescopeJson(const GradeResult& result, const fs::path& file) {
                               {"max_score", result.maxScore()},
                               {"output", output},
                               {"tests", tests}};
-    openOut(file) << root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+    writeFileAtomically(file, root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 void writeJUnitXml(const GradeResult& result, const fs::path& file) {
-    std::ofstream out = openOut(file);
+    std::ostringstream out;
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"" << escape(result.title) << "\">\n";
     for (const LabOutcome& outcome : result.labs) {
         const int lab = outcome.lab;
@@ -162,6 +158,7 @@ void writeJUnitXml(const GradeResult& result, const fs::path& file) {
             << cases.str() << " </testsuite>\n";
     }
     out << "</testsuites>\n";
+    writeFileAtomically(file, out.str());
 }
 
 void writeReports(const GradeResult& result, const ReferenceSet& references, const fs::path& folder) {

@@ -1,11 +1,14 @@
 #include "raylab/image_io.h"
 
+#include "raylab/atomic_file.h"
+
 #include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 namespace raylab {
 
@@ -29,14 +32,23 @@ Image8 quantize(const Texture& texture, std::uint64_t* nonFinite) {
     return image;
 }
 
-void writePng(const std::filesystem::path& path, const Image8& image) {
-    if (path.has_parent_path()) {
-        std::error_code ignored;
-        std::filesystem::create_directories(path.parent_path(), ignored);
-    }
-    if (stbi_write_png(path.string().c_str(), image.width, image.height, 3, image.rgb.data(), image.width * 3) == 0)
-        throw std::runtime_error("cannot write the image " + path.string() + " (is the folder writable?)");
+namespace {
+
+// The bytes of an 8-bit PNG file of the image.
+std::string encodePng(const Image8& image) {
+    std::string bytes;
+    const auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+    };
+    if (stbi_write_png_to_func(append, &bytes, image.width, image.height, 3, image.rgb.data(), image.width * 3) == 0)
+        throw std::runtime_error("cannot encode a " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                                 " image as PNG");
+    return bytes;
 }
+
+} // namespace
+
+void writePng(const std::filesystem::path& path, const Image8& image) { writeFileAtomically(path, encodePng(image)); }
 
 Image8 readImage(const std::filesystem::path& path) {
     std::error_code error;

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <limits>
+#include <stdexcept>
 #include <optional>
 #include <string_view>
 
@@ -16,6 +18,16 @@ namespace raylab {
 namespace {
 
 constexpr std::int64_t kMaxSamples = 1 << 20;
+
+// Every number of a scene is stored as a float.
+constexpr double kFloatMax = double(std::numeric_limits<float>::max());
+// The intersection squares the radius and the distance from the ray's origin to the centre in
+// float (docs/numerics.md, section 2): both squares must stay normal floats.
+const double kMinRadius = std::sqrt(double(std::numeric_limits<float>::min())); // 1.08e-19
+const double kMaxRadius = std::sqrt(kFloatMax);                                 // 1.84e19
+// A point's coordinates: two points are then at most 2 sqrt(3) 1e18 = 3.5e18 apart, whose square
+// (1.2e37) is still a float.
+constexpr double kMaxCoordinate = 1e18;
 
 constexpr Picture kPictures[] = {Picture::Gradient, Picture::Directions, Picture::Flat, Picture::PlaceholderNormal,
                                  Picture::Cosine};
@@ -73,7 +85,9 @@ public:
         return s->get();
     }
 
-    std::optional<glm::vec3> vec3(const toml::table& table, std::string_view section, std::string_view key) const {
+    // `largest`: the largest magnitude of an item (a point's coordinates are bounded more than float's).
+    std::optional<glm::vec3> vec3(const toml::table& table, std::string_view section, std::string_view key,
+                                  double largest = kFloatMax) const {
         const toml::node* node = table.get(key);
         if (node == nullptr) return std::nullopt;
         auto array = node->as_array();
@@ -82,10 +96,17 @@ public:
         glm::vec3 v;
         for (int k = 0; k < 3; ++k) {
             const toml::node& item = *array->get(std::size_t(k));
-            if (auto f = item.as_floating_point()) v[k] = float(f->get());
-            else if (auto i = item.as_integer()) v[k] = float(i->get());
+            double value = 0.;
+            if (auto f = item.as_floating_point()) value = f->get();
+            else if (auto i = item.as_integer()) value = double(i->get());
             else fail(node, name(section, key), "item " + std::to_string(k) + " is " + typeName(item) + ", not a number");
-            if (!std::isfinite(v[k])) fail(node, name(section, key), "item " + std::to_string(k) + " is not finite");
+            const std::string what = "item " + std::to_string(k) + " = " + showNumber(value);
+            if (!std::isfinite(value)) fail(node, name(section, key), what + " is not finite");
+            if (std::abs(value) > largest)
+                fail(node, name(section, key),
+                     what + " is too large: at most " + showNumber(largest) +
+                         (largest < kFloatMax ? " (so that squared distances stay within float)" : " (float's range)"));
+            v[k] = float(value);
         }
         return v;
     }
@@ -124,8 +145,8 @@ void readCamera(const Reader& r, const toml::table& t, CameraDescription& camera
             r.fail(t.get("fovy"), "[camera] fovy", showNumber(*fovy) + " degrees has no meaning; it must be strictly between 0 and 180");
         camera.fovy = float(*fovy);
     }
-    const auto position = r.vec3(t, "[camera] ", "position");
-    const auto target = r.vec3(t, "[camera] ", "look_at");
+    const auto position = r.vec3(t, "[camera] ", "position", kMaxCoordinate);
+    const auto target = r.vec3(t, "[camera] ", "look_at", kMaxCoordinate);
     const auto up = r.vec3(t, "[camera] ", "up");
     if (!position && !target && !up) return; // the default frame with this fovy
     if (!position || !target)
@@ -143,11 +164,24 @@ void readSpheres(const Reader& r, const toml::node& node, Scene& scene) {
     for (const toml::node& item : *spheres) {
         const toml::table& t = *item.as_table();
         r.onlyKeys(t, "[[sphere]] ", {"center", "radius", "color"});
-        const auto center = r.vec3(t, "[[sphere]] ", "center");
+        const auto center = r.vec3(t, "[[sphere]] ", "center", kMaxCoordinate);
         const auto radius = r.number(t, "[[sphere]] ", "radius");
         if (!center || !radius) r.fail(&t, "[[sphere]]", "a sphere needs a center and a radius");
         if (!(*radius > 0.)) r.fail(t.get("radius"), "[[sphere]] radius", showNumber(*radius) + " must be positive");
-        scene.spheres.emplace_back(*center, float(*radius), r.vec3(t, "[[sphere]] ", "color").value_or(Color(1.f)));
+        if (*radius < kMinRadius)
+            r.fail(t.get("radius"), "[[sphere]] radius",
+                   showNumber(*radius) + " is too small: its square underflows float (the smallest radius is " +
+                       showNumber(kMinRadius) + ")");
+        if (*radius > kMaxRadius)
+            r.fail(t.get("radius"), "[[sphere]] radius",
+                   showNumber(*radius) + " is too large: its square overflows float (the largest radius is " +
+                       showNumber(kMaxRadius) + ")");
+        const Color color = r.vec3(t, "[[sphere]] ", "color").value_or(Color(1.f));
+        try { // the float radius at the edge of the range
+            scene.spheres.emplace_back(*center, float(*radius), color);
+        } catch (const std::invalid_argument& e) {
+            r.fail(t.get("radius"), "[[sphere]] radius", std::string(e.what()).substr(std::string_view("sphere: ").size()));
+        }
     }
 }
 
@@ -169,6 +203,9 @@ void readAdaptive(const Reader& r, const toml::table& render, SceneDescription& 
     r.onlyKeys(*t, section, {"threshold", "max_samples", "widen", "sampler"});
     if (auto threshold = r.number(*t, section, "threshold")) {
         if (*threshold < 0.) r.fail(t->get("threshold"), "[render.adaptive] threshold", std::to_string(*threshold) + " must be >= 0");
+        if (*threshold > kFloatMax)
+            r.fail(t->get("threshold"), "[render.adaptive] threshold",
+                   showNumber(*threshold) + " is beyond float's range (" + showNumber(kFloatMax) + ")");
         d.adaptive.threshold = float(*threshold);
     }
     d.adaptive.maxSamples = int(r.integer(*t, section, "max_samples", 1, kMaxSamples).value_or(d.adaptive.maxSamples));

@@ -2,6 +2,7 @@
 
 #include "svg_plot.h"
 
+#include "raylab/atomic_file.h"
 #include "raylab/figure.h"
 
 #include <algorithm>
@@ -108,13 +109,13 @@ double fittedSlope(const std::vector<double>& x, const std::vector<double>& y) {
 }
 
 void writeCsv(const std::filesystem::path& file, const std::vector<StudyRow>& rows) {
-    std::ofstream out(file);
+    std::ostringstream out;
     out << "sampler,setting,samples,seconds,runs,rmse,silhouette_rmse,psnr,max_error,refined_fraction\n";
     for (const StudyRow& r : rows)
         out << r.sampler << ',' << settingName(r) << ',' << r.samples << ',' << r.seconds << ',' << r.runs << ','
             << r.error.rmse << ',' << r.error.silhouetteRmse << ',' << r.error.psnr << ',' << r.error.maxError << ','
             << r.refinedFraction << '\n';
-    if (!out) throw std::runtime_error("cannot write " + file.string());
+    writeFileAtomically(file, out.str());
 }
 
 void writePlots(const std::filesystem::path& out, const AntialiasingResult& result) {
@@ -139,8 +140,8 @@ void writePlots(const std::filesystem::path& out, const AntialiasingResult& resu
         }
     samples.series.push_back(adaptiveSamples);
     time.series.push_back(adaptiveTime);
-    std::ofstream(out / "accuracy_samples.svg") << toSvg(samples);
-    std::ofstream(out / "accuracy_time.svg") << toSvg(time);
+    writeFileAtomically(out / "accuracy_samples.svg", toSvg(samples));
+    writeFileAtomically(out / "accuracy_time.svg", toSvg(time));
 }
 
 std::vector<StudyRow> measureUniform(const SceneDescription& d, const ExactImage& exact, const AntialiasingOptions& o,
@@ -390,9 +391,7 @@ void writeMarkdown(const std::filesystem::path& file, const AntialiasingResult& 
     writeAdaptiveAgainstUniform(md, result.rows);
     writeFailure(md, result.failure, o);
     writeMeasurements(md, result.rows);
-    std::ofstream out(file);
-    out << md.str();
-    if (!out) throw std::runtime_error("cannot write " + file.string());
+    writeFileAtomically(file, md.str());
 }
 
 // The exact reference's own error (how much a pixel moves when the quadrature nodes double) and

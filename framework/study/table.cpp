@@ -1,9 +1,10 @@
 #include "table.h"
 
+#include "raylab/atomic_file.h"
+#include "raylab/csv.h"
+
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <stdexcept>
 
 namespace raylab::study {
 
@@ -36,28 +37,10 @@ std::string toMarkdown(const Table& table) {
     return out;
 }
 
-namespace {
-
-std::string csvCell(const std::string& cell) {
-    if (cell.find_first_of(",\"\n") == std::string::npos) return cell;
-    std::string quoted = "\"";
-    for (char ch : cell) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-    return quoted + "\"";
-}
-
-} // namespace
-
 void writeCsv(const std::filesystem::path& folder, const Table& table) {
-    std::filesystem::create_directories(folder);
-    const std::filesystem::path file = folder / (table.id + ".csv");
-    std::ofstream out(file);
-    auto line = [&](const std::vector<std::string>& cells) {
-        for (std::size_t k = 0; k < cells.size(); ++k) out << (k ? "," : "") << csvCell(cells[k]);
-        out << "\n";
-    };
-    line(table.columns);
-    for (const auto& row : table.rows) line(row);
-    if (!out) throw std::runtime_error("cannot write " + file.string());
+    std::string csv = csvLine(table.columns);
+    for (const auto& row : table.rows) csv += csvLine(row);
+    writeFileAtomically(folder / (table.id + ".csv"), csv);
 }
 
 } // namespace raylab::study

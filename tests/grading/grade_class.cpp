@@ -57,13 +57,15 @@ fs::path makeClass(const std::string& name) {
 
 TEST_SUITE("commands") {
 
-TEST_CASE("grade-class resumes: students already in the CSV are not graded again") {
+TEST_CASE("grade-class resumes: students with a result are not graded again, the CSV is made from the results") {
     const fs::path root = makeClass("raylab-class-resume");
-    fs::create_directories(root / "out");
-    const std::string csv = "student,lab1,lab2,lab3,lab4,lab5,total,max,problems\nalice,1,2,3,4,5,15,74,\nbob,0,0,0,0,0,0,74,\n";
-    std::ofstream(root / "out" / "grades.csv") << csv;
+    for (const char* name : {"alice", "bob"}) {
+        fs::create_directories(root / "out" / "students" / name);
+        std::ofstream(root / "out" / "students" / name / "result.json")
+            << R"({"student": ")" << name << R"(", "cells": [{"column": "lab1", "value": "1"}, {"column": "total", "value": "1"}]})";
+    }
     CHECK(gradeClass(root / "class", root / "out", root / "build") == 0);
-    CHECK(slurp(root / "out" / "grades.csv") == csv);
+    CHECK(slurp(root / "out" / "grades.csv") == "student,lab1,total\nalice,1,1\nbob,1,1\n");
     CHECK(slurp(root / "class-output.txt").find("bob                  already graded") != std::string::npos);
     CHECK_FALSE(fs::exists(root / "build")); // nothing was built
 }
@@ -117,8 +119,8 @@ TEST_CASE("grade-class builds and grades each student; a compile error costs onl
     CHECK_MESSAGE(csv.find("\nalice,10,16,24,12,12,74,74,\n") != std::string::npos, csv);
     CHECK_MESSAGE(csv.find("\nbob,10,16,0,12,12,50,74,") != std::string::npos, csv);
     CHECK(csv.find("sphere_geometry.cpp") != std::string::npos); // the compiler's message
-    CHECK(fs::exists(root / "out" / "bob" / "index.html"));
-    CHECK(fs::exists(root / "out" / "alice" / "results.json"));
+    CHECK(fs::exists(root / "out" / "students" / "bob" / "report" / "index.html"));
+    CHECK(fs::exists(root / "out" / "students" / "alice" / "report" / "results.json"));
 }
 
 } // TEST_SUITE

@@ -125,6 +125,33 @@ TEST_CASE("errors name the file, the line and the key") {
           "scene.toml:1: colour: unknown key (known keys: figure, image, camera, render, background, sphere)");
 }
 
+TEST_CASE("every number is checked against the bounds the float numerics justify, naming the file, line and key") {
+    const std::string sphere = "[[sphere]]\ncenter = [0, 0, 3]\nradius = ";
+    CHECK(errorOf(sphere + "1e-50\n") == "scene.toml:3: [[sphere]] radius: 1e-50 is too small: its square underflows "
+                                           "float (the smallest radius is 1.08420217e-19)");
+    CHECK(errorOf(sphere + "1e39\n") == "scene.toml:3: [[sphere]] radius: 1e+39 is too large: its square overflows "
+                                          "float (the largest radius is 1.84467435e+19)");
+    CHECK(errorOf(sphere + "1e20\n") == "scene.toml:3: [[sphere]] radius: 1e+20 is too large: its square overflows "
+                                          "float (the largest radius is 1.84467435e+19)");
+    CHECK(errorOf("[[sphere]]\ncenter = [1e39, 0, 3]\nradius = 1\n") ==
+          "scene.toml:2: [[sphere]] center: item 0 = 1e+39 is too large: at most 1e+18 (so that squared distances stay "
+          "within float)");
+    CHECK(errorOf("[camera]\nposition = [0, -2e18, 0]\nlook_at = [0, 0, 1]\n") ==
+          "scene.toml:2: [camera] position: item 1 = -2e+18 is too large: at most 1e+18 (so that squared distances "
+          "stay within float)");
+    CHECK(errorOf("background = [1e39, 0, 0]\n") ==
+          "scene.toml:1: background: item 0 = 1e+39 is too large: at most 3.40282347e+38 (float's range)");
+    CHECK(errorOf("[camera]\nfovy = 1e39\n") ==
+          "scene.toml:2: [camera] fovy: 1e+39 degrees has no meaning; it must be strictly between 0 and 180");
+    CHECK(errorOf("[render]\nsamples = 4\nsampler = \"adaptive\"\n[render.adaptive]\nthreshold = 1e300\n") ==
+          "scene.toml:5: [render.adaptive] threshold: 1e+300 is beyond float's range (3.40282347e+38)");
+    // The radii of docs/numerics.md, and the edges of the range, are accepted.
+    for (const char* radius : {"1e-3", "1e3", "2e-19", "1.8e19"}) {
+        CAPTURE(radius);
+        CHECK(loadText(sphere + radius + "\n").scene.spheres.size() == 1);
+    }
+}
+
 TEST_CASE("a missing file or folder is named") {
     CHECK_THROWS_WITH_AS(loadSceneFile("no/such.toml"), "no/such.toml: no such scene file", SceneError);
     CHECK_THROWS_WITH_AS(loadSceneFolder("no/such/dir"), "no/such/dir: no such scene folder", SceneError);

@@ -27,7 +27,8 @@ inline constexpr std::uint8_t kNonFiniteRgb[3] = {255, 0, 255};
 // Quantizes every pixel; counts (in *nonFinite, when given) the pixels written as kNonFiniteRgb.
 Image8 quantize(const Texture& texture, std::uint64_t* nonFinite = nullptr);
 
-// Writes an 8-bit PNG; throws std::runtime_error naming the path when it cannot.
+// Writes an 8-bit PNG whole or not at all (atomic_file.h); throws WriteError naming the path and
+// the reason when it cannot.
 void writePng(const std::filesystem::path& path, const Image8& image);
 
 // Reads a PNG (or any format stb_image reads) as 8-bit RGB; throws std::runtime_error naming the

@@ -1,0 +1,52 @@
+#pragma once
+// A class run is a ledger (`raylab grade-class`): one folder per student under OUT/students/, whose
+// result.json is written atomically when, and only when, that student's grading finished; grades.csv
+// is regenerated from those results, so an interrupted run resumes where it stopped and never
+// duplicates or loses a row. One run at a time per OUT (a lock); SIGINT and SIGTERM stop the run
+// cleanly: the student being graded is left ungraded and the next run grades them.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace raylab::grader {
+
+// A student's row of grades.csv: the real folder name and the cells after it, by column.
+struct StudentRecord {
+    std::string student;
+    std::vector<std::pair<std::string, std::string>> cells; // column, value
+};
+
+// Where a student is graded.
+struct StudentWork {
+    std::string name;                 // the folder's real name
+    std::filesystem::path submission; // CLASS/<name>
+    std::filesystem::path folder;     // OUT/students/<safe name>: build/, report/, result.json
+};
+
+// Grades one student (building in work.folder / "build", reports in work.folder / "report") and
+// returns their row. On POSIX it runs in a process of its own, which the run stops when interrupted.
+using GradeStudent = std::function<StudentRecord(const StudentWork& work)>;
+
+struct ClassRunOptions {
+    std::filesystem::path classFolder; // one folder per student
+    std::filesystem::path out;         // grades.csv, students/, the lock
+    bool wait = false;                 // another run holds OUT: wait for it instead of refusing
+};
+
+// Grades every student of the class not graded yet. Returns the exit status: 0; 1 when OUT is held
+// by another run or a student's grading did not finish; 128 + the signal when interrupted
+// (130 for SIGINT, 143 for SIGTERM).
+int runClass(const ClassRunOptions& options, const GradeStudent& grade);
+
+// A file name for any folder name, one to one: ASCII letters and digits, '_', and '-' and '.' after
+// the first character are kept, every other byte is written %XX. A name whose form is longer than
+// 160 bytes is cut and ends with '~' and a 64-bit hash of the whole name.
+std::string safeStudentName(const std::string& folderName);
+
+// The name as one line of a terminal: control characters as \n, \t or \xHH.
+std::string printableName(const std::string& folderName);
+
+} // namespace raylab::grader

@@ -1,0 +1,204 @@
+// raylab grade-class as a ledger: interrupted at random points it resumes to the CSV of a quiet run;
+// a second run on the same --out refuses (or waits); hostile folder names each get their own row.
+// The students are graded by a prebuilt agent (--agent), so no test here runs CMake.
+#include "grading_support.h"
+#include "support/read_csv.h"
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+#if defined(__unix__) || defined(__APPLE__)
+#include "program_process.h"
+#define RAYLAB_LEDGER_TESTS 1
+#endif
+
+using namespace raylab::test;
+
+#ifdef RAYLAB_LEDGER_TESTS
+
+namespace {
+
+std::string slurp(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+ProgramProcess startRaylab(const std::vector<std::string>& args, const fs::path& output) {
+    return startProgram(binDir() / "raylab", args, output);
+}
+
+// grade-class of `classDir` into `out`, every student graded by the reference agent on lab 1 (fast).
+std::vector<std::string> classArgs(const fs::path& classDir, const fs::path& out) {
+    return {"grade-class", classDir.string(), "--out", out.string(), "--agent", (binDir() / "raylab-agent-reference").string(),
+            "--lab", "1", "--threads", "2", "--timeout", "60"};
+}
+
+fs::path freshFolder(const std::string& name) {
+    const fs::path folder = fs::temp_directory_path() / name;
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
+}
+
+// A class of small submissions (the agent grades, so their content does not matter; they are not empty).
+fs::path makeClass(const fs::path& root, const std::vector<std::string>& names) {
+    for (const std::string& name : names) {
+        fs::create_directories(root / "class" / name / "lab1_first_image");
+        std::ofstream(root / "class" / name / "lab1_first_image" / "gradient.cpp") << "// " << name << "\n";
+    }
+    return root / "class";
+}
+
+// The results of a run, by the folder each student got.
+std::map<std::string, std::string> results(const fs::path& out) {
+    std::map<std::string, std::string> found;
+    for (const auto& entry : fs::directory_iterator(out / "students"))
+        if (fs::exists(entry.path() / "result.json")) found[entry.path().filename().string()] = slurp(entry.path() / "result.json");
+    return found;
+}
+
+const std::vector<std::string> kSix{"ann", "bob", "chloé", "dan", "eve", "fay"};
+
+} // namespace
+
+TEST_SUITE("class ledger") {
+
+TEST_CASE("grade-class interrupted 5 times at random points (SIGINT, SIGTERM) resumes to the CSV of an uninterrupted run") {
+    const fs::path root = freshFolder("raylab-ledger-interrupted");
+    const fs::path classDir = makeClass(root, kSix);
+
+    const auto start = std::chrono::steady_clock::now();
+    ProgramProcess quiet = startRaylab(classArgs(classDir, root / "quiet"), root / "quiet.txt");
+    REQUIRE_MESSAGE(quiet.finish() == 0, quiet.text());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string expected = slurp(root / "quiet" / "grades.csv");
+    REQUIRE(readCsv(expected).size() == kSix.size() + 1);
+    const auto expectedResults = results(root / "quiet");
+
+    const unsigned seed = std::random_device{}();
+    std::mt19937 random(seed);
+    // Up to half a whole run: each stop lands on a student being graded (or on the start), and the
+    // runs go on from where the last one stopped.
+    std::uniform_real_distribution<double> when(0., seconds / 2.);
+    int stoppedWhileGrading = 0;
+    for (int stop = 0; stop < 5; ++stop) {
+        CAPTURE(seed);
+        CAPTURE(stop);
+        ProgramProcess run = startRaylab(classArgs(classDir, root / "stopped"), root / "stopped.txt");
+        std::this_thread::sleep_for(std::chrono::duration<double>(when(random)));
+        // To raylab alone, as Ctrl-C (SIGINT) or a service manager (SIGTERM) would: the processes
+        // grading the student are its to stop.
+        const int signal = stop % 2 == 0 ? SIGINT : SIGTERM;
+        kill(run.pid, signal);
+        const int status = run.finish();
+        const std::string output = run.text();
+        CHECK_MESSAGE((status == 128 + signal || status == 0), output);
+        // Killed before it started grading (nothing printed yet), or stopped cleanly, saying so.
+        if (status != 0 && !output.empty())
+            CHECK_MESSAGE(output.find(signal == SIGINT ? "stopped by SIGINT" : "stopped by SIGTERM") != std::string::npos, output);
+        if (output.find("interrupted: not graded") != std::string::npos) ++stoppedWhileGrading;
+        // Every result written so far is the one an uninterrupted run writes: none is partial.
+        for (const auto& [student, result] : results(root / "stopped")) CHECK(result == expectedResults.at(student));
+        const auto rows = readCsv(slurp(root / "stopped" / "grades.csv"));
+        CHECK(rows.size() == results(root / "stopped").size() + 1);
+    }
+    MESSAGE(stoppedWhileGrading << " of 5 stops fell on a student being graded (seed " << seed << ")");
+    ProgramProcess last = startRaylab(classArgs(classDir, root / "stopped"), root / "stopped.txt");
+    REQUIRE_MESSAGE(last.finish() == 0, last.text());
+    CHECK(slurp(root / "stopped" / "grades.csv") == expected);
+}
+
+TEST_CASE("a second grade-class on the same --out refuses, naming the lock and the first run's pid; --wait waits") {
+    const fs::path root = freshFolder("raylab-ledger-twice");
+    const fs::path classDir = makeClass(root, kSix);
+    ProgramProcess first = startRaylab(classArgs(classDir, root / "out"), root / "first.txt");
+    // The lock holds the first run's pid once it has taken it.
+    const fs::path lock = root / "out" / "grade-class.lock";
+    for (int k = 0; k < 500 && slurp(lock) != std::to_string(first.pid) + "\n"; ++k)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    REQUIRE(slurp(lock) == std::to_string(first.pid) + "\n");
+
+    ProgramProcess second = startRaylab(classArgs(classDir, root / "out"), root / "second.txt");
+    const int secondStatus = second.finish();
+    const std::string refused = second.text();
+    CHECK(secondStatus == 1);
+    CHECK_MESSAGE(refused.find("another grade-class run (pid " + std::to_string(first.pid) + ")") != std::string::npos, refused);
+    CHECK_MESSAGE(refused.find(lock.string()) != std::string::npos, refused);
+    CHECK_MESSAGE(refused.find("--wait") != std::string::npos, refused);
+
+    std::vector<std::string> waitArgs = classArgs(classDir, root / "out");
+    waitArgs.push_back("--wait");
+    ProgramProcess waiting = startRaylab(waitArgs, root / "waiting.txt");
+    CHECK(first.finish() == 0);
+    CHECK(waiting.finish() == 0);
+    const std::string waited = waiting.text();
+    CHECK_MESSAGE(waited.find("waiting: another grade-class run (pid " + std::to_string(first.pid) + ")") != std::string::npos,
+                  waited);
+    for (const std::string& name : kSix) CHECK_MESSAGE(waited.find(name) != std::string::npos, waited);
+    CHECK(waited.find("already graded") != std::string::npos);
+    CHECK(readCsv(slurp(root / "out" / "grades.csv")).size() == kSix.size() + 1);
+
+    // The lock of a run that died (its pid still in the file) is simply taken.
+    std::ofstream(lock) << "999999999\n";
+    ProgramProcess after = startRaylab(classArgs(classDir, root / "out"), root / "after.txt");
+    CHECK_MESSAGE(after.finish() == 0, after.text());
+}
+
+TEST_CASE("hostile folder names each get their own row with the real name and full points; odd entries are skipped") {
+    const fs::path root = freshFolder("raylab-ledger-names");
+    const std::vector<std::string> names{"x$(touch PWNED)", "back`touch PWNED`tick", "double\"quote", "it's", "with space",
+                                         "-leading-dash", "ünïcödé 名前", "a,b", "new\nline", "grades.csv", "build",
+                                         "students", "%41", "A"};
+    const fs::path classDir = makeClass(root, names);
+    std::ofstream(classDir / "notes.txt") << "not a submission";
+    fs::create_directories(classDir / "empty");
+    fs::create_directory_symlink(classDir / "A", classDir / "link");
+    fs::create_directory_symlink("loop", classDir / "loop"); // a link to itself
+
+    ProgramProcess run = startRaylab(classArgs(classDir, root / "out"), root / "output.txt");
+    const int status = run.finish();
+    const std::string output = run.text();
+    REQUIRE_MESSAGE(status == 0, output);
+    const std::string lines = "\n" + output;
+    CHECK_MESSAGE(lines.find("\nskipped 'notes.txt': not a folder\n") != std::string::npos, output);
+    CHECK_MESSAGE(lines.find("\nskipped 'empty': an empty folder\n") != std::string::npos, output);
+    CHECK_MESSAGE(lines.find("\nskipped 'link': a symbolic link") != std::string::npos, output);
+    CHECK_MESSAGE(lines.find("\nskipped 'loop': a symbolic link") != std::string::npos, output);
+    CHECK_MESSAGE(output.find("new\\nline") != std::string::npos, output); // one line in the terminal
+
+    const auto rows = readCsv(slurp(root / "out" / "grades.csv"));
+    REQUIRE(!rows.empty());
+    const std::vector<std::string>& header = rows[0];
+    REQUIRE(header.size() >= 4);
+    CHECK(header[0] == "student");
+    const std::size_t total = std::size_t(std::find(header.begin(), header.end(), "total") - header.begin());
+    REQUIRE(total + 1 < header.size());
+    CHECK(rows.size() == names.size() + 1);
+    for (const std::string& name : names) {
+        CAPTURE(name);
+        int found = 0;
+        for (const auto& row : rows)
+            if (row[0] == name) {
+                ++found;
+                REQUIRE(row.size() == header.size());
+                CHECK(row[total] == row[total + 1]); // total == max
+                CHECK(std::stod(row[total]) > 0.);
+            }
+        CHECK(found == 1);
+    }
+    CHECK(results(root / "out").size() == names.size()); // a folder each
+    for (const fs::path& folder : {root, classDir, root / "out", fs::current_path()}) CHECK_FALSE(fs::exists(folder / "PWNED"));
+}
+
+} // TEST_SUITE
+
+#endif
