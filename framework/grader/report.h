@@ -13,6 +13,9 @@ void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, 
 void writeGradescopeJson(const GradeResult& result, const std::filesystem::path& file);
 void writeJUnitXml(const GradeResult& result, const std::filesystem::path& file);
 
+// Writes `text` to `file` whole: into a temporary file beside it, then renamed over it.
+void writeFileAtomically(const std::filesystem::path& file, const std::string& text);
+
 // All three into `folder` (created).
 void writeReports(const GradeResult& result, const ReferenceSet& references, const std::filesystem::path& folder);
 
