@@ -202,7 +202,7 @@ fs::path autograderRoot() {
 }
 
 std::string gradescopeSetupScript() {
-    return R"(#!/usr/bin/env bash
+    return R"script(#!/usr/bin/env bash
 # Written by `raylab autograder gradescope`. Gradescope runs it once, when it builds the autograder's
 # image: it installs the packages the students' tree needs, then builds raylab and the grading agent
 # (the stubs standing in for a submission), so that each submission only recompiles its lab files.
@@ -218,11 +218,11 @@ cp -R "$tree/labs" "$tree/submission"
 cmake -S "$tree" -B "$tree/build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
   -DRAYLAB_SUBMISSION_DIR="$tree/submission"
 cmake --build "$tree/build" -j "$(nproc)"
-)";
+)script";
 }
 
 std::string gradescopeRunScript() {
-    return R"(#!/usr/bin/env bash
+    return R"script(#!/usr/bin/env bash
 # Written by `raylab autograder gradescope`. Gradescope runs it for each submission: raylab copies the
 # lab folders of /autograder/submission into the tree, grades them with `raylab grade --labs` and
 # writes /autograder/results/results.json (zero for every item, with the reason, when it cannot).
@@ -230,7 +230,7 @@ std::string gradescopeRunScript() {
 set -euo pipefail
 root="${RAYLAB_AUTOGRADER_ROOT:-/autograder}"
 exec "$root/source/raylab/build/bin/raylab" autograder run
-)";
+)script";
 }
 
 void writeZip(const fs::path& zip, const std::vector<ZipEntry>& entries) {
