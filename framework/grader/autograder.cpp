@@ -174,7 +174,7 @@ std::string classroomWorkflow(const LabCatalog& catalog) {
         "jobs:\n  run-autograding-tests:\n    runs-on: ubuntu-latest\n"
         "    if: github.actor != 'github-classroom[bot]'\n    steps:\n"
         "    - name: Checkout code\n      uses: actions/checkout@v4\n"
-        "    - name: Build\n      run: scripts/setup.sh && cmake --preset default && cmake --build build\n";
+        "    - name: Build\n      run: scripts/setup.sh && cmake --preset default -DBUILD_TESTING=OFF && cmake --build build\n";
     for (const ClassroomStep& s : steps) {
         char points[32];
         std::snprintf(points, sizeof points, "%g", s.points);
