@@ -119,6 +119,7 @@ nlohmann::json gradeOnGradescope(const fs::path& folder) {
 // The solutions with the files of an applied patch (tests/grading/CMakeLists.txt) laid over them.
 fs::path patchedSolutions(const std::string& kind, const std::string& id, const fs::path& labs) {
     fs::remove_all(labs);
+    fs::create_directories(labs);
     fs::copy(sourceDir() / "solutions", labs, fs::copy_options::recursive);
     fs::copy(fs::path(RAYLAB_SUBMISSIONS) / kind / id, labs,
              fs::copy_options::recursive | fs::copy_options::overwrite_existing);
