@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace raylab::cli {
 
@@ -54,6 +55,12 @@ namespace raylab::cli {
 void addGradeCommands(CLI::App& app, Context& context);      // grade, grade-class
 void addReferencesCommand(CLI::App& app, Context& context); // references
 void addDistributeCommand(CLI::App& app, Context& context); // distribute
+void addAutograderCommand(CLI::App& app, Context& context); // autograder gradescope, github, run
+
+// The files of the students' tree (relative to `source`): all but the solutions and what would give
+// them away. writeStudentTree copies them into `out` (new or empty) and returns how many.
+std::vector<std::filesystem::path> studentTreeFiles(const std::filesystem::path& source);
+int writeStudentTree(const std::filesystem::path& source, const std::filesystem::path& out);
 } // namespace raylab::cli
 
 namespace raylab::cli {

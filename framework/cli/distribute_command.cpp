@@ -13,6 +13,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace raylab::cli {
 
@@ -31,26 +32,39 @@ bool withheld(const fs::path& relative) {
     return top.rfind("build", 0) == 0; // build folders
 }
 
-int distribute(const fs::path& source, const fs::path& out) {
-    std::error_code error;
-    if (fs::exists(out, error) && !fs::is_empty(out, error))
-        throw std::invalid_argument("distribute: " + out.string() + " exists and is not empty; choose a new folder");
+} // namespace
+
+std::vector<fs::path> studentTreeFiles(const fs::path& source) {
     const fs::path sourceAbs = fs::canonical(source);
-    fs::create_directories(out);
-    const fs::path outAbs = fs::canonical(out);
-    int files = 0;
+    std::vector<fs::path> files;
     for (auto it = fs::recursive_directory_iterator(sourceAbs); it != fs::recursive_directory_iterator(); ++it) {
         const fs::path relative = it->path().lexically_relative(sourceAbs); // fs::relative would follow links
-        if (withheld(relative) || it->path() == outAbs || it->is_symlink()) {
+        if (withheld(relative) || it->is_symlink()) {
             if (it->is_directory()) it.disable_recursion_pending();
             continue;
         }
-        if (it->is_directory()) fs::create_directories(outAbs / relative);
-        else if (it->is_regular_file()) {
-            fs::copy_file(it->path(), outAbs / relative, fs::copy_options::overwrite_existing);
-            ++files;
-        }
+        if (it->is_regular_file()) files.push_back(relative);
     }
+    return files;
+}
+
+int writeStudentTree(const fs::path& source, const fs::path& out) {
+    std::error_code error;
+    if (fs::exists(out, error) && !fs::is_empty(out, error))
+        throw std::invalid_argument(out.string() + " exists and is not empty; choose a new folder");
+    const std::vector<fs::path> files = studentTreeFiles(source); // before `out` exists: never inside it
+    const fs::path sourceAbs = fs::canonical(source);
+    for (const fs::path& relative : files) {
+        fs::create_directories((out / relative).parent_path());
+        fs::copy_file(sourceAbs / relative, out / relative, fs::copy_options::overwrite_existing);
+    }
+    return int(files.size());
+}
+
+namespace {
+
+int distribute(const fs::path& source, const fs::path& out) {
+    const int files = writeStudentTree(source, out);
     std::printf("raylab distribute: %d files -> %s (without solutions/, tests/mistakes/, tests/variants/)\n"
                 "  students build it with: cmake --workflow --preset test, and grade themselves with: "
                 "build/bin/raylab grade\n",

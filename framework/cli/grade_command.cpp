@@ -2,6 +2,7 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "grader/autograder.h"
 #include "grader/class_run.h"
 #include "grader/grade.h"
 #include "grader/report.h"
@@ -27,6 +28,7 @@ struct GradeOptions {
     std::vector<std::string> agents; // expert: grade these agent programs (each runs every lab)
     double timeout = 180.;
     int lab = 0; // 0: every lab
+    std::string item; // one check (its name) or figure (its id) alone
 };
 
 // A fresh folder of our own for the agents' files.
@@ -110,12 +112,19 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
     return result;
 }
 
-int gradeLabs(const GradeOptions& o, const Context& context) {
+int gradeLabs(GradeOptions o, const Context& context) {
     const fs::path scratch = scratchFolder("grade");
     const GradeSetup setup = setupFor(o, context, scratch);
+    if (!o.item.empty()) try { // its lab is graded, the item alone kept
+            o.lab = labOfItem(setup.labs, o.item);
+        } catch (const std::invalid_argument&) {
+            fs::remove_all(scratch);
+            throw;
+        }
     const fs::path buildDir = o.buildDir.empty() ? fs::path("out/grade-build") : fs::path(o.buildDir);
-    const GradeResult result =
+    GradeResult result =
         gradeCodeOnce(o, setup, buildDir, "raylab grade " + (o.labs.empty() ? std::string("(labs/)") : o.labs));
+    if (!o.item.empty()) result = onlyItem(result, o.item);
     std::printf("%s", terminalSummary(result).c_str());
     writeReports(result, setup.references, o.report);
     std::printf("report: %s/index.html (also results.json, junit.xml)\n", o.report.c_str());
@@ -181,6 +190,7 @@ void addGradeCommands(CLI::App& app, Context& context) {
     grade->add_option("--images", o->images, "grade pictures DIR/<figure id>.png, no code");
     grade->add_option("--report", o->report, "where the reports go (default: out/report)");
     grade->add_option("--lab", o->lab, "grade this lab only (its number)")->check(CLI::PositiveNumber);
+    grade->add_option("--item", o->item, "grade one check (its name) or figure (its id) alone; 0 only when it passes");
     grade->add_option("--agent", o->agents, "expert: grade this agent program (all labs)")->group("");
     addCommonOptions(grade, *o);
     context.addRenderOptions(grade);

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
     cli::addGradeCommands(app, context);
     cli::addReferencesCommand(app, context);
     cli::addDistributeCommand(app, context);
+    cli::addAutograderCommand(app, context);
     cli::addStudyAntialiasingCommand(app, context);
     cli::addBenchEffectsCommand(app, context);
     cli::addNumericsCommands(app, context);

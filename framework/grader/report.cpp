@@ -109,25 +109,33 @@ void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, 
     writeFileAtomically(folder / "index.html", out.str());
 }
 
+// Gradescope's autograder format, its documented fields only: every item with its points, always
+// visible, its message (expected, got, hint) or its verdict and diagnosis as output; no leaderboard.
 void writeGradescopeJson(const GradeResult& result, const fs::path& file) {
     nlohmann::json tests = nlohmann::json::array();
+    auto test = [&](const std::string& name, double points, double maxPoints, bool passed, const std::string& output) {
+        tests.push_back({{"name", name},
+                         {"score", points},
+                         {"max_score", maxPoints},
+                         {"status", passed ? "passed" : "failed"},
+                         {"output", output},
+                         {"visibility", "visible"}});
+    };
     for (const CheckOutcome& c : result.checks)
-        tests.push_back({{"name", "lab" + std::to_string(c.lab) + ": " + c.name},
-                         {"score", c.points},
-                         {"max_score", c.maxPoints},
-                         {"status", c.passed ? "passed" : "failed"},
-                         {"output", c.message}});
+        test("lab" + std::to_string(c.lab) + ": " + c.name, c.points, c.maxPoints, c.passed, c.message);
     for (const FigureOutcome& f : result.figures)
-        tests.push_back({{"name", "lab" + std::to_string(f.lab) + ": figure " + f.id},
-                         {"score", f.points},
-                         {"max_score", f.maxPoints},
-                         {"status", f.passed ? "passed" : "failed"},
-                         {"output", itemOutput(f)}});
-    std::string output;
+        test("lab" + std::to_string(f.lab) + ": figure " + f.id, f.points, f.maxPoints, f.passed, itemOutput(f));
+    std::string output = "Total: " + number(result.score()) + " / " + number(result.maxScore()) + "\n";
+    for (const LabOutcome& lab : result.labs) {
+        output += "lab " + std::to_string(lab.lab) + ": " + number(lab.points) + " / " + number(lab.maxPoints) + "\n";
+        for (const std::string& n : lab.notes) output += "  " + n + "\n";
+    }
     for (const std::string& p : result.problems) output += p + "\n";
     const nlohmann::json root{{"score", result.score()},
-                              {"max_score", result.maxScore()},
                               {"output", output},
+                              {"visibility", "visible"},
+                              {"stdout_visibility", "visible"},
+                              {"extra_data", {{"max_score", result.maxScore()}}},
                               {"tests", tests}};
     writeFileAtomically(file, root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }

@@ -93,7 +93,7 @@ TEST_CASE("grade writes index.html, results.json and junit.xml that agree") {
     double sum = 0.;
     for (const auto& t : j["tests"]) sum += t["score"].get<double>();
     CHECK(j["score"].get<double>() == doctest::Approx(sum));
-    CHECK(j["score"].get<double>() < j["max_score"].get<double>());
+    CHECK(j["score"].get<double>() < j["extra_data"]["max_score"].get<double>());
     CHECK(fs::exists(dir / "report" / "junit.xml"));
     CHECK(fs::exists(dir / "report" / "index.html"));
 }

@@ -52,7 +52,9 @@ TEST_CASE("results.json is Gradescope's format, item by item") {
     writeReports(sampleResult(), references, folder);
     const nlohmann::json j = nlohmann::json::parse(slurp(folder / "results.json"));
     CHECK(j["score"] == 2.);
-    CHECK(j["max_score"] == 9.);
+    CHECK(j["extra_data"]["max_score"] == 9.);
+    CHECK(j["tests"][0]["visibility"] == "visible");
+    CHECK(j["stdout_visibility"] == "visible");
     REQUIRE(j["tests"].size() == 3);
     CHECK(j["tests"][0]["name"] == "lab2: generateRay: corners");
     CHECK(j["tests"][0]["status"] == "failed");

@@ -1,0 +1,372 @@
+// The autograders end to end (tests/autograder/CMakeLists.txt makes the fixtures): Gradescope's zip
+// unpacked into a /autograder-like folder, setup.sh run without its package installation, and
+// run_autograder on the reference, the stubs, a catalogued mistake, a crash and an empty hand-in,
+// each results.json checked against Gradescope's format and against `raylab grade` on the same code;
+// GitHub Classroom's workflow parsed, its item steps' commands run in the built tree.
+#include "grader/autograder.h"
+#include "grader/report.h"
+#include "grading_support.h"
+
+#include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
+#include <zip.h>
+
+#include <cctype>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <sys/wait.h>
+
+using namespace raylab::test;
+
+namespace {
+
+const fs::path kRoot = RAYLAB_AUTOGRADER_TEST_ROOT; // autograder.zip, autograder/ (Gradescope's), github/
+fs::path autograder() { return kRoot / "autograder"; }
+fs::path tree() { return autograder() / "source" / "raylab"; }
+
+std::string slurp(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// A shell command's exit status, its output in `log`.
+int run(const std::string& command, const fs::path& log) {
+    const int raw = std::system((command + " > \"" + log.string() + "\" 2>&1").c_str());
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+void extractZip(const fs::path& zipFile, const fs::path& into) {
+    int code = 0;
+    zip_t* archive = zip_open(zipFile.string().c_str(), ZIP_RDONLY, &code);
+    REQUIRE_MESSAGE(archive != nullptr, "cannot open " << zipFile << " (libzip error " << code << ")");
+    const zip_int64_t count = zip_get_num_entries(archive, 0);
+    for (zip_uint64_t k = 0; k < zip_uint64_t(count); ++k) {
+        const std::string name = zip_get_name(archive, k, 0);
+        zip_stat_t stat;
+        zip_stat_index(archive, k, 0, &stat);
+        std::string content(stat.size, '\0');
+        zip_file_t* file = zip_fopen_index(archive, k, 0);
+        REQUIRE(file != nullptr);
+        CHECK(zip_fread(file, content.data(), stat.size) == zip_int64_t(stat.size));
+        zip_fclose(file);
+        const fs::path target = into / name;
+        fs::create_directories(target.parent_path());
+        std::ofstream(target, std::ios::binary) << content;
+        zip_uint8_t system = 0;
+        zip_uint32_t attributes = 0;
+        zip_file_get_external_attributes(archive, k, 0, &system, &attributes);
+        if (system == ZIP_OPSYS_UNIX) fs::permissions(target, fs::perms((attributes >> 16) & 0777));
+    }
+    zip_close(archive);
+}
+
+bool isVisibility(const nlohmann::json& v) {
+    return v.is_string() && (v == "visible" || v == "hidden" || v == "after_due_date" || v == "after_published");
+}
+
+// Gradescope's results.json: the documented fields with their types; the total is the tests' sum;
+// no leaderboard.
+nlohmann::json validResults(const fs::path& file) {
+    REQUIRE_MESSAGE(fs::exists(file), file << " was not written");
+    const nlohmann::json j = nlohmann::json::parse(slurp(file));
+    REQUIRE(j.is_object());
+    REQUIRE(j["score"].is_number());
+    CHECK(j["output"].is_string());
+    CHECK(isVisibility(j["visibility"]));
+    CHECK(isVisibility(j["stdout_visibility"]));
+    CHECK_FALSE(j.contains("leaderboard"));
+    REQUIRE(j["tests"].is_array());
+    double sum = 0.;
+    for (const nlohmann::json& t : j["tests"]) {
+        REQUIRE(t["score"].is_number());
+        REQUIRE(t["max_score"].is_number());
+        CHECK(t["name"].is_string());
+        CHECK(t["output"].is_string());
+        CHECK(isVisibility(t["visibility"]));
+        CHECK((t["status"] == "passed" || t["status"] == "failed"));
+        CHECK(t["score"].get<double>() <= t["max_score"].get<double>());
+        sum += t["score"].get<double>();
+    }
+    CHECK(j["score"].get<double>() == doctest::Approx(sum));
+    return j;
+}
+
+double catalogTotal() {
+    double total = 0.;
+    for (const LabDescription& lab : courseSetup().labs.labs) {
+        for (const LabCheck& c : lab.checks) total += c.points;
+        for (const LabFigure& f : lab.figures) total += f.points;
+    }
+    return total;
+}
+
+// Hands `folder` in as the submission (its content at the submission's top) and runs run_autograder.
+nlohmann::json gradeOnGradescope(const fs::path& folder) {
+    fs::remove_all(autograder() / "submission");
+    fs::copy(folder, autograder() / "submission", fs::copy_options::recursive);
+    const fs::path log = kRoot / "run_autograder.log";
+    CHECK_MESSAGE(run("cd \"" + autograder().string() + "\" && \"" + (autograder() / "run_autograder").string() + "\"",
+                      log) == 0,
+                  slurp(log));
+    return validResults(autograder() / "results" / "results.json");
+}
+
+// The solutions with the files of an applied patch (tests/grading/CMakeLists.txt) laid over them.
+fs::path patchedSolutions(const std::string& kind, const std::string& id, const fs::path& labs) {
+    fs::remove_all(labs);
+    fs::create_directories(labs);
+    fs::copy(sourceDir() / "solutions", labs, fs::copy_options::recursive);
+    fs::copy(fs::path(RAYLAB_SUBMISSIONS) / kind / id, labs,
+             fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+    fs::remove(labs / "applied.stamp");
+    return labs;
+}
+
+// Each item's points as results.json names it, from Gradescope's and from grading the agent here.
+std::map<std::string, double> pointsByItem(const nlohmann::json& results) {
+    std::map<std::string, double> points;
+    for (const nlohmann::json& t : results["tests"]) points[t["name"]] = t["score"];
+    return points;
+}
+
+std::map<std::string, double> pointsOfAgent(const std::string& agent) {
+    const fs::path file = kRoot / (agent + ".results.json");
+    writeGradescopeJson(gradeAgent(courseSetup(), agent), file);
+    return pointsByItem(nlohmann::json::parse(slurp(file)));
+}
+
+YAML::Node workflowSteps() {
+    const YAML::Node workflow = YAML::LoadFile((kRoot / "github" / ".github" / "workflows" / "classroom.yml").string());
+    return workflow["jobs"]["run-autograding-tests"]["steps"];
+}
+
+// The command of the workflow's step that grades `item`.
+std::string stepCommand(const std::string& item) {
+    for (const YAML::Node& step : workflowSteps())
+        if (step["with"] && step["with"]["test-name"] && step["with"]["test-name"].as<std::string>() == item)
+            return step["with"]["command"].as<std::string>();
+    FAIL("no step grades " << item);
+    return "";
+}
+
+} // namespace
+
+TEST_SUITE("autograder setup") {
+
+TEST_CASE("the Gradescope zip unpacks into source/ and its setup.sh builds the tree") {
+    fs::remove_all(autograder());
+    extractZip(kRoot / "autograder.zip", autograder() / "source");
+    for (const char* script : {"setup.sh", "run_autograder"}) {
+        const fs::path file = autograder() / "source" / script;
+        REQUIRE(fs::exists(file));
+        CHECK((fs::status(file).permissions() & fs::perms::owner_exec) != fs::perms::none);
+        CHECK(slurp(file).find("set -euo pipefail") != std::string::npos);
+    }
+    CHECK_FALSE(fs::exists(tree() / "solutions"));
+    CHECK_FALSE(fs::exists(tree() / "tests" / "mistakes"));
+    CHECK(fs::exists(tree() / "framework/grader/data/references/mistakes.toml"));
+    CHECK(fs::exists(tree() / "labs/lab1_first_image/lab.toml"));
+    // Gradescope copies run_autograder to /autograder and runs it from there.
+    fs::copy_file(autograder() / "source" / "run_autograder", autograder() / "run_autograder");
+    const fs::path log = kRoot / "setup.log";
+    REQUIRE_MESSAGE(run("bash \"" + (autograder() / "source" / "setup.sh").string() + "\"", log) == 0, slurp(log));
+    CHECK(fs::exists(tree() / "build" / "bin" / "raylab"));
+    CHECK(fs::exists(tree() / "build" / "bin" / "raylab-agent"));
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("autograder gradescope") {
+
+TEST_CASE("run_autograder: the reference solutions in labs/ earn every point") {
+    const fs::path submission = kRoot / "hand-in-reference";
+    fs::remove_all(submission);
+    fs::create_directories(submission);
+    fs::copy(sourceDir() / "solutions", submission / "labs", fs::copy_options::recursive);
+    const nlohmann::json j = gradeOnGradescope(submission);
+    CHECK(j["score"].get<double>() == doctest::Approx(catalogTotal()));
+    for (const nlohmann::json& t : j["tests"]) CHECK_MESSAGE(t["status"] == "passed", t.dump());
+}
+
+TEST_CASE("run_autograder: the stubs, lab folders at the top, earn zero and say not done yet") {
+    const nlohmann::json j = gradeOnGradescope(sourceDir() / "labs");
+    CHECK(j["score"].get<double>() == 0.);
+    CHECK(j["tests"].size() > 20);
+    for (const nlohmann::json& t : j["tests"])
+        CHECK_MESSAGE(t["output"].get<std::string>().find("not done yet") != std::string::npos, t.dump());
+}
+
+TEST_CASE("run_autograder: a catalogued mistake in a wrapping folder loses its points, with the hint; "
+          "the workflow's steps grade its items alone") {
+    const std::string id = "fovy_not_halved";
+    const fs::path submission = kRoot / "hand-in-mistake";
+    fs::remove_all(submission);
+    patchedSolutions("mistake", id, submission / "raylab-main" / "labs");
+    const nlohmann::json j = gradeOnGradescope(submission);
+    CHECK(j["score"].get<double>() < catalogTotal());
+    CHECK(pointsByItem(j) == pointsOfAgent("raylab-mistake-" + id)); // as `raylab grade` grades the same code
+    std::string hint;
+    for (const Mistake& m : courseSetup().mistakes)
+        if (m.id == id) hint = m.hint;
+    REQUIRE_FALSE(hint.empty());
+    const std::string check = "updateViewport: the viewport of the default camera";
+    bool hinted = false;
+    for (const nlohmann::json& t : j["tests"]) {
+        if (t["name"] == "lab2: " + check) CHECK(t["score"] == 0.);
+        hinted = hinted || t["output"].get<std::string>().find(hint) != std::string::npos;
+    }
+    CHECK_MESSAGE(hinted, "no test's output holds the hint: " << hint);
+
+    // The tree's agent now holds this submission: GitHub Classroom's step commands, run there.
+    const fs::path log = kRoot / "item.log";
+    const std::string cd = "cd \"" + tree().string() + "\" && ";
+    CHECK_MESSAGE(run(cd + stepCommand("lab1_gradient"), log) == 0, slurp(log));
+    CHECK(slurp(log).find("PASS  lab1  figure lab1_gradient") != std::string::npos);
+    CHECK_MESSAGE(run(cd + stepCommand(check), log) == 1, slurp(log));
+    const std::string output = slurp(log);
+    CHECK(output.find("FAIL  lab2  " + check) != std::string::npos);
+    CHECK(output.find("Hint:") != std::string::npos);
+    CHECK(output.find("generateRay") == std::string::npos); // that item alone
+}
+
+TEST_CASE("run_autograder: a submission that crashes is graded, the crash costing only its items") {
+    const fs::path submission = kRoot / "hand-in-crash";
+    fs::remove_all(submission);
+    patchedSolutions("bad", "crash", submission);
+    const nlohmann::json j = gradeOnGradescope(submission);
+    CHECK(j["score"].get<double>() > 0.);
+    CHECK(j["score"].get<double>() < catalogTotal());
+    CHECK(pointsByItem(j) == pointsOfAgent("raylab-bad-crash"));
+}
+
+TEST_CASE("run_autograder: a hand-in without lab folders gets zero, with the layouts it accepts") {
+    const fs::path submission = kRoot / "hand-in-empty";
+    fs::remove_all(submission);
+    fs::create_directories(submission / "notes");
+    std::ofstream(submission / "notes" / "README.txt") << "my labs are on my laptop\n";
+    const nlohmann::json j = gradeOnGradescope(submission);
+    CHECK(j["score"] == 0.);
+    CHECK(j["tests"].size() > 20);
+    CHECK(j["output"].get<std::string>().find("no lab folder in the submission") != std::string::npos);
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("autograder github") {
+
+TEST_CASE("classroom.yml: GitHub Classroom's shape, a build, a step per check and figure with its points") {
+    CHECK_FALSE(fs::exists(kRoot / "github" / "solutions"));
+    CHECK(fs::exists(kRoot / "github" / "framework/grader/data/references/mistakes.toml"));
+    const YAML::Node workflow = YAML::LoadFile((kRoot / "github" / ".github" / "workflows" / "classroom.yml").string());
+    bool onPush = false;
+    for (const YAML::Node& event : workflow["on"]) onPush = onPush || event.as<std::string>() == "push";
+    CHECK(onPush);
+    const YAML::Node steps = workflowSteps();
+    REQUIRE(steps.IsSequence());
+    std::map<std::string, double> expected; // every item of the labs' descriptions, with its points
+    for (const LabDescription& lab : courseSetup().labs.labs) {
+        for (const LabCheck& c : lab.checks) expected[c.name] = c.points;
+        for (const LabFigure& f : lab.figures) expected[f.id] = f.points;
+    }
+    std::map<std::string, double> graded;
+    std::vector<std::string> ids;
+    int builds = 0;
+    YAML::Node reporter, upload;
+    for (const YAML::Node& step : steps) {
+        const std::string uses = step["uses"] ? step["uses"].as<std::string>() : "";
+        if (step["run"] && step["run"].as<std::string>().find("cmake --build build") != std::string::npos) {
+            ++builds;
+            CHECK(ids.empty()); // before the items
+        }
+        if (uses == "classroom-resources/autograding-command-grader@v1") {
+            const YAML::Node with = step["with"];
+            for (const char* key : {"test-name", "setup-command", "command", "timeout", "max-score"})
+                CHECK_MESSAGE(with[key], "a grader step without " << key);
+            const std::string name = with["test-name"].as<std::string>();
+            CHECK(with["command"].as<std::string>().rfind("build/bin/raylab grade --item ", 0) == 0);
+            CHECK(with["timeout"].as<int>() > 0);
+            graded[name] = with["max-score"].as<double>();
+            ids.push_back(step["id"].as<std::string>());
+        }
+        if (uses == "classroom-resources/autograding-grading-reporter@v1") reporter = step;
+        if (uses.rfind("actions/upload-artifact@", 0) == 0) upload = step;
+    }
+    CHECK(builds == 1);
+    CHECK(graded == expected);
+    REQUIRE(reporter);
+    std::string runners;
+    for (const std::string& id : ids) {
+        runners += (runners.empty() ? "" : ",") + id;
+        std::string variable = id + "_RESULTS";
+        for (char& c : variable) c = char(std::toupper(static_cast<unsigned char>(c)));
+        CHECK(reporter["env"][variable].as<std::string>() == "${{steps." + id + ".outputs.result}}");
+    }
+    CHECK(reporter["with"]["runners"].as<std::string>() == runners);
+    REQUIRE(upload);
+    CHECK(upload["with"]["path"].as<std::string>() == "out/report");
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("autograder units") {
+
+TEST_CASE("a submission's labs are found at its top, in labs/, or in one wrapping folder; links are not copied") {
+    const LabCatalog catalog = courseSetup().labs;
+    const fs::path root = kRoot / "layouts";
+    fs::remove_all(root);
+    for (const fs::path& labs : {root / "top", root / "inlabs" / "labs", root / "wrapped" / "raylab-main" / "labs",
+                                 root / "wrappedtop" / "my-labs"}) {
+        fs::create_directories(labs / "lab2_primary_rays");
+        std::ofstream(labs / "lab2_primary_rays" / "perspective_camera.cpp") << "// mine\n";
+    }
+    fs::create_directories(root / "wrapped" / "__MACOSX");
+    CHECK(findSubmittedLabs(root / "top", catalog) == root / "top");
+    CHECK(findSubmittedLabs(root / "inlabs", catalog) == root / "inlabs" / "labs");
+    CHECK(findSubmittedLabs(root / "wrapped", catalog) == root / "wrapped" / "raylab-main" / "labs");
+    CHECK(findSubmittedLabs(root / "wrappedtop", catalog) == root / "wrappedtop" / "my-labs");
+    fs::create_directories(root / "none" / "a");
+    fs::create_directories(root / "none" / "b" / "lab2_primary_rays");
+    CHECK_THROWS_WITH_AS(findSubmittedLabs(root / "none", catalog), doctest::Contains("no lab folder"), std::runtime_error);
+
+    fs::create_symlink(sourceDir() / "framework/grader/data/references/mistakes.toml",
+                       root / "top" / "lab2_primary_rays" / "stolen.toml");
+    copySubmittedLabs(root / "top", catalog, root / "copied");
+    CHECK(slurp(root / "copied" / "lab2_primary_rays" / "perspective_camera.cpp") == "// mine\n");
+    CHECK_FALSE(fs::exists(root / "copied" / "lab2_primary_rays" / "stolen.toml"));
+    CHECK_FALSE(fs::exists(root / "copied" / "lab1_first_image"));
+}
+
+TEST_CASE("one item alone: its lab, its verdict and points; an unknown name is refused") {
+    const LabCatalog catalog = courseSetup().labs;
+    CHECK(labOfItem(catalog, "lab1_gradient") == 1);
+    CHECK(labOfItem(catalog, "updateViewport: the viewport of the default camera") == 2);
+    CHECK_THROWS_AS(labOfItem(catalog, "no such check"), std::invalid_argument);
+    GradeResult r;
+    r.checks.push_back({2, "a", false, "expected 1, got 2. Hint: h", 0., 3.});
+    r.checks.push_back({2, "b", true, "", 2., 2.});
+    r.labs.push_back({2, 2., 5., {"a note"}});
+    const GradeResult one = onlyItem(r, "b");
+    REQUIRE(one.checks.size() == 1);
+    CHECK(one.allPassed());
+    REQUIRE(one.labs.size() == 1);
+    CHECK(one.labs[0].maxPoints == 2.);
+    CHECK_FALSE(onlyItem(r, "a").allPassed());
+    CHECK_THROWS(onlyItem(r, "c"));
+}
+
+TEST_CASE("the step ids are unique and fit GitHub's ids; the commands quote the names") {
+    const std::vector<ClassroomStep> steps = classroomSteps(courseSetup().labs);
+    std::set<std::string> ids;
+    for (const ClassroomStep& s : steps) {
+        CHECK(ids.insert(s.id).second);
+        CHECK(s.id.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") == std::string::npos);
+    }
+    CHECK(classroomCommand({"x", "it's", 1.}) == "build/bin/raylab grade --item 'it'\\''s' --report out/item-report");
+}
+
+} // TEST_SUITE
