@@ -22,23 +22,24 @@ if(NOT TARGET CLI11::CLI11)
   raylab_missing("CLI11 (command line)" libcli11-dev cli11 cli11)
 endif()
 
-# stb_image_write / stb_image: Debian ships them compiled (pkg-config stb); elsewhere they are
-# header-only and framework/src/stb_implementation.cpp compiles them.
+# stb_image / stb_image_write: only their headers are taken (Debian's pkg-config stb also offers a
+# compiled libstb, not used); framework/src/stb_implementation.cpp compiles them, with zlib as the
+# PNG writer's deflate (docs/performance.md).
 find_package(PkgConfig QUIET)
 if(PkgConfig_FOUND)
-  pkg_check_modules(STB QUIET IMPORTED_TARGET stb)
+  pkg_check_modules(STB QUIET stb)
 endif()
-if(STB_FOUND)
-  add_library(raylab_stb INTERFACE)
-  target_link_libraries(raylab_stb INTERFACE PkgConfig::STB)
-else()
-  find_path(STB_INCLUDE_DIR stb_image_write.h PATH_SUFFIXES stb)
-  if(NOT STB_INCLUDE_DIR)
-    raylab_missing("stb (image files)" libstb-dev "stb" stb)
-  endif()
-  add_library(raylab_stb STATIC ${CMAKE_SOURCE_DIR}/framework/src/stb_implementation.cpp)
-  target_include_directories(raylab_stb SYSTEM PUBLIC ${STB_INCLUDE_DIR})
+find_path(STB_INCLUDE_DIR stb_image_write.h HINTS ${STB_INCLUDE_DIRS} PATH_SUFFIXES stb)
+if(NOT STB_INCLUDE_DIR)
+  raylab_missing("stb (image files)" libstb-dev "stb" stb)
 endif()
+find_package(ZLIB QUIET)
+if(NOT TARGET ZLIB::ZLIB)
+  raylab_missing("zlib (PNG compression)" zlib1g-dev zlib zlib)
+endif()
+add_library(raylab_stb STATIC ${CMAKE_SOURCE_DIR}/framework/src/stb_implementation.cpp)
+target_include_directories(raylab_stb SYSTEM PUBLIC ${STB_INCLUDE_DIR})
+target_link_libraries(raylab_stb PRIVATE ZLIB::ZLIB)
 
 if(BUILD_TESTING)
   find_package(doctest CONFIG QUIET)

@@ -3,16 +3,16 @@
 # install elsewhere. Safe to run again: it installs only what is missing.
 set -euo pipefail
 
-packages=(cmake g++ make pkg-config libglm-dev libstb-dev doctest-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libzip-dev
-          libyaml-cpp-dev) # libyaml-cpp-dev: the autograder's tests only
+packages=(cmake g++ make pkg-config libglm-dev libstb-dev zlib1g-dev doctest-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+          libzip-dev libyaml-cpp-dev) # libyaml-cpp-dev: the autograder's tests only
 # The grader's sandbox on Linux (docs/grading.md); raylab builds and grades without it.
 optional=(bubblewrap)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   cat <<'TXT'
 setup.sh installs packages on Debian and Ubuntu only. Elsewhere, install:
-  macOS (Homebrew): brew install cmake glm stb doctest tomlplusplus cli11 nlohmann-json libzip yaml-cpp
-  Windows (vcpkg):  vcpkg install glm stb doctest tomlplusplus cli11 nlohmann-json libzip yaml-cpp
+  macOS (Homebrew): brew install cmake glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip yaml-cpp
+  Windows (vcpkg):  vcpkg install glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip yaml-cpp
 then run the cmake commands of README.md.
 TXT
   exit 0

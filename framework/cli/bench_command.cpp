@@ -2,10 +2,15 @@
 
 #include "build_info.h"
 #include "raylab/figure.h"
+#ifdef RAYLAB_HAVE_YARDSTICK
+#include "../study/yardstick.h"
+#endif
 
 #include <algorithm>
-#include <memory>
+#include <chrono>
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -13,8 +18,35 @@ namespace raylab::cli {
 
 namespace {
 
-// Primary rays per second on lab 5's scene: the median of `repeats` renders for each sample count,
-// on one thread and on all of them.
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+template <typename F> double secondsOf(F&& work) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The yardstick's seconds for `d`; nothing in a tree without the solutions, where it is not built.
+// The reference labs draw its image bit for bit; a student's code may not, which `check` reports.
+std::optional<double> yardstickSeconds(const SceneDescription& d, const std::vector<Color>& raylabImage, bool check) {
+#ifdef RAYLAB_HAVE_YARDSTICK
+    std::vector<Color> hand;
+    const double seconds = secondsOf([&] { hand = study::renderYardstick(d); });
+    if (check && hand != raylabImage)
+        std::printf("  (at %d samples per pixel raylab's image is not the yardstick's: the lab code differs)\n", d.samples);
+    return seconds;
+#else
+    (void)d, (void)raylabImage, (void)check;
+    return std::nullopt;
+#endif
+}
+
+// Primary rays per second on lab 5's scene, for each sample count: raylab on one thread and the
+// yardstick (framework/study/yardstick.h) in turn, `repeats` times each, so that both see the same
+// load; then raylab on all threads. Shows the medians and the median of the per-pair time ratios.
 int runBench(const std::filesystem::path& scenes, int threads, int repeats) {
     SceneDescription d = loadSceneFile(scenes / "lab5_antialiased.toml");
     const int allThreads = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
@@ -31,25 +63,36 @@ int runBench(const std::filesystem::path& scenes, int threads, int repeats) {
                 "other",
 #endif
                 std::thread::hardware_concurrency(), allThreads);
-    std::printf("  %8s %8s %12s %16s\n", "samples", "threads", "seconds", "Mrays/s");
+    std::printf("  %7s | %-25s | %-25s | %-18s | %s\n", "", "raylab, 1 thread", "yardstick, 1 thread", "raylab / yardstick",
+                "raylab, all threads");
+    std::printf("  %7s | %12s %12s | %12s %12s | %18s | %12s\n", "samples", "Mrays/s", "ns/ray", "Mrays/s", "ns/ray",
+                "time ratio", "Mrays/s");
     for (int samples : {1, 4, 16, 64}) {
-        for (int t : {1, allThreads}) {
-            d.samples = samples;
-            std::vector<double> seconds;
-            for (int k = 0; k < repeats; ++k) {
-                const FigureResult r = renderScene(d, RenderOptions{t, false});
-                if (r.status != FigureResult::Status::Rendered) {
-                    std::printf("%s\n", r.message.c_str());
-                    return 1;
-                }
-                seconds.push_back(r.stats.seconds);
+        d.samples = samples;
+        const double rays = double(d.width) * d.height * samples;
+        std::vector<double> raylab, yardstick, ratio, all;
+        for (int k = 0; k < repeats; ++k) {
+            FigureResult r;
+            raylab.push_back(secondsOf([&] { r = renderScene(d, RenderOptions{1, false}); }));
+            if (r.status != FigureResult::Status::Rendered) {
+                std::printf("%s\n", r.message.c_str());
+                return 1;
             }
-            std::sort(seconds.begin(), seconds.end());
-            const double median = seconds[seconds.size() / 2];
-            const double rays = double(d.width) * d.height * samples;
-            std::printf("  %8d %8d %12.4f %16.1f\n", samples, t, median, rays / median * 1e-6);
-            if (allThreads == 1) break;
+            if (const std::optional<double> y = yardstickSeconds(d, r.image->pixels(), k == 0)) {
+                yardstick.push_back(*y);
+                ratio.push_back(raylab.back() / *y);
+            }
+            if (allThreads > 1) all.push_back(secondsOf([&] { renderScene(d, RenderOptions{allThreads, false}); }));
         }
+        const double r1 = median(raylab);
+        std::printf("  %7d | %12.1f %12.2f |", samples, rays / r1 * 1e-6, r1 / rays * 1e9);
+        if (yardstick.empty()) std::printf(" %25s | %18s |", "(needs solutions/)", "");
+        else {
+            const double y1 = median(yardstick);
+            std::printf(" %12.1f %12.2f | %18.3f |", rays / y1 * 1e-6, y1 / rays * 1e9, median(ratio));
+        }
+        if (allThreads > 1) std::printf(" %12.1f\n", rays / median(all) * 1e-6);
+        else std::printf(" %12s\n", "(1 thread)");
     }
     return 0;
 }
@@ -58,7 +101,8 @@ int runBench(const std::filesystem::path& scenes, int threads, int repeats) {
 
 void addBenchCommand(CLI::App& app, Context& context) {
     auto repeats = std::make_shared<int>(3);
-    CLI::App* bench = app.add_subcommand("bench", "primary rays per second on lab 5's scene at 1, 4, 16, 64 samples");
+    CLI::App* bench = app.add_subcommand(
+        "bench", "primary rays per second on lab 5's scene at 1, 4, 16, 64 samples, beside a hand-written yardstick");
     context.addImplOption(bench);
     bench->add_option("--repeats", *repeats, "renders per measurement (the median is shown)")->check(CLI::Range(1, 100));
     context.addRenderOptions(bench);

@@ -93,6 +93,8 @@ PixelSampler::PixelSampler(SamplerKind kind, int nbSamples, std::uint64_t seed, 
       m_seed(seed), m_stream(std::uint64_t(j) * std::uint64_t(width) + std::uint64_t(i)) {
     if (m_kind == SamplerKind::Stratified || m_kind == SamplerKind::Grid)
         gridFor(m_nbSamples, m_gridWidth, m_gridHeight); // a square root and divisions: only where used
+    else if (m_kind == SamplerKind::Random)
+        m_rng.emplace(m_seed, m_stream); // so that next2D need not test for it at every sample
     else if (m_kind == SamplerKind::Sobol) {
         m_rng.emplace(m_seed, m_stream);
         m_scramble[0] = m_rng->nextUInt();
@@ -112,26 +114,10 @@ float PixelSampler::uniform() {
     return m_rng->nextFloat();
 }
 
-// The random sampler, the one lab 5 uses, first and without a call per random number (Pcg32 is
-// inline). Not inline into renderPixel: that measured slower at 1 and 4 samples per pixel
-// (docs/performance.md).
-glm::vec2 PixelSampler::next2D() {
-    if (m_kind == SamplerKind::Random) {
-        if (!m_rng) m_rng.emplace(m_seed, m_stream);
-        m_drawn += 2;
-        const float x = m_rng->nextFloat();
-        return {x, m_rng->nextFloat()};
-    }
-    return next2DOther();
-}
-
 glm::vec2 PixelSampler::next2DOther() {
     switch (m_kind) {
     case SamplerKind::Center: return {0.5f, 0.5f};
-    case SamplerKind::Random: {
-        const float x = uniform();
-        return {x, uniform()};
-    }
+    case SamplerKind::Random: break; // next2D draws it
     case SamplerKind::Stratified:
     case SamplerKind::Grid: {
         const float jx = m_kind == SamplerKind::Grid ? 0.5f : uniform();

@@ -39,8 +39,14 @@ public:
     PixelSampler(SamplerKind kind, int nbSamples, std::uint64_t seed, int i, int j, int width);
 
     // The next sample offset in the pixel. After nbSamples calls, stratified sampling starts over
-    // with new jitter, grid repeats its points, and the sequences go on.
-    glm::vec2 next2D();
+    // with new jitter, grid repeats its points, and the sequences go on. The random sampler, the
+    // one lab 5 uses, is inline: two steps of its generator, seeded in the constructor.
+    glm::vec2 next2D() {
+        if (m_kind != SamplerKind::Random) return next2DOther();
+        m_drawn += 2;
+        const float x = m_rng->nextFloat();
+        return {x, m_rng->nextFloat()};
+    }
 
     // How many numbers this sampler took from its random generator (0 for center and grid).
     std::uint64_t randomNumbersDrawn() const { return m_drawn; }
@@ -58,7 +64,7 @@ private:
     int m_cellY = 0;
     std::uint64_t m_seed;
     std::uint64_t m_stream;
-    std::optional<Pcg32> m_rng; // seeded on the first draw: a sampler that draws nothing costs nothing
+    std::optional<Pcg32> m_rng; // random: seeded in the constructor; the others on their first draw
     std::uint64_t m_drawn = 0;
     std::uint32_t m_scramble[2] = {0, 0}; // sobol: per-pixel Owen scrambling seeds
     double m_shift[2] = {0., 0.};         // r2: per-pixel offset
