@@ -1,5 +1,7 @@
 #include "grader/sandbox.h"
 
+#include "raylab/messages.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -25,18 +27,18 @@ namespace raylab::grader {
 namespace fs = std::filesystem;
 
 std::string AgentRun::describe() const {
-    if (timedOut) return "stopped: it ran past the time limit (an endless loop?)";
+    if (timedOut) return tr("sandbox.timed_out");
     if (signal != 0) {
 #ifdef RAYLAB_POSIX_SANDBOX
-        if (signal == SIGXCPU) return "stopped: it used up its CPU time limit";
-        if (signal == SIGXFSZ) return "stopped: it wrote more output than allowed";
-        if (signal == SIGSEGV) return "crashed (segmentation fault: a bad pointer or index?)";
-        if (signal == SIGABRT) return "crashed (aborted: an uncaught exception or failed allocation?)";
+        if (signal == SIGXCPU) return tr("sandbox.cpu_limit");
+        if (signal == SIGXFSZ) return tr("sandbox.output_limit");
+        if (signal == SIGSEGV) return tr("sandbox.segfault");
+        if (signal == SIGABRT) return tr("sandbox.aborted");
 #endif
-        return "crashed (signal " + std::to_string(signal) + ")";
+        return tr("sandbox.signal", {{"signal", std::to_string(signal)}});
     }
-    if (exitCode == 0) return "exited";
-    return "exited with status " + std::to_string(exitCode);
+    if (exitCode == 0) return tr("sandbox.exited");
+    return tr("sandbox.exit_status", {{"status", std::to_string(exitCode)}});
 }
 
 namespace {
