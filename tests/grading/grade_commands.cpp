@@ -21,11 +21,15 @@ struct Run {
     std::string output;
 };
 
-// Runs `raylab ARGS` from `cwd`; its output and exit status.
-Run runRaylab(const std::string& args, const fs::path& cwd = fs::temp_directory_path()) {
+// The environment of an English run, whatever the machine's locale (the language comes from it).
+constexpr const char* kEnglishLocale = "LC_ALL= LC_MESSAGES= LANG=C";
+
+// Runs `raylab ARGS` from `cwd` with the environment variables `locale`; its output and exit status.
+Run runRaylab(const std::string& args, const fs::path& cwd = fs::temp_directory_path(),
+              const std::string& locale = kEnglishLocale) {
     const fs::path out = cwd / "raylab-output.txt";
-    const std::string command = "cd \"" + cwd.string() + "\" && \"" + (binDir() / "raylab").string() + "\" " + args +
-                                " > \"" + out.string() + "\" 2>&1";
+    const std::string command = "cd \"" + cwd.string() + "\" && " + locale + " \"" + (binDir() / "raylab").string() +
+                                "\" " + args + " > \"" + out.string() + "\" 2>&1";
     const int raw = std::system(command.c_str());
     Run run;
 #if defined(__unix__) || defined(__APPLE__)
@@ -55,6 +59,16 @@ bool hasLine(const std::string& output, const std::string& start, const std::str
 }
 
 } // namespace
+
+// Words of English sentences that no French message holds.
+const char* const kEnglishWords[] = {" the ", " is ", " are ", " of ", " and ", "expected", " got ", "Hint", "failed",
+                                     "passed", "not done yet", "PASS", "FAIL", " points\n", "report:", "total:"};
+
+void checkFrenchOnly(const Run& run) {
+    for (const char* word : kEnglishWords)
+        CHECK_MESSAGE(run.output.find(word) == std::string::npos, "\"" << word << "\" in\n" << run.output);
+    CHECK_MESSAGE(run.output.find("total\u00A0: ") != std::string::npos, run.output);
+}
 
 TEST_SUITE("commands") {
 
@@ -143,6 +157,40 @@ TEST_CASE("grade --lab N grades that lab alone") {
     CHECK_MESSAGE(run.status == 0, run.output); // the mistake is in lab 1
     CHECK(run.output.find("lab1") == std::string::npos);
     CHECK(hasLine(run.output, "  total: 12 / 12", ""));
+}
+
+TEST_CASE("a French grade speaks French only: the reference, the stubs and a mistake") {
+    const fs::path dir = freshFolder("raylab-grade-french");
+    const std::string report = " --report \"" + (dir / "report").string() + "\"";
+    for (const std::string agent : {"raylab-agent-reference", "raylab-agent", "raylab-mistake-fovy_not_halved"}) {
+        CAPTURE(agent);
+        const Run run = runRaylab("grade --lang fr --agent \"" + (binDir() / agent).string() + "\"" + report, dir);
+        checkFrenchOnly(run);
+        if (agent == "raylab-agent-reference") CHECK(run.status == 0);
+        if (agent == "raylab-agent") CHECK(run.output.find("pas encore écrit\u00A0: écrivez") != std::string::npos);
+        if (agent == "raylab-mistake-fovy_not_halved") {
+            CHECK(run.output.find("E2.1 «\u00A0fovy non divisé par deux\u00A0» (TP 2)") != std::string::npos);
+            CHECK(run.output.find("1,154701") != std::string::npos); // a decimal comma
+        }
+    }
+    std::ifstream html(dir / "report/index.html");
+    std::stringstream page;
+    page << html.rdbuf();
+    CHECK(page.str().find("<html lang=\"fr\">") != std::string::npos);
+    CHECK(page.str().find("Tests des fonctions") != std::string::npos);
+    CHECK(page.str().find("Function checks") == std::string::npos);
+}
+
+TEST_CASE("LANG=fr_FR.UTF-8 gives French without --lang, and --lang en overrides it") {
+    const fs::path dir = freshFolder("raylab-grade-lang");
+    const std::string args = "grade --lab 1 --agent \"" + (binDir() / "raylab-agent-reference").string() +
+                             "\" --report \"" + (dir / "report").string() + "\"";
+    const std::string french = "LC_ALL= LC_MESSAGES= LANG=fr_FR.UTF-8";
+    checkFrenchOnly(runRaylab(args, dir, french));
+    const Run english = runRaylab(args + " --lang en", dir, french);
+    CHECK_MESSAGE(english.output.find("  total: 10 / 10") != std::string::npos, english.output);
+    const Run figures = runRaylab("lab 1 --out \"" + (dir / "figures").string() + "\"", dir, french);
+    CHECK_MESSAGE(figures.output.find("figures\u00A0: ") != std::string::npos, figures.output);
 }
 
 } // TEST_SUITE
