@@ -5,6 +5,7 @@
 #include "raylab/contact_sheet.h"
 #include "raylab/figure.h"
 #include "raylab/image_io.h"
+#include "raylab/messages.h"
 #include "raylab/terminal.h"
 
 #include <algorithm>
@@ -33,22 +34,23 @@ bool writeFigure(const std::string& id, const std::filesystem::path& file, const
 bool report(const SceneDescription& d, const FigureResult& r, const std::filesystem::path& file) {
     switch (r.status) {
     case FigureResult::Status::NotDoneYet:
-        std::printf("  %-24s TODO    %s\n", d.id.c_str(), r.message.c_str());
+        std::printf("  %-24s %s\n", d.id.c_str(), tr("figures.todo", {{"message", r.message}}).c_str());
         return true;
     case FigureResult::Status::Failed:
-        std::printf("  %-24s FAILED  %s\n", d.id.c_str(), r.message.c_str());
+        std::printf("  %-24s %s\n", d.id.c_str(), tr("figures.failed", {{"message", r.message}}).c_str());
         return false;
     case FigureResult::Status::Rendered: break;
     }
     std::uint64_t nonFinite = 0;
     if (!writeFigure(d.id, file, quantize(*r.image, &nonFinite))) return false;
-    char speed[64] = "";
+    std::string speed;
     if (d.picture != Picture::Gradient && r.stats.seconds > 0.)
-        std::snprintf(speed, sizeof speed, "%8.1f Mrays/s", double(r.stats.primaryRays) / r.stats.seconds * 1e-6);
-    std::printf("  %-24s %7.3f s %s  -> %s\n", d.id.c_str(), r.stats.seconds, speed, file.string().c_str());
+        speed = tr("figures.speed", {{"mrays", formatFixed(double(r.stats.primaryRays) / r.stats.seconds * 1e-6, 1)}});
+    std::printf("  %-24s %s\n", d.id.c_str(),
+                tr("figures.rendered", {{"seconds", formatFixed(r.stats.seconds, 3)}, {"speed", speed}, {"file", file.string()}})
+                    .c_str());
     if (nonFinite > 0) {
-        std::printf("  %-24s FAILED  %llu pixels are NaN or infinite (magenta in the PNG)\n", d.id.c_str(),
-                    static_cast<unsigned long long>(nonFinite));
+        std::printf("  %-24s %s\n", d.id.c_str(), tr("figures.nan", {{"count", std::to_string(nonFinite)}}).c_str());
         return false;
     }
     return true;
@@ -70,14 +72,15 @@ int runFigures(const FiguresOptions& o) {
         if (std::none_of(scenes.begin(), scenes.end(), [&](const auto& d) { return d.id == id; })) {
             std::string known;
             for (const auto& d : scenes) known += " " + d.id;
-            throw std::invalid_argument("no figure '" + id + "' in " + o.scenes.string() + "; the figures are:" + known);
+            throw std::invalid_argument(tr("figures.unknown", {{"id", id}, {"folder", o.scenes.string()}, {"known", known}}));
         }
     std::erase_if(scenes, [&](const SceneDescription& d) {
         const bool wanted = o.only.empty() || std::find(o.only.begin(), o.only.end(), d.id) != o.only.end();
         return !wanted || (o.lab != 0 && d.lab != o.lab);
     });
 
-    std::printf("raylab %s build (%s) -> %s\n", build::kImpl, build::kLabOrigins, o.out.string().c_str());
+    std::printf("%s\n", tr("figures.header", {{"impl", tr(std::string("figures.impl_") + build::kImpl)}, {"origins", build::kLabOrigins}, {"folder", o.out.string()}})
+                             .c_str());
     int failed = 0, todo = 0;
     const RenderOptions renderOptions{o.threads, stderrIsInteractive()};
     std::vector<ContactSheetItem> sheet;
@@ -93,10 +96,14 @@ int runFigures(const FiguresOptions& o) {
     if (o.lab == 0 && o.only.empty() && !sheet.empty()) {
         sheetWritten = writeFigure("contact_sheet", o.out / "contact_sheet.png", makeContactSheet(sheet));
         if (sheetWritten)
-            std::printf("  %-24s           -> %s\n", "contact_sheet", (o.out / "contact_sheet.png").string().c_str());
+            std::printf("  %-24s %s\n", "contact_sheet",
+                        tr("figures.written", {{"file", (o.out / "contact_sheet.png").string()}}).c_str());
     }
-    std::printf("%zu figures: %zu rendered, %d waiting for a lab not done yet, %d failed\n", scenes.size(),
-                scenes.size() - std::size_t(todo + failed), todo, failed);
+    std::printf("%s\n", tr("figures.summary", {{"count", std::to_string(scenes.size())},
+                                               {"rendered", std::to_string(scenes.size() - std::size_t(todo + failed))},
+                                               {"todo", std::to_string(todo)},
+                                               {"failed", std::to_string(failed)}})
+                            .c_str());
     return failed == 0 && sheetWritten ? 0 : 1;
 }
 

@@ -7,6 +7,7 @@
 #include "grader/grade.h"
 #include "grader/report.h"
 #include "grader/submission.h"
+#include "raylab/messages.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -40,9 +41,9 @@ fs::path scratchFolder(const std::string& what) {
 }
 
 std::string labList(const LabCatalog& catalog) {
-    std::string list = "the labs are";
+    std::string list;
     for (int n : catalog.numbers()) list += " " + std::to_string(n);
-    return list;
+    return tr("grade.labs_are", {{"labs", list}});
 }
 
 GradeSetup setupFor(const GradeOptions& o, const Context& context, const fs::path& scratch) {
@@ -50,7 +51,7 @@ GradeSetup setupFor(const GradeOptions& o, const Context& context, const fs::pat
                                       context.scenes, scratch);
     if (o.lab != 0 && setup.labs.lab(o.lab) == nullptr) {
         fs::remove_all(scratch);
-        throw std::invalid_argument("--lab " + std::to_string(o.lab) + ": there is no such lab (" + labList(setup.labs) + ")");
+        throw std::invalid_argument(tr("grade.no_such_lab", {{"lab", std::to_string(o.lab)}, {"labs", labList(setup.labs)}}));
     }
     setup.limits.wallSeconds = o.timeout;
     setup.threads = context.threads;
@@ -67,14 +68,17 @@ int gradeImageFolder(const GradeOptions& o, const Context& context) {
     result.title = "raylab grade --images " + o.images;
     int found = 0, failed = 0;
     for (const FigureOutcome& f : result.figures) {
-        std::printf("%s  %-24s %s\n", f.passed ? "PASS" : "FAIL", f.id.c_str(), f.reason.c_str());
+        std::printf("%s  %-24s %s\n", tr(f.passed ? "report.pass" : "report.fail").c_str(), f.id.c_str(), f.reason.c_str());
         if (!f.diagnosis.empty()) std::printf("      %-24s %s\n", "", f.diagnosis.c_str());
         if (f.found) ++found;
         if (f.found && !f.passed) ++failed;
     }
-    for (const std::string& p : result.problems) std::printf("note: %s\n", p.c_str());
+    for (const std::string& p : result.problems) std::printf("%s\n", tr("grade.note", {{"note", p}}).c_str());
     writeReports(result, setup.references, o.report);
-    std::printf("%d figures found, %d failed; report in %s/index.html\n", found, failed, o.report.c_str());
+    std::printf("%s\n", tr("grade.images_summary", {{"found", std::to_string(found)},
+                                                   {"failed", std::to_string(failed)},
+                                                   {"report", o.report + "/index.html"}})
+                            .c_str());
     fs::remove_all(scratch);
     return found > 0 && failed == 0 ? 0 : 1;
 }
@@ -88,7 +92,7 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
     if (!o.agents.empty()) {
         for (const std::string& a : o.agents) agents.push_back({fs::absolute(a), 0});
     } else if (!o.labs.empty()) {
-        std::printf("building %s in %s ...\n", o.labs.c_str(), buildDir.string().c_str());
+        std::printf("%s\n", tr("grade.building", {{"labs", o.labs}, {"folder", buildDir.string()}}).c_str());
         std::fflush(stdout);
         const SubmissionBuild b =
             buildSubmission(toolchain(), build::kSourceDir, submissionLabsFolder(o.labs), buildDir, setup.labs.numbers());
@@ -99,8 +103,7 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
     } else {
         agents = findAgents(build::kBinaryDir, setup.labs.numbers(), isolated);
         if (agents.empty())
-            throw std::runtime_error(std::string("no grading agent in ") + build::kBinaryDir +
-                                     "; build first: cmake --build build");
+            throw std::runtime_error(tr("grade.no_agent", {{"folder", build::kBinaryDir}}));
     }
     if (o.lab != 0) { // one lab: its own agent, or the cumulative agent asked for that lab only
         std::erase_if(agents, [&](const AgentPlan& a) { return a.lab != 0 && a.lab != o.lab; });
@@ -127,7 +130,7 @@ int gradeLabs(GradeOptions o, const Context& context) {
     if (!o.item.empty()) result = onlyItem(result, o.item);
     std::printf("%s", terminalSummary(result).c_str());
     writeReports(result, setup.references, o.report);
-    std::printf("report: %s/index.html (also results.json, junit.xml)\n", o.report.c_str());
+    std::printf("%s\n", tr("grade.report_written", {{"report", o.report + "/index.html"}}).c_str());
     fs::remove_all(scratch);
     return result.allPassed() ? 0 : 1;
 }

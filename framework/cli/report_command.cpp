@@ -11,6 +11,7 @@
 #include "raylab/atomic_file.h"
 #include "raylab/figure.h"
 #include "raylab/image_io.h"
+#include "raylab/messages.h"
 #include "raylab/terminal.h"
 
 #include <algorithm>
@@ -375,10 +376,10 @@ void addReportCommand(CLI::App& app, Context& context) {
     CLI::App* report = app.add_subcommand(
         "report", "your lab report kit: renders and grades your figures into DIR/report.md and DIR/report.html");
     report->add_option("--out", o->out, "the report's folder (default: out/report-kit)");
-    report->add_option("--lang", o->lang, "the report's language: en (default) or fr")->check(CLI::IsMember({"en", "fr"}));
     context.addImplOption(report);
     context.addRenderOptions(report);
     report->callback([&context, o] {
+        o->lang = languageCode(language()); // the global --lang, or the environment's (raylab/messages.h)
         if (!context.ranInOtherImpl()) context.exitStatus = runReport(*o, context);
     });
 }

@@ -1,5 +1,6 @@
 #include "grader/answers.h"
 
+#include "raylab/messages.h"
 #include "raylab/todo.h"
 
 #include <algorithm>
@@ -20,9 +21,9 @@ bool accept(Ledger& ledger, Item& item, const protocol::Answer& answer, std::str
     }
     if (const auto* failure = std::get_if<protocol::Failure>(&answer)) {
         if (item.check)
-            ledger.resolveCheck(item, false, "threw: " + failure->message);
+            ledger.resolveCheck(item, false, tr("grade.threw", {{"what", failure->message}}));
         else
-            ledger.resolveFigure(item, RenderedFigure{std::nullopt, "rendering failed: " + failure->message});
+            ledger.resolveFigure(item, RenderedFigure{std::nullopt, tr("grade.render_failed", {{"what", failure->message}})});
         return true;
     }
     if (item.figure) {

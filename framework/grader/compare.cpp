@@ -1,5 +1,7 @@
 #include "grader/compare.h"
 
+#include "raylab/messages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,27 +15,22 @@ bool isMagenta(const std::uint8_t* p) {
     return p[0] == kNonFiniteRgb[0] && p[1] == kNonFiniteRgb[1] && p[2] == kNonFiniteRgb[2];
 }
 
-std::string fmt(const char* format, double a, double b = 0., double c = 0.) {
-    char text[256];
-    std::snprintf(text, sizeof text, format, a, b, c);
-    return text;
-}
 
 // A size mismatch or NaN pixels decide before any metric.
 bool precheck(const FigureReference& reference, const Image8& student, ImageVerdict& v) {
     v.width = student.width;
     v.height = student.height;
     if (student.width != reference.image.width || student.height != reference.image.height) {
-        v.reason = "the image is " + std::to_string(student.width) + " x " + std::to_string(student.height) +
-                   ", the figure is " + std::to_string(reference.image.width) + " x " +
-                   std::to_string(reference.image.height);
+        v.reason = tr("compare.size", {{"width", std::to_string(student.width)},
+                                        {"height", std::to_string(student.height)},
+                                        {"figure_width", std::to_string(reference.image.width)},
+                                        {"figure_height", std::to_string(reference.image.height)}});
         return false;
     }
     const int nan = countNonFinitePixels(reference.image, student);
-    v.metrics.emplace_back("NaN pixels", nan);
+    v.metrics.emplace_back(tr("compare.metric.nan"), nan);
     if (nan > 0) {
-        v.reason = std::to_string(nan) + " pixels are NaN or infinite (magenta): a division by zero or the sqrt of a "
-                                         "negative number";
+        v.reason = tr("compare.nan", {{"count", std::to_string(nan)}});
         return false;
     }
     return true;
@@ -77,14 +74,15 @@ ImageVerdict compareDeterministic(const FigureReference& reference, const Image8
                 maxDiff = std::max(maxDiff, d);
             }
         }
-    v.metrics.emplace_back("pixels off by more than 1 LSB", over);
-    v.metrics.emplace_back("largest difference (LSB)", maxDiff);
-    v.metrics.emplace_back("ambiguous pixels allowed to differ", skipped);
-    v.metrics.emplace_back("mean absolute difference (LSB)", sumAbs / (3. * w * h));
+    v.metrics.emplace_back(tr("compare.metric.over"), over);
+    v.metrics.emplace_back(tr("compare.metric.largest"), maxDiff);
+    v.metrics.emplace_back(tr("compare.metric.ambiguous"), skipped);
+    v.metrics.emplace_back(tr("compare.metric.mean_absolute"), sumAbs / (3. * w * h));
     v.passed = over == 0;
-    v.reason = v.passed ? "every pixel within 1 LSB of the reference"
-                        : fmt("%.0f pixels (%.2f%%) differ from the reference by more than 1 LSB, up to %.0f LSB", over,
-                              100. * over / (double(w) * h), maxDiff);
+    v.reason = v.passed ? tr("compare.exact_pass")
+                        : tr("compare.exact_fail", {{"count", formatFixed(over, 0)},
+                                                    {"percent", formatFixed(100. * over / (double(w) * h), 2)},
+                                                    {"largest", formatFixed(maxDiff, 0)}});
     return v;
 }
 
@@ -119,23 +117,27 @@ ImageVerdict compareStatistical(const FigureReference& reference, const Image8& 
     const double biasLimit = s.biasLsb + 4. * standardError;
     const double rmse = std::sqrt(sumSq / values);
     const int outlierLimit = std::max(3, int(1e-4 * w * h));
-    v.metrics.emplace_back("mean signed difference (LSB)", bias);
-    v.metrics.emplace_back("allowed |mean signed difference| (LSB)", biasLimit);
-    v.metrics.emplace_back("pixels with |z| > 6", outliers);
-    v.metrics.emplace_back("allowed outliers", outlierLimit);
-    v.metrics.emplace_back("RMSE (LSB)", rmse);
-    v.metrics.emplace_back("allowed RMSE (LSB)", s.rmseLimit);
-    std::string why;
+    v.metrics.emplace_back(tr("compare.metric.bias"), bias);
+    v.metrics.emplace_back(tr("compare.metric.bias_limit"), biasLimit);
+    v.metrics.emplace_back(tr("compare.metric.outliers"), outliers);
+    v.metrics.emplace_back(tr("compare.metric.outlier_limit"), outlierLimit);
+    v.metrics.emplace_back(tr("compare.metric.rmse"), rmse);
+    v.metrics.emplace_back(tr("compare.metric.rmse_limit"), s.rmseLimit);
+    std::string why; // each reason the render fails, joined by "; "
+    auto because = [&why](const std::string& reason) { why += (why.empty() ? "" : tr("compare.separator")) + reason; };
     if (std::abs(bias) > biasLimit)
-        why += fmt("biased: the image is on average %+.3f LSB off the converged mean (allowed %.3f); ", bias, biasLimit);
+        because(tr("compare.biased", {{"bias", formatFixed(bias, 3, true)}, {"limit", formatFixed(biasLimit, 3)}}));
     if (outliers > outlierLimit)
-        why += fmt("%.0f pixels are more than 6 standard deviations off (allowed %.0f); ", outliers, outlierLimit);
+        because(tr("compare.outliers", {{"count", std::to_string(outliers)}, {"limit", std::to_string(outlierLimit)}}));
     if (rmse > s.rmseLimit)
-        why += fmt("too noisy or blurred: RMSE %.3f LSB, correct %.0f-sample renders reach at most %.3f; ", rmse,
-                   double(s.samples), s.worstCorrectRmse);
+        because(tr("compare.noisy", {{"rmse", formatFixed(rmse, 3)},
+                                    {"samples", std::to_string(s.samples)},
+                                    {"worst", formatFixed(s.worstCorrectRmse, 3)}}));
     v.passed = why.empty();
-    v.reason = v.passed ? fmt("unbiased (%+.3f LSB), %.0f outliers, RMSE %.3f LSB: a correct render", bias, outliers, rmse)
-                        : why.substr(0, why.size() - 2);
+    v.reason = v.passed ? tr("compare.statistical_pass", {{"bias", formatFixed(bias, 3, true)},
+                                                          {"outliers", std::to_string(outliers)},
+                                                          {"rmse", formatFixed(rmse, 3)}})
+                        : why;
     return v;
 }
 

@@ -1,5 +1,7 @@
 #include "grader/diagnosis.h"
 
+#include "raylab/messages.h"
+
 #include <toml++/toml.h>
 
 #include <cmath>
@@ -12,9 +14,17 @@ namespace fs = std::filesystem;
 
 std::string Diagnosis::text() const {
     if (!mistake) return "";
-    std::string text = "your image matches '" + mistake->name + "' (lab " + std::to_string(mistake->lab) + "): " + mistake->hint;
-    if (alike) text += "; or, as it draws the same picture here, '" + alike->name + "' (lab " + std::to_string(alike->lab) + "): " + alike->hint;
+    std::string text = tr("diagnosis.matches", mistake->args());
+    if (alike) text += tr("diagnosis.or_alike", alike->args());
     return text;
+}
+
+const std::string& Mistake::name() const { return language() == Language::Fr ? nameFr : nameEn; }
+const std::string& Mistake::hint() const { return language() == Language::Fr ? hintFr : hintEn; }
+
+std::vector<std::pair<std::string_view, std::string>> Mistake::args() const {
+    const std::string shown = label.empty() ? "" : (language() == Language::Fr ? "E" : "M") + label + " ";
+    return {{"name", name()}, {"hint", hint()}, {"label", shown}, {"lab", std::to_string(lab)}};
 }
 
 std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
@@ -35,12 +45,17 @@ std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
         if (!m) throw std::runtime_error(file.string() + ": each [[mistake]] is a table");
         Mistake mistake;
         mistake.id = (*m)["id"].value_or(std::string());
-        mistake.name = (*m)["name"].value_or(std::string());
-        mistake.hint = (*m)["hint"].value_or(std::string());
+        mistake.nameEn = (*m)["name"].value_or(std::string());
+        mistake.nameFr = (*m)["name_fr"].value_or(std::string());
+        mistake.hintEn = (*m)["hint"].value_or(std::string());
+        mistake.hintFr = (*m)["hint_fr"].value_or(std::string());
+        mistake.label = (*m)["label"].value_or(std::string());
         mistake.lab = (*m)["lab"].value_or(0);
         mistake.check = (*m)["check"].value_or(std::string());
-        if (mistake.id.empty() || mistake.name.empty() || mistake.hint.empty() || mistake.lab < 1 || mistake.lab > 5)
-            throw std::runtime_error(file.string() + ": mistake '" + mistake.id + "' needs id, name, hint and lab 1 ... 5");
+        if (mistake.id.empty() || mistake.nameEn.empty() || mistake.hintEn.empty() || mistake.nameFr.empty() ||
+            mistake.hintFr.empty() || mistake.lab < 1 || mistake.lab > 5)
+            throw std::runtime_error(file.string() + ": mistake '" + mistake.id +
+                                     "' needs id, name, name_fr, hint, hint_fr and lab 1 ... 5");
         const fs::path folder = referenceFolder / "mistakes" / mistake.id;
         if (fs::is_directory(folder, error))
             for (const auto& entry : fs::directory_iterator(folder))

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace raylab::grader {
@@ -16,11 +18,17 @@ inline constexpr int kSignatureScale = 4; // signatures are averaged over 4 x 4 
 
 struct Mistake {
     std::string id;    // its patch tests/mistakes/<id>.patch, its folder in framework/grader/data/references/mistakes/
-    std::string name;  // "fovy not halved"
-    std::string hint;  // "use tan(fovy / 2): fovy is the full angle"
+    std::string nameEn, nameFr; // "fovy not halved", "fovy non divisé par deux"
+    std::string hintEn, hintFr; // "use tan(fovy / 2): fovy is the full angle"
+    std::string label; // its number in the handouts, "2.1": M2.1 in English, E2.1 in French; may be empty
     int lab = 0;       // the lab whose file holds the mistake
     std::string check; // the function check expected to catch it ("lab2/...")
     std::vector<std::pair<std::string, Image8>> signatures; // figure id, signature
+    // In the current language (raylab/messages.h).
+    const std::string& name() const;
+    const std::string& hint() const;
+    // The placeholders of the diagnosis messages: name, hint, label ("M2.1 ", or empty), lab.
+    std::vector<std::pair<std::string_view, std::string>> args() const;
 };
 
 struct Diagnosis {

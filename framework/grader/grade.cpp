@@ -3,6 +3,7 @@
 #include "grader/answers.h"
 
 #include "raylab/image_io.h"
+#include "raylab/messages.h"
 
 #include <algorithm>
 #include <array>
@@ -67,13 +68,14 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan, bool withC
         const auto unanswered = std::find_if(sent.begin(), sent.end(), [](const Item* i) { return !i->resolved; });
         if (unanswered == sent.end()) continue;
         const std::string why = run.describe();
-        const std::string errors = run.stderrTail.empty() ? "" : "; its error output ends with: " + run.stderrTail;
+        const std::string errors = run.stderrTail.empty() ? "" : tr("grade.error_output", {{"tail", run.stderrTail}});
+        const std::string program = plan.program.filename().string();
         if (!hello) { // it never started: another run would do the same
-            r.problems.push_back(plan.program.filename().string() + " " + why + " before it answered anything" + errors);
-            for (Item* item : sent) ledger.fail(*item, "never ran: " + plan.program.filename().string() + " " + why + " at start");
+            r.problems.push_back(tr("grade.agent_silent", {{"program", program}, {"why", why}}) + errors);
+            for (Item* item : sent) ledger.fail(*item, tr("grade.never_started", {{"program", program}, {"why", why}}));
             return r;
         }
-        ledger.fail(**unanswered, ((*unanswered)->check ? "this check " : "rendering ") + why + errors);
+        ledger.fail(**unanswered, tr((*unanswered)->check ? "grade.check_stopped" : "grade.figure_stopped", {{"why", why}}) + errors);
     }
 }
 
@@ -108,7 +110,7 @@ FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& refer
     std::error_code error;
     if (!fs::exists(file, error)) {
         f.found = false;
-        f.reason = "missing: there is no " + file.string();
+        f.reason = tr("grade.picture_missing", {{"file", file.string()}});
         return f;
     }
     if (!fs::is_regular_file(file, error)) { // a pipe or a device would block the read, or never end
@@ -121,7 +123,7 @@ FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& refer
         in.read(magic.data(), magic.size());
         static constexpr std::array<char, 8> kPng{'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
         if (!in || magic != kPng) {
-            f.reason = "not a PNG file: " + file.string() + (in ? " has another format" : " is empty or unreadable");
+            f.reason = tr(in ? "grade.picture_not_png" : "grade.picture_empty", {{"file", file.string()}});
             return f;
         }
     }
@@ -129,7 +131,7 @@ FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& refer
     try {
         image = readImage(file);
     } catch (const std::exception& e) {
-        f.reason = std::string("unreadable (truncated or damaged?): ") + e.what();
+        f.reason = tr("grade.picture_unreadable", {{"what", e.what()}});
         return f;
     }
     return gradeImage(setup, reference, image, file);
@@ -157,14 +159,14 @@ FigureOutcome gradeImage(const GradeSetup& setup, const FigureReference& referen
 void addUnbuiltLab(const GradeSetup& setup, GradeResult& result, int lab) {
     if (const LabDescription* description = setup.labs.lab(lab))
         for (const LabCheck& check : description->checks)
-            addCheck(setup, result, CheckOutcome{lab, check.name, false, "the code does not build (the compiler's message is at the top of the report)", 0., 0.});
+            addCheck(setup, result, CheckOutcome{lab, check.name, false, tr("grade.does_not_build"), 0., 0.});
     for (const FigureReference& reference : setup.references.figures) {
         if (reference.lab != lab) continue;
         FigureOutcome f;
         f.id = reference.id;
         f.lab = reference.lab;
         f.maxPoints = setup.labs.figurePoints(f.id, kDefaultFigurePoints);
-        f.reason = "the code does not build (the compiler's message is at the top of the report)";
+        f.reason = tr("grade.does_not_build");
         result.figures.push_back(std::move(f));
     }
 }
@@ -204,8 +206,8 @@ void addDependencyNotes(const LabCatalog& catalog, GradeResult& result) {
         for (int other : description->uses) {
             if (!failsThrough(catalog, result, lab.lab, other)) continue;
             if (other > lab.lab && failsThrough(catalog, result, other, lab.lab)) continue; // said the other way
-            lab.notes.push_back("lab " + std::to_string(lab.lab) + " uses lab " + std::to_string(other) +
-                                ", which has failures: fix lab " + std::to_string(other) + " first");
+            lab.notes.push_back(
+                tr("grade.uses_failing_lab", {{"lab", std::to_string(lab.lab)}, {"other", std::to_string(other)}}));
         }
     }
 }
@@ -246,7 +248,7 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
     if (!unbuilt.empty()) {
         std::string labs;
         for (int lab : unbuilt) labs += " " + std::to_string(lab);
-        result.problems.push_back("lab" + labs + ": the code does not build, so those labs get 0:\n" + buildMessage);
+        result.problems.push_back(tr("grade.labs_do_not_build", {{"labs", labs}}) + "\n" + buildMessage);
     }
     std::map<int, const AgentPlan*> agentOfLab;
     const std::vector<int> labs = setup.labs.numbers();
@@ -274,7 +276,7 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         if (const LabDescription* description = setup.labs.lab(lab))
             for (const LabCheck& check : description->checks)
                 if (!r.checks.count(check.name))
-                    addCheck(setup, result, CheckOutcome{lab, check.name, false, "never ran: the code stopped before this check", 0., 0.});
+                    addCheck(setup, result, CheckOutcome{lab, check.name, false, tr("grade.check_never_ran"), 0., 0.});
         for (const FigureReference& reference : setup.references.figures) {
             if (reference.lab != lab) continue;
             const auto it = r.figures.find(reference.id);
@@ -289,14 +291,14 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
                 f.id = reference.id;
                 f.lab = lab;
                 f.maxPoints = setup.labs.figurePoints(f.id, kDefaultFigurePoints);
-                f.reason = it == r.figures.end() ? "not rendered: the code stopped before this figure" : it->second.reason;
+                f.reason = it == r.figures.end() ? tr("grade.figure_never_ran") : it->second.reason;
             }
             result.figures.push_back(std::move(f));
         }
     }
     scoreLabs(setup.labs, result);
     if (isolated)
-        for (LabOutcome& lab : result.labs) lab.notes.push_back("graded on its own: the other labs came from the reference solutions");
+        for (LabOutcome& lab : result.labs) lab.notes.push_back(tr("grade.graded_alone"));
     else
         addDependencyNotes(setup.labs, result);
     return result;
@@ -312,13 +314,13 @@ std::map<std::string, Image8> renderFigures(const GradeSetup& setup, const fs::p
 GradeResult gradeImages(const GradeSetup& setup, const fs::path& folder) {
     GradeResult result;
     std::error_code error;
-    if (!fs::is_directory(folder, error)) result.problems.push_back("no folder " + folder.string());
+    if (!fs::is_directory(folder, error)) result.problems.push_back(tr("grade.no_folder", {{"folder", folder.string()}}));
     for (const FigureReference& reference : setup.references.figures)
         result.figures.push_back(gradePicture(setup, reference, folder / (reference.id + ".png")));
     if (fs::is_directory(folder, error))
         for (const auto& entry : fs::directory_iterator(folder))
             if (entry.path().extension() == ".png" && !setup.references.find(entry.path().stem().string()))
-                result.problems.push_back("ignored " + entry.path().filename().string() + ": no figure has this id");
+                result.problems.push_back(tr("grade.picture_ignored", {{"file", entry.path().filename().string()}}));
     scoreLabs(setup.labs, result);
     return result;
 }

@@ -1,6 +1,9 @@
 #include "grader/report.h"
 
+#include "grader/checks/checks.h"
+
 #include "raylab/atomic_file.h"
+#include "raylab/messages.h"
 
 #include <nlohmann/json.hpp>
 
@@ -28,11 +31,10 @@ std::string escape(const std::string& text) {
     return out;
 }
 
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", v);
-    return text;
-}
+std::string number(double v) { return formatNumber(v, 4); }
+
+// "PASS" or "FAIL", in the reader's language.
+std::string verdict(bool passed) { return tr(passed ? "report.pass" : "report.fail"); }
 
 // The heat map: black where the pixel agrees, red to yellow as the error grows to `full`.
 Image8 heatMap(const ImageVerdict& v, float full) {
@@ -50,7 +52,8 @@ Image8 heatMap(const ImageVerdict& v, float full) {
 std::string itemOutput(const FigureOutcome& f) {
     std::string text = f.reason;
     if (!f.diagnosis.empty()) text += "\n" + f.diagnosis;
-    for (const auto& [name, value] : f.verdict.metrics) text += "\n  " + name + ": " + number(value);
+    for (const auto& [name, value] : f.verdict.metrics)
+        text += "\n  " + tr("report.metric", {{"name", name}, {"value", number(value)}});
     return text;
 }
 
@@ -60,26 +63,29 @@ void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, 
     const fs::path images = folder / "images";
     fs::create_directories(images);
     std::ostringstream out;
-    out << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>" << escape(result.title)
+    out << "<!doctype html>\n<html lang=\"" << languageCode(language()) << "\"><head><meta charset=\"utf-8\"><title>" << escape(result.title)
         << "</title>\n<style>body{font-family:sans-serif;max-width:1400px;margin:auto}"
            "img{width:300px;image-rendering:pixelated;border:1px solid #ccc}.pass{color:#080}.fail{color:#b00}"
            "td,th{padding:4px 8px;vertical-align:top;text-align:left}pre{white-space:pre-wrap;margin:0}</style>"
            "</head><body>\n<h1>"
-        << escape(result.title) << "</h1>\n<p>Score: <b>" << number(result.score()) << " / "
-        << number(result.maxScore()) << "</b></p>\n<table><tr><th>lab</th><th>points</th><th>notes</th></tr>\n";
+        << escape(result.title) << "</h1>\n<p>"
+        << tr("report.html.score", {{"score", "<b>" + number(result.score()) + " / " + number(result.maxScore()) + "</b>"}})
+        << "</p>\n<table><tr><th>" << tr("report.html.lab") << "</th><th>" << tr("report.html.points") << "</th><th>"
+        << tr("report.html.notes") << "</th></tr>\n";
     for (const LabOutcome& lab : result.labs) {
         std::string notes;
         for (const std::string& n : lab.notes) notes += escape(n) + "<br>";
-        out << "<tr><td>lab " << lab.lab << "</td><td>" << number(lab.points) << " / " << number(lab.maxPoints)
+        out << "<tr><td>" << tr("report.lab", {{"lab", std::to_string(lab.lab)}}) << "</td><td>" << number(lab.points) << " / " << number(lab.maxPoints)
             << "</td><td>" << notes << "</td></tr>\n";
     }
     out << "</table>\n";
     for (const std::string& p : result.problems) out << "<p class=\"fail\"><pre>" << escape(p) << "</pre></p>\n";
-    out << "<h2>Figures</h2>\n<table><tr><th>figure</th><th>reference</th><th>yours</th><th>difference</th>"
-           "<th>verdict</th></tr>\n";
+    out << "<h2>" << tr("report.html.figures") << "</h2>\n<table><tr><th>" << tr("report.html.figure") << "</th><th>"
+        << tr("report.html.reference") << "</th><th>" << tr("report.html.yours") << "</th><th>"
+        << tr("report.html.difference") << "</th><th>" << tr("report.html.verdict") << "</th></tr>\n";
     for (const FigureOutcome& f : result.figures) {
         const FigureReference* reference = references.find(f.id);
-        out << "<tr><td>" << escape(f.id) << "<br>lab " << f.lab << "<br>" << number(f.points) << " / "
+        out << "<tr><td>" << escape(f.id) << "<br>" << tr("report.lab", {{"lab", std::to_string(f.lab)}}) << "<br>" << number(f.points) << " / "
             << number(f.maxPoints) << "</td><td>";
         if (reference) {
             writePng(images / (f.id + ".reference.png"), reference->image);
@@ -95,16 +101,19 @@ void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, 
             const bool statistical = reference && reference->stats;
             writePng(images / (f.id + ".diff.png"), heatMap(f.verdict, statistical ? 6.f : 64.f));
             out << "<img src=\"images/" << escape(f.id) << ".diff.png\"><br><small>"
-                << (statistical ? "|z|, yellow at 6" : "LSB, dim up to 1, yellow at 64") << "</small>";
+                << escape(tr(statistical ? "report.html.scale_z" : "report.html.scale_lsb")) << "</small>";
         }
-        out << "</td><td><b class=\"" << (f.passed ? "pass\">PASS" : "fail\">FAIL") << "</b><pre>"
+        out << "</td><td><b class=\"" << (f.passed ? "pass" : "fail") << "\">" << verdict(f.passed) << "</b><pre>"
             << escape(itemOutput(f)) << "</pre></td></tr>\n";
     }
-    out << "</table>\n<h2>Function checks</h2>\n<table><tr><th>lab</th><th>check</th><th>points</th><th>verdict</th></tr>\n";
+    out << "</table>\n<h2>" << tr("report.html.checks") << "</h2>\n<table><tr><th>" << tr("report.html.lab")
+        << "</th><th>" << tr("report.html.check") << "</th><th>" << tr("report.html.points") << "</th><th>"
+        << tr("report.html.verdict") << "</th></tr>\n";
     for (const CheckOutcome& c : result.checks)
-        out << "<tr><td>lab " << c.lab << "</td><td>" << escape(c.name) << "</td><td>" << number(c.points) << " / "
-            << number(c.maxPoints) << "</td><td><b class=\"" << (c.passed ? "pass\">PASS" : "fail\">FAIL")
-            << "</b><pre>" << escape(c.message) << "</pre></td></tr>\n";
+        out << "<tr><td>" << tr("report.lab", {{"lab", std::to_string(c.lab)}}) << "</td><td>"
+            << escape(checkTitle(c.name)) << "</td><td>" << number(c.points) << " / " << number(c.maxPoints)
+            << "</td><td><b class=\"" << (c.passed ? "pass" : "fail") << "\">" << verdict(c.passed) << "</b><pre>"
+            << escape(c.message) << "</pre></td></tr>\n";
     out << "</table>\n</body></html>\n";
     writeFileAtomically(folder / "index.html", out.str());
 }
@@ -184,7 +193,8 @@ std::string terminalSummary(const GradeResult& result) {
         for (const CheckOutcome& c : result.checks)
             if (c.lab == lab) {
                 any = true;
-                out << "  " << (c.passed ? "PASS" : "FAIL") << "  lab" << lab << "  " << c.name << "\n";
+                out << "  " << verdict(c.passed) << "  " << tr("report.lab_short", {{"lab", std::to_string(lab)}}) << "  "
+                    << checkTitle(c.name) << "\n";
                 if (!c.passed) {
                     std::istringstream lines(c.message);
                     for (std::string line; std::getline(lines, line);) out << "        " << line << "\n";
@@ -193,15 +203,19 @@ std::string terminalSummary(const GradeResult& result) {
         for (const FigureOutcome& f : result.figures)
             if (f.lab == lab) {
                 any = true;
-                out << "  " << (f.passed ? "PASS" : "FAIL") << "  lab" << lab << "  figure " << f.id << ": " << f.reason << "\n";
+                out << "  " << verdict(f.passed) << "  " << tr("report.lab_short", {{"lab", std::to_string(lab)}}) << "  "
+                    << tr("report.figure_line", {{"id", f.id}, {"reason", f.reason}}) << "\n";
                 if (!f.diagnosis.empty()) out << "        " << f.diagnosis << "\n";
             }
         if (!any) continue;
-        out << "  lab " << lab << ": " << number(l.points) << " / " << number(l.maxPoints) << " points\n";
+        out << "  "
+            << tr("report.lab_points",
+                  {{"lab", std::to_string(lab)}, {"points", number(l.points)}, {"max", number(l.maxPoints)}})
+            << "\n";
         for (const std::string& n : l.notes) out << "        " << n << "\n";
     }
-    for (const std::string& p : result.problems) out << "  problem: " << p << "\n";
-    out << "  total: " << number(result.score()) << " / " << number(result.maxScore()) << "\n";
+    for (const std::string& p : result.problems) out << "  " << tr("report.problem", {{"problem", p}}) << "\n";
+    out << "  " << tr("report.total", {{"score", number(result.score())}, {"max", number(result.maxScore())}}) << "\n";
     return out.str();
 }
 

@@ -1,6 +1,7 @@
 #include "grader/sandbox.h"
 
 #include "grader/process.h"
+#include "raylab/messages.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -47,18 +48,18 @@ namespace fs = std::filesystem;
 
 std::string AgentRun::describe() const {
     std::string text;
-    if (timedOut) text = "stopped: it ran past the time limit (an endless loop?)";
+    if (timedOut) text = tr("sandbox.timed_out");
     else if (signal != 0) {
 #ifdef RAYLAB_POSIX_SANDBOX
-        if (signal == SIGXCPU) text = "stopped: it used up its CPU time limit";
-        else if (signal == SIGXFSZ) text = "stopped: it wrote more output than allowed";
-        else if (signal == SIGSEGV) text = "crashed (segmentation fault: a bad pointer or index?)";
-        else if (signal == SIGABRT) text = "crashed (aborted: an uncaught exception or failed allocation?)";
+        if (signal == SIGXCPU) text = tr("sandbox.cpu_limit");
+        else if (signal == SIGXFSZ) text = tr("sandbox.output_limit");
+        else if (signal == SIGSEGV) text = tr("sandbox.segfault");
+        else if (signal == SIGABRT) text = tr("sandbox.aborted");
         else
 #endif
-            text = "crashed (signal " + std::to_string(signal) + ")";
-    } else if (exitCode == 0) text = "exited";
-    else text = "exited with status " + std::to_string(exitCode);
+            text = tr("sandbox.signal", {{"signal", std::to_string(signal)}});
+    } else if (exitCode == 0) text = tr("sandbox.exited");
+    else text = tr("sandbox.exit_status", {{"status", std::to_string(exitCode)}});
     for (const std::string& v : violations) text += "; it " + v;
     return text;
 }

@@ -7,6 +7,7 @@
 
 #include "support/run_program.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -14,8 +15,25 @@ using namespace raylab::test;
 
 namespace {
 
+// The language comes from the environment: every run here is English unless a Locale says otherwise.
+class Locale {
+public:
+    explicit Locale(const char* lang) { set(lang); }
+    ~Locale() { set("C"); }
+    Locale(const Locale&) = delete;
+    Locale& operator=(const Locale&) = delete;
+
+private:
+    static void set(const char* lang) {
+        unsetenv("LC_ALL");
+        unsetenv("LC_MESSAGES");
+        setenv("LANG", lang, 1);
+    }
+};
+
 // Runs `raylab ARGS` from `cwd`; its output and exit status.
 ProgramRun runRaylab(std::vector<std::string> args, const fs::path& cwd = fs::temp_directory_path()) {
+    static const Locale english("C");
     args.insert(args.begin(), (binDir() / "raylab").string());
     return runProgram(args, cwd / "raylab-output.txt", cwd);
 }
@@ -35,6 +53,16 @@ bool hasLine(const std::string& output, const std::string& start, const std::str
 }
 
 } // namespace
+
+// Words of English sentences that no French message holds.
+const char* const kEnglishWords[] = {" the ", " is ", " are ", " of ", " and ", "expected", " got ", "Hint", "failed",
+                                     "passed", "not done yet", "PASS", "FAIL", "report:", "total:"};
+
+void checkFrenchOnly(const ProgramRun& run) {
+    for (const char* word : kEnglishWords)
+        CHECK_MESSAGE(run.output.find(word) == std::string::npos, "\"" << std::string(word) << "\" in\n" << run.output);
+    CHECK_MESSAGE(run.output.find("total\u00A0: ") != std::string::npos, run.output);
+}
 
 TEST_SUITE("commands") {
 
@@ -78,7 +106,7 @@ TEST_CASE("grade --images names the mistake a picture shows") {
     REQUIRE(fs::exists(dir / "figures" / "lab3_cosine.png"));
     const ProgramRun run = runRaylab({"grade", "--images", (dir / "figures").string(), "--report", (dir / "report").string()});
     CHECK(run.status == 1);
-    CHECK_MESSAGE(run.output.find("your image matches 'v flipped (upside-down image)'") != std::string::npos, run.output);
+    CHECK_MESSAGE(run.output.find("your image matches M2.3 'v flipped (upside-down image)'") != std::string::npos, run.output);
 }
 
 TEST_CASE("grade writes index.html, results.json and junit.xml that agree") {
@@ -125,6 +153,43 @@ TEST_CASE("grade --lab N grades that lab alone") {
     CHECK_MESSAGE(run.status == 0, run.output); // the mistake is in lab 1
     CHECK(run.output.find("lab1") == std::string::npos);
     CHECK(hasLine(run.output, "  total: 12 / 12", ""));
+}
+
+TEST_CASE("a French grade speaks French only: the reference, the stubs and a mistake") {
+    const fs::path dir = freshFolder("raylab-grade-french");
+    for (const std::string agent : {"raylab-agent-reference", "raylab-agent", "raylab-mistake-fovy_not_halved"}) {
+        CAPTURE(agent);
+        const ProgramRun run = runRaylab({"grade", "--lang", "fr", "--agent", (binDir() / agent).string(), "--report",
+                                          (dir / "report").string()},
+                                         dir);
+        checkFrenchOnly(run);
+        if (agent == "raylab-agent-reference") CHECK(run.status == 0);
+        if (agent == "raylab-agent") CHECK(run.output.find("pas encore écrit\u00A0: écrivez") != std::string::npos);
+        if (agent == "raylab-mistake-fovy_not_halved") {
+            CHECK(run.output.find("E2.1 «\u00A0fovy non divisé par deux\u00A0» (TP 2)") != std::string::npos);
+            CHECK(run.output.find("1,154701") != std::string::npos); // a decimal comma
+        }
+    }
+    std::ifstream html(dir / "report/index.html");
+    std::stringstream page;
+    page << html.rdbuf();
+    CHECK(page.str().find("<html lang=\"fr\">") != std::string::npos);
+    CHECK(page.str().find("Tests des fonctions") != std::string::npos);
+    CHECK(page.str().find("Function checks") == std::string::npos);
+}
+
+TEST_CASE("LANG=fr_FR.UTF-8 gives French without --lang, and --lang en overrides it") {
+    const fs::path dir = freshFolder("raylab-grade-lang");
+    const std::vector<std::string> args{"grade", "--lab", "1", "--agent", (binDir() / "raylab-agent-reference").string(),
+                                        "--report", (dir / "report").string()};
+    const Locale french("fr_FR.UTF-8");
+    checkFrenchOnly(runRaylab(args, dir));
+    std::vector<std::string> inEnglish = args;
+    inEnglish.insert(inEnglish.end(), {"--lang", "en"});
+    const ProgramRun english = runRaylab(inEnglish, dir);
+    CHECK_MESSAGE(english.output.find("  total: 10 / 10") != std::string::npos, english.output);
+    const ProgramRun figures = runRaylab({"lab", "1", "--out", (dir / "figures").string()}, dir);
+    CHECK_MESSAGE(figures.output.find("figures\u00A0: ") != std::string::npos, figures.output);
 }
 
 } // TEST_SUITE

@@ -32,7 +32,7 @@ TEST_CASE("each catalogued mistake is caught and named") {
             if (f.passed) continue;
             ++failing;
             seen += "\n  " + f.id + ": " + (f.diagnosis.empty() ? "(no diagnosis)" : f.diagnosis);
-            if (f.diagnosis.find("'" + m.name + "'") != std::string::npos) ++named;
+            if (f.diagnosis.find("'" + m.name() + "'") != std::string::npos) ++named;
             else CHECK_MESSAGE(f.diagnosis.empty(), f.id << " is diagnosed as another mistake: " << f.diagnosis);
         }
         if (!m.signatures.empty()) CHECK_MESSAGE(named >= 1, m.id << ": no figure names it" << seen);

@@ -1,6 +1,7 @@
 // The image checks' policy (docs/grading.md) on small synthetic images.
 #include "grader/compare.h"
 #include "grader/diagnosis.h"
+#include "raylab/messages.h"
 
 #include <doctest/doctest.h>
 
@@ -122,14 +123,24 @@ TEST_CASE("statistical: a few wild pixels are outliers") {
 }
 
 TEST_CASE("diagnosis: the closest signature is named when it fits, and only then") {
-    Mistake dark{"dark", "too dark", "brighten it", 3, "", {{"fig", downsample(flat(16, 16, 10, 10, 10))}}};
-    Mistake red{"red", "all red", "less red", 3, "", {{"fig", downsample(flat(16, 16, 250, 0, 0))}}};
+    Mistake dark{"dark", "too dark", "trop sombre", "brighten it", "éclaircissez-la", "", 3, "", {{"fig", downsample(flat(16, 16, 10, 10, 10))}}};
+    Mistake red{"red", "all red", "toute rouge", "less red", "moins de rouge", "", 3, "", {{"fig", downsample(flat(16, 16, 250, 0, 0))}}};
     const std::vector<Mistake> catalogue{dark, red};
     const Image8 reference = flat(16, 16, 100, 100, 100);
     const Diagnosis d = diagnose(catalogue, "fig", flat(16, 16, 11, 10, 9), reference);
     REQUIRE(d.mistake != nullptr);
     CHECK(d.mistake->id == "dark");
+    raylab::setLanguage(raylab::Language::En);
     CHECK(d.text() == "your image matches 'too dark' (lab 3): brighten it");
+    raylab::setLanguage(raylab::Language::Fr);
+    CHECK(d.text() == "votre image correspond à l'erreur «\u00A0trop sombre\u00A0» (TP 3)\u00A0: éclaircissez-la");
+    std::vector<Mistake> labelled{dark}; // numbered in the handouts: M3.4 in English, E3.4 in French
+    labelled[0].label = "3.4";
+    CHECK(diagnose(labelled, "fig", flat(16, 16, 11, 10, 9), reference).text() ==
+          "votre image correspond à l'erreur E3.4 «\u00A0trop sombre\u00A0» (TP 3)\u00A0: éclaircissez-la");
+    raylab::setLanguage(raylab::Language::En);
+    CHECK(diagnose(labelled, "fig", flat(16, 16, 11, 10, 9), reference).text() ==
+          "your image matches M3.4 'too dark' (lab 3): brighten it");
     CHECK(diagnose(catalogue, "fig", flat(16, 16, 60, 60, 60), reference).mistake == nullptr);
     CHECK(diagnose(catalogue, "other", flat(16, 16, 10, 10, 10), reference).mistake == nullptr);
 }

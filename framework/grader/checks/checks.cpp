@@ -1,36 +1,29 @@
 #include "grader/checks/checks.h"
 
+#include "raylab/messages.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
-#include <sstream>
 
 namespace raylab::grader {
 
-std::string show(double v) {
-    std::ostringstream out;
-    out.precision(7);
-    out << v;
-    return out.str();
-}
+std::string show(double v) { return formatNumber(v, 7); }
 
 std::string show(const glm::dvec3& v) {
-    std::ostringstream out;
-    out.precision(6);
-    out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-    return out.str();
+    return tr("number.vector", {{"x", formatNumber(v.x, 6)}, {"y", formatNumber(v.y, 6)}, {"z", formatNumber(v.z, 6)}});
 }
 
 void Judge::fail(const std::string& what, const std::string& expected, const std::string& got,
                  const std::string& hint) {
-    m_failures.push_back(what + ": expected " + expected + ", got " + got + ". Hint: " + hint);
+    m_failures.push_back(tr("check.failure", {{"what", what}, {"expected", expected}, {"got", got}, {"hint", hint}}));
 }
 
 // A NaN is never near anything: the comparisons are written so that it fails them.
 bool Judge::expectNear(const std::string& what, double got, double expected, double tolerance,
                        const std::string& hint) {
     if (std::abs(got - expected) <= tolerance) return true;
-    fail(what, show(expected) + " (within " + show(tolerance) + ")", show(got), hint);
+    fail(what, tr("check.within", {{"value", show(expected)}, {"tolerance", show(tolerance)}}), show(got), hint);
     return false;
 }
 
@@ -38,7 +31,7 @@ bool Judge::expectNear(const std::string& what, const glm::dvec3& got, const glm
                        const std::string& hint) {
     const glm::dvec3 d = glm::abs(got - expected);
     if (d.x <= tolerance && d.y <= tolerance && d.z <= tolerance) return true;
-    fail(what, show(expected) + " (within " + show(tolerance) + ")", show(got), hint);
+    fail(what, tr("check.within", {{"value", show(expected)}, {"tolerance", show(tolerance)}}), show(got), hint);
     return false;
 }
 
@@ -65,6 +58,13 @@ glm::dvec3 CaseRandom::unitVector() {
 
 void appendInputs(std::vector<double>& inputs, const glm::dvec3& v) {
     inputs.insert(inputs.end(), {v.x, v.y, v.z});
+}
+
+std::string checkTitle(const std::string& name) {
+    if (language() == Language::En) return name;
+    const auto& catalogue = messageCatalogue(language());
+    const auto found = catalogue.find("check_title." + name);
+    return found != catalogue.end() ? found->second : name;
 }
 
 std::vector<FunctionCheck> functionChecks(std::uint64_t seed) {

@@ -2,6 +2,8 @@
 // at grading time.
 #include "grader/checks/checks.h"
 
+#include "raylab/messages.h"
+
 #include <utility>
 
 namespace raylab::grader {
@@ -13,8 +15,6 @@ using protocol::Probe;
 // A value may be quantized to 8 bits (by rounding or truncating) before it is stored: a PNG keeps
 // no more, so the checks allow one level.
 constexpr double kLevel = 1.01 / 255.;
-constexpr const char* kRampHint =
-    "red = i / (W - 1) grows to the right (column i), green = j / (H - 1) downwards (row j)";
 
 // The texture a call returned, W x H.
 struct Gradient {
@@ -28,8 +28,9 @@ struct Gradient {
         return {width > 1 ? double(i) / (width - 1) : 0., height > 1 ? double(j) / (height - 1) : 0., 0.};
     }
     std::string name(int i, int j) const {
-        return std::to_string(width) + " x " + std::to_string(height) + " image, pixel (" + std::to_string(i) + ", " +
-               std::to_string(j) + ")";
+        return tr("what.lab1.image_pixel", {{"width", std::to_string(width)},
+                                            {"height", std::to_string(height)},
+                                            {"pixel", tr("what.lab1.pixel", {{"i", std::to_string(i)}, {"j", std::to_string(j)}})}});
     }
     bool expectPixel(Judge& judge, int i, int j, double tolerance, const std::string& hint) const {
         return judge.expectNear(name(i, j), pixel(i, j), expected(i, j), tolerance, hint);
@@ -51,16 +52,17 @@ void addLab1Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
          {gradient(5, 3), gradient(width, height)},
          [width, height](const auto& out, Judge& judge) {
              const Gradient fixed{5, 3, out[0]};
-             judge.expectNear("pixel (0, 0)", fixed.pixel(0, 0), {0., 0., 0.}, 1e-6, kRampHint);
-             judge.expectNear("pixel (4, 0), top right", fixed.pixel(4, 0), {1., 0., 0.}, 1e-6, kRampHint);
-             judge.expectNear("pixel (0, 2), bottom left", fixed.pixel(0, 2), {0., 1., 0.}, 1e-6, kRampHint);
-             judge.expectNear("pixel (4, 2), bottom right", fixed.pixel(4, 2), {1., 1., 0.}, 1e-6, kRampHint);
-             judge.expectNear("pixel (1, 1)", fixed.pixel(1, 1), {0.25, 0.5, 0.}, kLevel,
-                              "divide by W - 1 and H - 1 (not W and H) in floating point, not in integers");
+             const std::string ramp = tr("hint.lab1.ramp");
+             auto pixel = [](int i, int j) { return tr("what.lab1.pixel", {{"i", std::to_string(i)}, {"j", std::to_string(j)}}); };
+             judge.expectNear(pixel(0, 0), fixed.pixel(0, 0), {0., 0., 0.}, 1e-6, ramp);
+             judge.expectNear(tr("what.lab1.top_right", {{"pixel", pixel(4, 0)}}), fixed.pixel(4, 0), {1., 0., 0.}, 1e-6, ramp);
+             judge.expectNear(tr("what.lab1.bottom_left", {{"pixel", pixel(0, 2)}}), fixed.pixel(0, 2), {0., 1., 0.}, 1e-6, ramp);
+             judge.expectNear(tr("what.lab1.bottom_right", {{"pixel", pixel(4, 2)}}), fixed.pixel(4, 2), {1., 1., 0.}, 1e-6, ramp);
+             judge.expectNear(pixel(1, 1), fixed.pixel(1, 1), {0.25, 0.5, 0.}, kLevel, tr("hint.lab1.float_division"));
              const Gradient drawn{width, height, out[1]};
              for (const auto& [i, j] :
                   {std::pair{0, 0}, {width - 1, 0}, {0, height - 1}, {width - 1, height - 1}, {width / 2, height / 2}})
-                 drawn.expectPixel(judge, i, j, kLevel, kRampHint);
+                 drawn.expectPixel(judge, i, j, kLevel, ramp);
          }});
 
     const int otherWidth = random.integer(8, 40), otherHeight = random.integer(5, 30);
@@ -72,7 +74,7 @@ void addLab1Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
              for (const Gradient g : {Gradient{7, 4, out[0]}, Gradient{otherWidth, otherHeight, out[1]}})
                  for (int j = 0; j < g.height; ++j)
                      for (int i = 0; i < g.width; ++i)
-                         if (!g.expectPixel(judge, i, j, kLevel, "loop over every column i < W and every row j < H"))
+                         if (!g.expectPixel(judge, i, j, kLevel, tr("hint.lab1.every_pixel")))
                              return;
          }});
 
@@ -81,8 +83,7 @@ void addLab1Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                       "fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN",
                       {gradient(1, 3), gradient(4, 1), gradient(1, tall), gradient(wide, 1)},
                       [tall, wide](const auto& out, Judge& judge) {
-                          const char* hint =
-                              "W - 1 is 0 for a 1-pixel-wide image: use red = 0 there instead of dividing by 0";
+                          const std::string hint = tr("hint.lab1.one_pixel");
                           Gradient{1, 3, out[0]}.expectPixel(judge, 0, 2, 1e-6, hint);
                           Gradient{4, 1, out[1]}.expectPixel(judge, 3, 0, 1e-6, hint);
                           Gradient{1, tall, out[2]}.expectPixel(judge, 0, tall - 1, 1e-6, hint);

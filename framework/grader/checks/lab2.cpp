@@ -2,6 +2,8 @@
 // drawn at grading time. Every camera is built without lookAt (lab 4): lab 2 is graded on its own.
 #include "grader/checks/checks.h"
 
+#include "raylab/messages.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -29,7 +31,9 @@ struct Camera {
     protocol::Call ray(double sx, double sy) const {
         return {Probe::GenerateRay, {double(width), double(height), fovy, position.x, position.y, position.z, sx, sy}};
     }
-    std::string name() const { return std::to_string(width) + " x " + std::to_string(height) + ", fovy " + show(fovy); }
+    std::string name() const {
+        return tr("what.lab2.camera", {{"width", std::to_string(width)}, {"height", std::to_string(height)}, {"fovy", show(fovy)}});
+    }
 };
 
 // Sizes and angles where a float viewport keeps the checks' 1e-5 (a viewport 10 units wide would not).
@@ -42,13 +46,13 @@ void expectViewport(Judge& judge, const Camera& c, const std::vector<double>& ou
     Outputs o(out);
     const std::string suffix = named ? " (" + c.name() + ")" : "";
     const double height = o.number(), width = o.number();
-    judge.expectNear("viewport height, fovy " + show(c.fovy) + suffix, height, c.viewportHeight(), 1e-5,
-                     "height = 2 tan(fovy / 2) * focal: fovy is the full angle, in degrees (glm::radians converts)");
-    judge.expectNear("viewport width, " + std::to_string(c.width) + " x " + std::to_string(c.height) + suffix, width,
-                     c.viewportWidth(), 1e-5,
-                     "width = height * aspect, with aspect = W / H = " + show(double(c.width) / c.height));
-    judge.expectNear("top-left corner" + suffix, o.vec3(), c.topLeft(), 1e-5,
-                     "topLeft = position - w * focal + v * height / 2 - u * width / 2 (u = (-1, 0, 0) here)");
+    judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}) + suffix, height, c.viewportHeight(), 1e-5,
+                     tr("hint.lab2.viewport_height"));
+    judge.expectNear(tr("what.lab2.viewport_width", {{"width", std::to_string(c.width)}, {"height", std::to_string(c.height)}}) +
+                         suffix,
+                     width, c.viewportWidth(), 1e-5,
+                     tr("hint.lab2.viewport_width", {{"aspect", show(double(c.width) / c.height)}}));
+    judge.expectNear(tr("what.lab2.top_left") + suffix, o.vec3(), c.topLeft(), 1e-5, tr("hint.lab2.top_left"));
 }
 
 struct Point {
@@ -61,11 +65,10 @@ void expectRays(Judge& judge, const Camera& c, const std::vector<Point>& points,
     for (std::size_t k = 0; k < points.size(); ++k) {
         Outputs o(out[first + k]);
         const Point& p = points[k];
-        judge.expectNear("ray origin at the " + p.name, o.vec3(), c.position, 1e-6,
-                         "a primary ray starts at the camera position");
-        judge.expectNear("ray direction at the " + p.name, o.vec3(), c.direction(p.sx, p.sy), 1e-5,
-                         "direction = normalize(topLeft + sx * width * u - sy * height * v - position): sx goes right "
-                         "along u, sy goes down against v");
+        judge.expectNear(tr("what.lab2.ray_origin_at", {{"point", p.name}}), o.vec3(), c.position, 1e-6,
+                         tr("hint.lab2.ray_origin"));
+        judge.expectNear(tr("what.lab2.ray_direction_at", {{"point", p.name}}), o.vec3(), c.direction(p.sx, p.sy), 1e-5,
+                         tr("hint.lab2.ray_direction"));
     }
 }
 
@@ -88,22 +91,23 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
          "updateViewport: fovy is in degrees and halved",
          {square.viewport(), wide.viewport()},
          [square, wide](const auto& out, Judge& judge) {
-             const char* hint = "2 tan(fovy / 2), fovy in degrees: convert degrees to radians and take half the angle";
+             const std::string hint = tr("hint.lab2.fovy_degrees_halved");
              for (const auto& [c, o] : {std::pair{square, out[0]}, std::pair{wide, out[1]}})
-                 judge.expectNear("viewport height, fovy " + show(c.fovy), o[0], c.viewportHeight(), 1e-5, hint);
+                 judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}), o[0], c.viewportHeight(), 1e-5,
+                                  hint);
          }});
 
-    std::vector<Point> corners{{0.5, 0.5, "centre (0.5, 0.5)"},
-                               {0., 0., "top-left corner (0, 0)"},
-                               {1., 0., "top-right corner (1, 0)"},
-                               {0., 1., "bottom-left corner (0, 1)"},
-                               {1., 1., "bottom-right corner (1, 1)"}};
+    std::vector<Point> corners{{0.5, 0.5, tr("what.lab2.centre", {{"sx", show(0.5)}, {"sy", show(0.5)}})},
+                               {0., 0., tr("what.lab2.top_left_corner")},
+                               {1., 0., tr("what.lab2.top_right_corner")},
+                               {0., 1., tr("what.lab2.bottom_left_corner")},
+                               {1., 1., tr("what.lab2.bottom_right_corner")}};
     const std::size_t fixedCorners = corners.size();
     const Camera other = drawnCamera(random);
     std::vector<Point> drawnPoints;
     for (int k = 0; k < 3; ++k) {
         const double sx = CaseRandom::asFloat(random.uniform(0., 1.)), sy = CaseRandom::asFloat(random.uniform(0., 1.));
-        drawnPoints.push_back({sx, sy, "point (" + show(sx) + ", " + show(sy) + ") of a " + other.name() + " camera"});
+        drawnPoints.push_back({sx, sy, tr("what.lab2.point_of_camera", {{"sx", show(sx)}, {"sy", show(sy)}, {"camera", other.name()}})});
     }
     std::vector<protocol::Call> calls;
     for (const Point& p : corners)
@@ -132,9 +136,8 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                  Outputs o(out[k]);
                  o.vec3();
                  if (!judge.expectNear(
-                         "|direction| at (" + show(screen[k].first) + ", " + show(screen[k].second) + ")",
-                         glm::length(o.vec3()), 1., 1e-5,
-                         "normalize the direction (glm::normalize): shading and t as a distance rely on it"))
+                         tr("what.lab2.direction_length", {{"sx", show(screen[k].first)}, {"sy", show(screen[k].second)}}),
+                         glm::length(o.vec3()), 1., 1e-5, tr("hint.lab2.normalize")))
                      return;
              }
          }});
@@ -147,16 +150,14 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                       "generateRay: a camera away from the origin starts its rays at its position",
                       {away.ray(0., 0.), drawnAway.ray(sx, sy)},
                       [away, drawnAway, sx, sy](const auto& out, Judge& judge) {
-                          const char* hint =
-                              "topLeft includes the position (topLeft = position - w * focal + ...) and the "
-                              "direction subtracts it";
+                          const std::string hint = tr("hint.lab2.away_direction");
                           for (const auto& [c, o, x, y] :
                                {std::tuple{away, out[0], 0., 0.}, std::tuple{drawnAway, out[1], sx, sy}}) {
                               Outputs ray(o);
-                              const std::string at = "camera at " + show(c.position);
-                              judge.expectNear("ray origin, " + at, ray.vec3(), c.position, 1e-5,
-                                               "the origin of every primary ray is the camera position");
-                              judge.expectNear("direction through (" + show(x) + ", " + show(y) + "), " + at,
+                              const std::string at = show(c.position);
+                              judge.expectNear(tr("what.lab2.away_origin", {{"position", at}}), ray.vec3(), c.position,
+                                               1e-5, tr("hint.lab2.away_origin"));
+                              judge.expectNear(tr("what.lab2.away_direction", {{"sx", show(x)}, {"sy", show(y)}, {"position", at}}),
                                                ray.vec3(), c.direction(x, y), 1e-5, hint);
                           }
                       }});

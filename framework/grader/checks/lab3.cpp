@@ -3,6 +3,8 @@
 // grading time.
 #include "grader/checks/checks.h"
 
+#include "raylab/messages.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -56,18 +58,18 @@ bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
     const glm::dvec3 position = o.vec3();
     if (c.t >= 0.) {
         if (!found) {
-            judge.fail(c.what, "a hit at t = " + show(c.t), "no hit", c.hint);
+            judge.fail(c.what, tr("what.lab3.hit_at", {{"t", show(c.t)}}), tr("what.lab3.no_hit"), c.hint);
             return false;
         }
         return judge.expectNear(c.what + ", t", t, c.t, c.tolerance, c.hint) &&
                judge.expectNear(c.what + ", hit.position", position, c.ray.at(c.t), c.tolerance * 2.,
-                                "store hit.position = ray.at(hit.t)");
+                                tr("hint.lab3.position"));
     }
     if (found)
-        judge.fail(c.what, "no hit", "a hit at t = " + show(t), c.hint);
+        judge.fail(c.what, tr("what.lab3.no_hit"), tr("what.lab3.hit_at", {{"t", show(t)}}), c.hint);
     else if (t != -7.)
-        judge.fail(c.what + " (the hit record)", "left alone", "t changed to " + show(t),
-                   "write into hit only when you return true");
+        judge.fail(tr("what.lab3.hit_record", {{"case", c.what}}), tr("what.lab3.left_alone"),
+                   tr("what.lab3.t_changed", {{"t", show(t)}}), tr("hint.lab3.hit_record"));
     return !found;
 }
 
@@ -86,7 +88,7 @@ Sphere drawnSphere(CaseRandom& random) {
 }
 
 std::string describe(const Sphere& s) {
-    return "sphere " + show(s.centre) + " radius " + show(s.radius);
+    return tr("what.lab3.sphere", {{"centre", show(s.centre)}, {"radius", show(s.radius)}});
 }
 
 // The nearest t >= 0 of the ray on the sphere, in double; none on a miss.
@@ -165,33 +167,32 @@ void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vec
 void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const Ray alongZ{{0., 0., 0.}, {0., 0., 1.}};
     {
-        const char* hint =
-            "solve a t^2 + 2 b' t + c' = 0 with a = d.d, b' = (o - c).d, c' = |o - c|^2 - r^2; keep the smaller root";
+        const std::string hint = tr("hint.lab3.quadratic");
         const Sphere s = drawnSphere(random);
         const Ray r = rayTowards(random, s, 0.);
         addIntersect(checks, "intersect: a ray through the centre hits the near side",
-                     {{"ray from the origin along +z", kSphere, alongZ, 0., kInf, 2., 1e-5, hint},
-                      {"ray from " + show(r.origin) + " towards the centre of the " + describe(s), s, r, 0., kInf,
+                     {{tr("what.lab3.origin_along_z"), kSphere, alongZ, 0., kInf, 2., 1e-5, hint},
+                      {tr("what.lab3.towards_centre", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf,
                        *nearestHit(s, r), 1e-4, hint}});
     }
     {
-        const char* hint = "a negative discriminant means no real root: return false";
+        const std::string hint = tr("hint.lab3.miss");
         const Sphere s = drawnSphere(random);
         const Ray r = rayTowards(random, s, random.uniform(1.1, 3.));
         addIntersect(
             checks, "intersect: a ray beside the sphere misses",
-            {{"ray from (2, 0, 0) along +z", kSphere, {{2., 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
-             {"ray from " + show(r.origin) + " passing beside the " + describe(s), s, r, 0., kInf, -1., 0., hint}});
+            {{tr("what.lab3.beside_fixed"), kSphere, {{2., 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
+             {tr("what.lab3.beside", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf, -1., 0., hint}});
     }
     {
         // Integer coordinates: the tangent's discriminant is exactly 0 in float too.
-        const char* hint = "a zero discriminant is a (double) root: test disc < 0 for a miss, not disc <= 0";
+        const std::string hint = tr("hint.lab3.tangent");
         const Sphere s{{double(random.integer(-5, 5)), double(random.integer(-5, 5)), double(random.integer(-5, 5))},
                        double(random.integer(1, 3))};
         const double k = random.integer(int(s.radius) + 1, 10);
         const Ray r{s.centre + glm::dvec3(s.radius, 0., -k), {0., 0., 1.}};
         addIntersect(checks, "intersect: a tangent ray touches the sphere",
-                     {{"ray from (1, 0, 0) along +z, tangent at (1, 0, 3)",
+                     {{tr("what.lab3.tangent_fixed"),
                        kSphere,
                        {{1., 0., 0.}, {0., 0., 1.}},
                        0.,
@@ -199,15 +200,15 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                        3.,
                        1e-4,
                        hint},
-                      {"ray from " + show(r.origin) + " along +z, tangent to the " + describe(s), s, r, 0., kInf, k,
+                      {tr("what.lab3.tangent", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf, k,
                        1e-4, hint}});
     }
     {
-        const char* hint = "when the smaller root is below tMin, take the larger one if it is in [tMin, tMax]";
+        const std::string hint = tr("hint.lab3.inside");
         const Sphere s = drawnSphere(random);
         const Ray r{s.centre, CaseRandom::asFloat(random.unitVector())};
         addIntersect(checks, "intersect: from inside the sphere the far root is the hit",
-                     {{"ray from the centre (0, 0, 3) along +z",
+                     {{tr("what.lab3.inside_fixed"),
                        kSphere,
                        {{0., 0., 3.}, {0., 0., 1.}},
                        0.,
@@ -215,16 +216,16 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                        1.,
                        1e-5,
                        hint},
-                      {"ray from the centre of the " + describe(s) + " along " + show(r.direction), s, r, 0., kInf,
+                      {tr("what.lab3.inside", {{"sphere", describe(s)}, {"direction", show(r.direction)}}), s, r, 0., kInf,
                        *nearestHit(s, r), 1e-5, hint}});
     }
     {
-        const char* hint = "both roots are negative: a ray is a half-line, it sees nothing behind its origin";
+        const std::string hint = tr("hint.lab3.behind");
         const Sphere s = drawnSphere(random);
         const glm::dvec3 d = CaseRandom::asFloat(random.unitVector());
         const Ray r{CaseRandom::asFloat(s.centre + d * (s.radius * random.uniform(1.5, 5.))), d};
         addIntersect(checks, "intersect: a sphere behind the ray is not hit",
-                     {{"ray from (0, 0, 5) along +z, sphere behind",
+                     {{tr("what.lab3.behind_fixed"),
                        kSphere,
                        {{0., 0., 5.}, {0., 0., 1.}},
                        0.,
@@ -232,21 +233,20 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                        -1.,
                        0.,
                        hint},
-                      {"ray from " + show(r.origin) + " along " + show(d) + ", the " + describe(s) + " behind", s, r,
+                      {tr("what.lab3.behind", {{"origin", show(r.origin)}, {"direction", show(d)}, {"sphere", describe(s)}}), s, r,
                        0., kInf, -1., 0., hint}});
     }
     addIntersect(
         checks, "intersect: tMin and tMax bound the hit",
-        {{"tMax = 1.5, before the sphere", kSphere, alongZ, 0., 1.5, -1., 0., "a root beyond tMax does not count"},
-         {"tMin = 2.5, past the near side", kSphere, alongZ, 2.5, kInf, 4., 1e-5,
-          "a root below tMin does not count: try the far root"}});
+        {{tr("what.lab3.t_max", {{"t", show(1.5)}}), kSphere, alongZ, 0., 1.5, -1., 0., tr("hint.lab3.t_max")},
+         {tr("what.lab3.t_min", {{"t", show(2.5)}}), kSphere, alongZ, 2.5, kInf, 4., 1e-5, tr("hint.lab3.t_min")}});
     {
-        const char* hint = "keep a = d.d in the quadratic: t is then in units of |d|, and ray.at(t) is the same point";
+        const std::string hint = tr("hint.lab3.not_unit");
         const double scale = CaseRandom::asFloat(random.uniform(0.3, 5.));
         addIntersect(
             checks, "intersect: a direction that is not unit length",
-            {{"ray from the origin along (0, 0, 2)", kSphere, {{0., 0., 0.}, {0., 0., 2.}}, 0., kInf, 1., 1e-5, hint},
-             {"ray from the origin along (0, 0, " + show(scale) + ")",
+            {{tr("what.lab3.origin_along", {{"direction", show(glm::dvec3(0., 0., 2.))}}), kSphere, {{0., 0., 0.}, {0., 0., 2.}}, 0., kInf, 1., 1e-5, hint},
+             {tr("what.lab3.origin_along", {{"direction", show(glm::dvec3(0., 0., scale))}}),
               kSphere,
               {{0., 0., 0.}, {0., 0., scale}},
               0.,
@@ -258,10 +258,9 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     {
         const Sphere far{{0., 0., 1000.}, 1.};
         const double offset = CaseRandom::asFloat(random.uniform(0., 0.9));
-        const char* hint =
-            "b'^2 - c' subtracts two numbers near 10^6 and loses digits: the handout's stable form avoids it";
+        const std::string hint = tr("hint.lab3.far_1000");
         addIntersect(checks, "intersect: a sphere 1000 radii away",
-                     {{"ray at 0.5 radius from the centre line",
+                     {{tr("what.lab3.at_radius", {{"offset", show(0.5)}}),
                        far,
                        {{0.5, 0., 0.}, {0., 0., 1.}},
                        0.,
@@ -269,7 +268,7 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                        1000. - std::sqrt(0.75),
                        2e-3,
                        hint},
-                      {"ray at " + show(offset) + " radius from the centre line",
+                      {tr("what.lab3.at_radius", {{"offset", show(offset)}}),
                        far,
                        {{offset, 0., 0.}, {0., 0., 1.}},
                        0.,
@@ -277,23 +276,22 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                        1000. - std::sqrt(1. - offset * offset),
                        2e-3,
                        hint},
-                      {"ray at 1.5 radii from the centre line",
+                      {tr("what.lab3.at_radii", {{"offset", show(1.5)}}),
                        far,
                        {{1.5, 0., 0.}, {0., 0., 1.}},
                        0.,
                        kInf,
                        -1.,
                        0.,
-                       "a ray that passes at 1.5 radii misses, however far the sphere is"}});
+                       tr("hint.lab3.far_miss")}});
     }
     {
         const Sphere far{{0., 0., 10000.}, 1.};
-        const char* hint = "at 10^4 radii the textbook discriminant b'^2 - c' is lost to rounding; compute it as "
-                           "r^2 - |oc - (oc.d / d.d) d|^2 (Ray Tracing Gems, chapter 7; see the handout)";
+        const std::string hint = tr("hint.lab3.far_10000");
         addIntersect(
             checks, "intersect: a sphere 10000 radii away keeps its silhouette",
-            {{"ray at 1.1 radii from the centre line", far, {{1.1, 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
-             {"ray at 0.9 radius from the centre line",
+            {{tr("what.lab3.at_radii", {{"offset", show(1.1)}}), far, {{1.1, 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
+             {tr("what.lab3.at_radius", {{"offset", show(0.9)}}),
               far,
               {{0.9, 0., 0.}, {0., 0., 1.}},
               0.,
@@ -317,14 +315,13 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         }
         checks.push_back(
             {3, "computeNormal: unit and pointing outwards", calls, [cases](const auto& out, Judge& judge) {
-                 judge.expectNear("normal at (0, 0, 2)", Outputs(out[0]).vec3(), {0., 0., -1.}, 1e-6,
-                                  "n = (p - centre) / radius: it points from the centre outwards");
-                 judge.expectNear("normal at (1, 2, 5) of a sphere of radius 2", Outputs(out[1]).vec3(), {0., 0., 1.},
-                                  1e-6, "divide by the radius so the normal has length 1");
+                 judge.expectNear(tr("what.lab3.normal_at", {{"point", show(glm::dvec3(0., 0., 2.))}}),
+                                  Outputs(out[0]).vec3(), {0., 0., -1.}, 1e-6, tr("hint.lab3.normal_outwards"));
+                 judge.expectNear(tr("what.lab3.normal_radius_2", {{"point", show(glm::dvec3(1., 2., 5.))}}),
+                                  Outputs(out[1]).vec3(), {0., 0., 1.}, 1e-6, tr("hint.lab3.normal_unit"));
                  const auto& [s, p] = cases[2];
-                 judge.expectNear("normal at " + show(p) + " of the " + describe(s), Outputs(out[2]).vec3(),
-                                  (p - s.centre) / s.radius, 1e-5,
-                                  "n = (p - centre) / radius: unit, from the centre outwards");
+                 judge.expectNear(tr("what.lab3.normal_of", {{"point", show(p)}, {"sphere", describe(s)}}),
+                                  Outputs(out[2]).vec3(), (p - s.centre) / s.radius, 1e-5, tr("hint.lab3.normal"));
              }});
     }
     const Sphere drawn = drawnSphere(random);
@@ -332,13 +329,13 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                      background = CaseRandom::asFloat(random.vec3(0., 1.));
     const Ray hitting = rayTowards(random, drawn, random.uniform(0., 0.8)),
               missing = rayTowards(random, drawn, random.uniform(1.2, 3.));
-    const std::string drawnScene = " (the " + describe(drawn) + ", colour " + show(colour) + ")";
+    const std::string drawnScene = tr("what.lab3.scene", {{"sphere", describe(drawn)}, {"colour", show(colour)}});
     {
-        const char* hitHint = "on a hit return hit.object->color()";
-        const char* missHint = "a ray that hits nothing sees scene.background";
+        const std::string hitHint = tr("hint.lab3.flat_hit");
+        const std::string missHint = tr("hint.lab3.flat_miss");
         addLi(checks, "Li: flat shading sees the sphere's colour or the background",
-              {{"flat, ray along +z", kFlat, kSphere, kBlue, kGrey, alongZ, 1e-6, hitHint},
-               {"flat, ray along +x (a miss)",
+              {{tr("what.lab3.flat_z"), kFlat, kSphere, kBlue, kGrey, alongZ, 1e-6, hitHint},
+               {tr("what.lab3.flat_x"),
                 kFlat,
                 kSphere,
                 kBlue,
@@ -346,17 +343,15 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                 {{0., 0., 0.}, {1., 0., 0.}},
                 1e-6,
                 missHint},
-               {"flat, a ray that hits" + drawnScene, kFlat, drawn, colour, background, hitting, 1e-6, hitHint},
-               {"flat, a ray that misses" + drawnScene, kFlat, drawn, colour, background, missing, 1e-6, missHint}});
+               {tr("what.lab3.flat_hits", {{"scene", drawnScene}}), kFlat, drawn, colour, background, hitting, 1e-6, hitHint},
+               {tr("what.lab3.flat_misses", {{"scene", drawnScene}}), kFlat, drawn, colour, background, missing, 1e-6, missHint}});
     }
     {
-        const char* hint =
-            "colour * max(-dot(d, n), 0) with the true normal: the dot product is the cosine itself, no gamma";
+        const std::string hint = tr("hint.lab3.cosine");
         // From (0.6, 0, 0) along +z: the hit is (0.6, 0, 2.2), n = (0.6, 0, -0.8), -d.n = 0.8.
         addLi(checks, "Li: cosine shading is colour times the cosine -d.n",
-              {{"cosine, ray along +z (facing)", kCosine, kSphere, kBlue, kGrey, alongZ, 1e-5,
-                "-d.n = 1 where the ray meets the surface head on"},
-               {"cosine, ray from (0.6, 0, 0) along +z",
+              {{tr("what.lab3.cosine_z"), kCosine, kSphere, kBlue, kGrey, alongZ, 1e-5, tr("hint.lab3.cosine_facing")},
+               {tr("what.lab3.cosine_from", {{"origin", show(glm::dvec3(0.6, 0., 0.))}}),
                 kCosine,
                 kSphere,
                 kBlue,
@@ -364,15 +359,13 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                 {{0.6, 0., 0.}, {0., 0., 1.}},
                 1e-5,
                 hint},
-               {"cosine, a ray from " + show(hitting.origin) + drawnScene, kCosine, drawn, colour, background, hitting,
+               {tr("what.lab3.cosine_drawn", {{"origin", show(hitting.origin)}, {"scene", drawnScene}}), kCosine, drawn, colour, background, hitting,
                 1e-4, hint}});
     }
     addLi(checks, "Li: the placeholder normal faces the ray",
-          {{"placeholder normal, ray along +z", kPlaceholder, kSphere, kBlue, kGrey, alongZ, 1e-5,
-            "n = normalize(1, 1, 1), turned to -n when d.n > 0; the colour is colour * max(-d.n, 0)"},
-           {"placeholder normal, a ray from " + show(hitting.origin) + drawnScene, kPlaceholder, drawn, colour,
-            background, hitting, 1e-5,
-            "n = normalize(1, 1, 1), turned to -n when d.n > 0; the colour is colour * max(-d.n, 0)"}});
+          {{tr("what.lab3.placeholder_z"), kPlaceholder, kSphere, kBlue, kGrey, alongZ, 1e-5, tr("hint.lab3.placeholder")},
+           {tr("what.lab3.placeholder_drawn", {{"origin", show(hitting.origin)}, {"scene", drawnScene}}), kPlaceholder,
+            drawn, colour, background, hitting, 1e-5, tr("hint.lab3.placeholder")}});
 }
 
 } // namespace raylab::grader

@@ -3,6 +3,8 @@
 // of a camera rebuilt after construction; and the cameras that cannot be built.
 #include "grader/checks/checks.h"
 
+#include "raylab/messages.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -52,17 +54,18 @@ struct Built {
     }
 };
 
-// The cameras of scenes/figures/lab4_{a,b,c,d}.toml.
-const LookAt kHandoutCameras[] = {
-    {"camera (a)", {0., 0., -2.}, {0., 0., 79.}, {0., 1., 0.}},
-    {"camera (b)", {1., 0., 0.}, {1., 0., 1.}, {0., 1., 0.}},
-    {"camera (c)", {0., 1., 0.}, {0., 1., 1.}, {0., 1., 0.}},
-    {"camera (d)", {4., -1., 0.}, {-1., -1., 2.}, {0., 1., 0.}},
-};
+// The cameras of scenes/figures/lab4_{a,b,c,d}.toml (named when the checks are made: in the reader's language).
+std::vector<LookAt> handoutCameras() {
+    auto name = [](const char* letter) { return tr("what.lab4.handout_camera", {{"letter", letter}}); };
+    return {{name("a"), {0., 0., -2.}, {0., 0., 79.}, {0., 1., 0.}},
+            {name("b"), {1., 0., 0.}, {1., 0., 1.}, {0., 1., 0.}},
+            {name("c"), {0., 1., 0.}, {0., 1., 1.}, {0., 1., 0.}},
+            {name("d"), {4., -1., 0.}, {-1., -1., 2.}, {0., 1., 0.}}};
+}
 
 // A camera whose up leans towards the view direction: v = up or an unnormalized u shows there.
-LookAt drawnCamera(CaseRandom& random, const std::string& name) {
-    LookAt c{name, CaseRandom::asFloat(random.vec3(-5., 5.)), {}, {}};
+LookAt drawnCamera(CaseRandom& random) {
+    LookAt c{"", CaseRandom::asFloat(random.vec3(-5., 5.)), {}, {}};
     c.target = CaseRandom::asFloat(c.position + random.unitVector() * random.uniform(1., 10.));
     const glm::dvec3 view = glm::normalize(c.target - c.position);
     for (;;) {
@@ -70,7 +73,7 @@ LookAt drawnCamera(CaseRandom& random, const std::string& name) {
         const double cosine = std::abs(glm::dot(glm::normalize(c.up), view));
         if (cosine > 0.2 && cosine < 0.9) break; // oblique, and far from parallel
     }
-    c.name += " at " + show(c.position) + " looking at " + show(c.target) + ", up " + show(c.up);
+    c.name = tr("what.lab4.drawn_camera", {{"position", show(c.position)}, {"target", show(c.target)}, {"up", show(c.up)}});
     c.height = random.integer(100, 800);
     c.width = int(c.height * random.uniform(0.5, 2.5));
     c.fovy = CaseRandom::asFloat(random.uniform(30., 100.));
@@ -87,13 +90,11 @@ protocol::Call refusedCall(const glm::dvec3& position, const glm::dvec3& target,
 } // namespace
 
 void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
-    std::vector<LookAt> cameras(std::begin(kHandoutCameras), std::end(kHandoutCameras));
-    cameras.push_back({"camera (d) with up (0.3, 1, 0.4), not perpendicular to the view",
-                       {4., -1., 0.},
-                       {-1., -1., 2.},
-                       {0.3, 1., 0.4}});
-    cameras.push_back(drawnCamera(random, "a camera"));
-    cameras.push_back(drawnCamera(random, "a camera"));
+    std::vector<LookAt> cameras = handoutCameras();
+    const glm::dvec3 obliqueUp{0.3, 1., 0.4};
+    cameras.push_back({tr("what.lab4.oblique_camera", {{"up", show(obliqueUp)}}), {4., -1., 0.}, {-1., -1., 2.}, obliqueUp});
+    cameras.push_back(drawnCamera(random));
+    cameras.push_back(drawnCamera(random));
     std::vector<protocol::Call> calls;
     for (const LookAt& c : cameras)
         calls.push_back(c.call());
@@ -102,20 +103,15 @@ void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
              for (std::size_t k = 0; k < cameras.size(); ++k) {
                  const LookAt& c = cameras[k];
                  const Built b(out[k]);
-                 judge.expectNear(c.name + ": w", b.w, c.w(), 1e-5,
-                                  "w = normalize(position - target): the camera looks along -w");
-                 judge.expectNear(c.name + ": u", b.u, c.u(), 1e-5,
-                                  "u = normalize(cross(up, w)) in this order: cross(w, up) mirrors the image, and "
-                                  "cross(up, w) is unit only when up is perpendicular to w");
-                 judge.expectNear(c.name + ": v", b.v, c.v(), 1e-5,
-                                  "v = cross(w, u), up in the image: `up` only gives the side, it need not be "
-                                  "perpendicular to w");
-                 judge.expectNear(c.name + ": position", b.position, c.position, 1e-6,
-                                  "store the position in m_position");
+                 auto what = [&c](const char* part) { return tr("what.lab4.part", {{"camera", c.name}, {"part", part}}); };
+                 judge.expectNear(what("w"), b.w, c.w(), 1e-5, tr("hint.lab4.w"));
+                 judge.expectNear(what("u"), b.u, c.u(), 1e-5, tr("hint.lab4.u"));
+                 judge.expectNear(what("v"), b.v, c.v(), 1e-5, tr("hint.lab4.v"));
+                 judge.expectNear(what("position"), b.position, c.position, 1e-6, tr("hint.lab4.position"));
              }
          }});
 
-    const std::vector<LookAt> moved{kHandoutCameras[3], drawnCamera(random, "a camera")};
+    const std::vector<LookAt> moved{handoutCameras()[3], drawnCamera(random)};
     calls.clear();
     for (const LookAt& c : moved)
         calls.push_back(c.call());
@@ -124,27 +120,25 @@ void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
              for (std::size_t k = 0; k < moved.size(); ++k) {
                  const LookAt& c = moved[k];
                  const Built b(out[k]);
-                 const char* hint = "call updateViewport() after setting the frame, so the screen is in front of "
-                                    "the new camera (a camera built, then rebuilt elsewhere, must move its screen too)";
-                 judge.expectNear(c.name + ": viewport height", b.viewportHeight, c.viewportHeight(), 1e-5, hint);
-                 judge.expectNear(c.name + ": viewport width", b.viewportWidth, c.viewportWidth(), 1e-5, hint);
-                 judge.expectNear(c.name + ": top-left corner", b.topLeft, c.topLeft(), 1e-4,
-                                  std::string(hint) + "; set m_position before updateViewport()");
+                 const std::string hint = tr("hint.lab4.viewport");
+                 auto what = [&c](const std::string& part) { return tr("what.lab4.part", {{"camera", c.name}, {"part", part}}); };
+                 judge.expectNear(what(tr("what.lab4.viewport_height")), b.viewportHeight, c.viewportHeight(), 1e-5, hint);
+                 judge.expectNear(what(tr("what.lab4.viewport_width")), b.viewportWidth, c.viewportWidth(), 1e-5, hint);
+                 judge.expectNear(what(tr("what.lab4.top_left")), b.topLeft, c.topLeft(), 1e-4,
+                                  tr("hint.lab4.viewport_position", {{"hint", hint}}));
              }
          }});
 
-    const LookAt origin{
-        "the default camera as lookAt((0,0,0), (0,0,1), (0,1,0))", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}};
+    const LookAt origin{"", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}};
     checks.push_back(
         {4, "lookAt: the default camera as a lookAt camera", {origin.call()}, [](const auto& out, Judge& judge) {
              const Built b(out[0]);
-             judge.expectNear("u", b.u, {-1., 0., 0.}, 1e-6,
-                              "lookAt((0,0,0), (0,0,1), (0,1,0)) is the default camera, whose u is (-1, 0, 0)");
-             judge.expectNear("v", b.v, {0., 1., 0.}, 1e-6, "v = cross(w, u)");
+             judge.expectNear("u", b.u, {-1., 0., 0.}, 1e-6, tr("hint.lab4.default_u"));
+             judge.expectNear("v", b.v, {0., 1., 0.}, 1e-6, tr("hint.lab4.default_v"));
          }});
 
     // A constructor that refuses everything earns nothing: a valid camera must be built first.
-    const LookAt valid{"a valid camera", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}, 200, 100};
+    const LookAt valid{"", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}, 200, 100};
     const glm::dvec3 p = CaseRandom::asFloat(random.vec3(-5., 5.));
     // Along an axis, so that the view and up are exactly parallel in float too.
     const glm::dvec3 along{0., double(random.integer(1, 9)) * (random.integer(0, 1) ? 1. : -1.), 0.};
@@ -155,15 +149,13 @@ void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
           refusedCall({1., 2., 3.}, {1., 2., 3.}, {0., 1., 0.}), refusedCall(p, p, {0., 1., 0.}),
           refusedCall(p, p + along, {0., 2., 0.})},
          [p](const auto& out, Judge& judge) {
-             judge.expectNear("a valid camera's w", Built(out[0]).w, {0., 0., -1.}, 1e-6,
-                              "w = normalize(position - target)");
-             const std::string names[] = {"up parallel to the view direction", "position equal to the target",
-                                          "position equal to the target, both " + show(p),
-                                          "up parallel to the view direction, from " + show(p)};
+             judge.expectNear(tr("what.lab4.valid_w"), Built(out[0]).w, {0., 0., -1.}, 1e-6, tr("hint.lab4.valid_w"));
+             const std::string names[] = {tr("what.lab4.up_parallel"), tr("what.lab4.position_is_target"),
+                                          tr("what.lab4.position_is_target_at", {{"position", show(p)}}),
+                                          tr("what.lab4.up_parallel_from", {{"position", show(p)}})};
              for (std::size_t k = 1; k < out.size(); ++k)
-                 judge.expectTrue(
-                     names[k - 1], out[k][0] == 1., "std::invalid_argument naming the parameter", "a camera was built",
-                     "keep the given checkLookAtParameters(position, target, up) call at the top of the constructor");
+                 judge.expectTrue(names[k - 1], out[k][0] == 1., tr("what.lab4.refused"), tr("what.lab4.built"),
+                                  tr("hint.lab4.refuse"));
          }});
 }
 

@@ -3,6 +3,8 @@
 // handout's pixels and on pixels, counts and seeds drawn at grading time.
 #include "grader/checks/checks.h"
 
+#include "raylab/messages.h"
+
 #include <set>
 #include <utility>
 
@@ -20,8 +22,7 @@ struct Pixel {
                 {double(width), double(height), double(i), double(j), double(samples), double(seed)}};
     }
     std::string name() const {
-        return "pixel (" + std::to_string(i) + ", " + std::to_string(j) + ") with " + std::to_string(samples) +
-               " samples";
+        return tr("what.lab5.pixel", {{"i", std::to_string(i)}, {"j", std::to_string(j)}, {"samples", std::to_string(samples)}});
     }
 };
 
@@ -42,21 +43,20 @@ struct Rendered {
 
 void judgePixel(Judge& judge, const Pixel& p, const Rendered& r) {
     const std::string what = p.name();
-    if (!judge.expectTrue(what + ": rays traced", r.points.size() == std::size_t(p.samples), std::to_string(p.samples),
-                          std::to_string(r.points.size()), "trace exactly one ray per sample"))
+    if (!judge.expectTrue(tr("what.lab5.rays_traced", {{"pixel", what}}), r.points.size() == std::size_t(p.samples),
+                          std::to_string(p.samples), std::to_string(r.points.size()), tr("hint.lab5.one_ray")))
         return;
     glm::dvec3 mean(0.);
     for (const auto& [sx, sy] : r.points)
         mean += glm::dvec3(sx, sy, 1.);
     mean /= double(p.samples);
-    judge.expectNear(what + ": the colour", r.colour, mean, 1e-5,
-                     "return the sum of the samples divided by the number of samples (blue is 1 for every sample)");
+    judge.expectNear(tr("what.lab5.colour", {{"pixel", what}}), r.colour, mean, 1e-5, tr("hint.lab5.average"));
     bool inside = true;
     for (const auto& [sx, sy] : r.points)
         inside = inside && sx >= double(p.i) / p.width && sx <= double(p.i + 1) / p.width &&
                  sy >= double(p.j) / p.height && sy <= double(p.j + 1) / p.height;
-    judge.expectTrue(what + ": screen points", inside, "every (sx, sy) inside the pixel", "a point outside it",
-                     "sx = (i + offset.x) / W, sy = (j + offset.y) / H");
+    judge.expectTrue(tr("what.lab5.screen_points", {{"pixel", what}}), inside, tr("what.lab5.inside"),
+                     tr("what.lab5.outside"), tr("hint.lab5.screen_point"));
 }
 
 } // namespace
@@ -71,14 +71,14 @@ void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                        {Probe::SetSamples, {-3.}}},
                       [drawnCount](const auto& out, Judge& judge) {
                           for (const auto& [k, n] : {std::pair{0, 9}, std::pair{1, drawnCount}})
-                              judge.expectTrue("nbPixelSamples() after setNbPixelSamples(" + std::to_string(n) + ")",
+                              judge.expectTrue(tr("what.lab5.stored", {{"n", std::to_string(n)}}),
                                                out[k][0] == 0. && out[k][1] == n, std::to_string(n),
                                                out[k][0] != 0. ? "std::invalid_argument" : show(out[k][1]),
-                                               "store the count in m_nbPixelSamples");
+                                               tr("hint.lab5.store"));
                           for (const auto& [k, n] : {std::pair{2, 0}, std::pair{3, -3}})
                               judge.expectTrue("setNbPixelSamples(" + std::to_string(n) + ")", out[k][0] == 1.,
-                                               "std::invalid_argument", "no exception",
-                                               "fewer than 1 sample has no meaning: throw std::invalid_argument");
+                                               "std::invalid_argument", tr("what.lab5.no_exception"),
+                                               tr("hint.lab5.refuse"));
                       }});
 
     std::vector<Pixel> pixels{{8, 4, 3, 2, 1, 7}, {8, 4, 3, 2, 5, 7}, {8, 4, 3, 2, 16, 7}};
@@ -104,11 +104,11 @@ void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                           for (std::size_t k = 0; k < distinct.size(); ++k) {
                               const Rendered r(out[k]);
                               const std::set<std::pair<double, double>> points(r.points.begin(), r.points.end());
-                              judge.expectTrue("distinct screen points among " + std::to_string(distinct[k].samples) +
-                                                   " samples of " + distinct[k].name(),
+                              judge.expectTrue(tr("what.lab5.distinct", {{"samples", std::to_string(distinct[k].samples)},
+                                                                         {"pixel", distinct[k].name()}}),
                                                points.size() == std::size_t(distinct[k].samples),
                                                std::to_string(distinct[k].samples), std::to_string(points.size()),
-                                               "call sampler.next2D() once per sample, inside the loop");
+                                               tr("hint.lab5.next2d"));
                           }
                       }});
 }

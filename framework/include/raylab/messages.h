@@ -1,0 +1,41 @@
+#pragma once
+// What the student reads, in their language: one catalogue per language (framework/messages/en.toml
+// and fr.toml, embedded at build time), message ids with named placeholders, and numbers written the
+// language's way (French: decimal comma, a no-break space before ":" ";" "?" "!").
+
+#include <vector>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace raylab {
+
+enum class Language { En, Fr };
+
+// The language messages are written in: from the environment until setLanguage is called.
+Language language();
+void setLanguage(Language language);
+// "en" or "fr"; nullopt for anything else.
+std::optional<Language> parseLanguage(std::string_view name);
+// LC_ALL, else LC_MESSAGES, else LANG, the first one set: fr_* (or "fr") gives French, anything else English.
+Language languageFromEnvironment();
+const char* languageCode(Language language); // "en", "fr"
+
+using MessageArgs = std::vector<std::pair<std::string_view, std::string>>;
+
+// The message `id` in the current language, each {name} replaced by its argument. An unknown id or
+// placeholder is a programming error: std::logic_error.
+std::string tr(std::string_view id, MessageArgs args = {});
+std::string tr(Language language, std::string_view id, MessageArgs args = {});
+
+// A language's whole catalogue: id -> text (for the tests).
+const std::map<std::string, std::string>& messageCatalogue(Language language);
+
+// A number in `significant` digits, shortest form ("%g"), with the language's decimal separator.
+std::string formatNumber(double value, int significant = 4);
+// A number with `decimals` decimals ("%.3f"), "+" before a positive one when `sign`.
+std::string formatFixed(double value, int decimals, bool sign = false);
+
+} // namespace raylab

@@ -1,0 +1,124 @@
+#include "raylab/messages.h"
+
+#include <toml++/toml.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace raylab {
+
+// The catalogues' text, generated from framework/messages/*.toml (framework/CMakeLists.txt).
+extern const char* const kMessagesEn;
+extern const char* const kMessagesFr;
+
+namespace {
+
+std::optional<Language>& chosenLanguage() {
+    static std::optional<Language> chosen;
+    return chosen;
+}
+
+void flatten(const toml::table& table, const std::string& prefix, std::map<std::string, std::string>& out) {
+    for (const auto& [key, node] : table) {
+        const std::string id = prefix + std::string(key.str());
+        if (const toml::table* inner = node.as_table()) flatten(*inner, id + ".", out);
+        else if (const auto* text = node.as_string()) out[id] = text->get();
+        else throw std::logic_error("message catalogue: " + id + " is neither a text nor a table");
+    }
+}
+
+std::map<std::string, std::string> parseCatalogue(const char* text, const char* name) {
+    std::map<std::string, std::string> out;
+    try {
+        flatten(toml::parse(text), "", out);
+    } catch (const toml::parse_error& e) {
+        throw std::logic_error(std::string("message catalogue ") + name + ": " + std::string(e.description()));
+    }
+    return out;
+}
+
+} // namespace
+
+Language language() { return chosenLanguage() ? *chosenLanguage() : languageFromEnvironment(); }
+
+void setLanguage(Language language) { chosenLanguage() = language; }
+
+std::optional<Language> parseLanguage(std::string_view name) {
+    if (name == "en") return Language::En;
+    if (name == "fr") return Language::Fr;
+    return std::nullopt;
+}
+
+Language languageFromEnvironment() {
+    for (const char* variable : {"LC_ALL", "LC_MESSAGES", "LANG"}) {
+        const char* value = std::getenv(variable);
+        if (value == nullptr || *value == '\0') continue;
+        const std::string_view v(value);
+        return v == "fr" || v.substr(0, 3) == "fr_" || v.substr(0, 3) == "fr." ? Language::Fr : Language::En;
+    }
+    return Language::En;
+}
+
+const char* languageCode(Language language) { return language == Language::Fr ? "fr" : "en"; }
+
+const std::map<std::string, std::string>& messageCatalogue(Language language) {
+    static const std::map<std::string, std::string> en = parseCatalogue(kMessagesEn, "en.toml");
+    static const std::map<std::string, std::string> fr = parseCatalogue(kMessagesFr, "fr.toml");
+    return language == Language::Fr ? fr : en;
+}
+
+std::string tr(Language language, std::string_view id, MessageArgs args) {
+    const auto& catalogue = messageCatalogue(language);
+    const auto found = catalogue.find(std::string(id));
+    if (found == catalogue.end()) throw std::logic_error("no message " + std::string(id));
+    const std::string& text = found->second;
+    std::string out;
+    for (std::size_t k = 0; k < text.size();) {
+        const std::size_t open = text.find('{', k);
+        const std::size_t close = open == std::string::npos ? open : text.find('}', open);
+        if (close == std::string::npos) {
+            out += text.substr(k);
+            break;
+        }
+        out += text.substr(k, open - k);
+        const std::string_view name = std::string_view(text).substr(open + 1, close - open - 1);
+        bool replaced = false;
+        for (const auto& [key, value] : args)
+            if (key == name) {
+                out += value;
+                replaced = true;
+                break;
+            }
+        if (!replaced) throw std::logic_error("message " + std::string(id) + ": no value for {" + std::string(name) + "}");
+        k = close + 1;
+    }
+    return out;
+}
+
+std::string tr(std::string_view id, MessageArgs args) { return tr(language(), id, args); }
+
+namespace {
+
+std::string withDecimalSeparator(std::string number) {
+    if (language() == Language::Fr)
+        for (char& c : number)
+            if (c == '.') c = ',';
+    return number;
+}
+
+} // namespace
+
+std::string formatNumber(double value, int significant) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*g", significant, value);
+    return withDecimalSeparator(text);
+}
+
+std::string formatFixed(double value, int decimals, bool sign) {
+    char text[48];
+    std::snprintf(text, sizeof text, sign ? "%+.*f" : "%.*f", decimals, value);
+    return withDecimalSeparator(text);
+}
+
+} // namespace raylab

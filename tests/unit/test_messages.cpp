@@ -1,0 +1,151 @@
+// The message catalogues (framework/messages/en.toml, fr.toml): the same ids and placeholders in
+// both languages, French typography, numbers written each language's way, the language chosen from
+// the environment.
+#include "grader/checks/checks.h"
+#include "raylab/messages.h"
+
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+using namespace raylab;
+
+namespace {
+
+constexpr std::string_view kCheckTitles = "check_title."; // French only: English shows the check's name
+
+std::set<std::string> placeholders(const std::string& text) {
+    std::set<std::string> names;
+    for (std::size_t open = text.find('{'); open != std::string::npos; open = text.find('{', open + 1))
+        names.insert(text.substr(open + 1, text.find('}', open) - open - 1));
+    return names;
+}
+
+// Sets the environment variables the language is read from, restoring them when it goes.
+struct Environment {
+    explicit Environment(const char* lcAll, const char* lcMessages, const char* lang) {
+        set("LC_ALL", lcAll);
+        set("LC_MESSAGES", lcMessages);
+        set("LANG", lang);
+    }
+    ~Environment() {
+        for (const auto& [name, value] : saved) set(name.c_str(), value ? value->c_str() : nullptr);
+    }
+    void set(const char* name, const char* value) {
+        if (saved.count(name) == 0) {
+            const char* old = std::getenv(name);
+            saved[name] = old ? std::optional<std::string>(old) : std::nullopt;
+        }
+        if (value) ::setenv(name, value, 1);
+        else ::unsetenv(name);
+    }
+    std::map<std::string, std::optional<std::string>> saved;
+};
+
+// Restores the language chosen before the test.
+struct LanguageScope {
+    explicit LanguageScope(Language language) : previous(raylab::language()) { setLanguage(language); }
+    ~LanguageScope() { setLanguage(previous); }
+    Language previous;
+};
+
+} // namespace
+
+TEST_SUITE("messages") {
+    TEST_CASE("every message id has both languages, with the same placeholders") {
+        const auto& en = messageCatalogue(Language::En);
+        const auto& fr = messageCatalogue(Language::Fr);
+        CHECK(en.size() > 100);
+        for (const auto& [id, text] : en) {
+            CHECK_MESSAGE(id.rfind(kCheckTitles, 0) != 0, id);
+            const auto twin = fr.find(id);
+            if (twin == fr.end()) {
+                FAIL_CHECK("no French for " << id);
+                continue;
+            }
+            CHECK_MESSAGE(placeholders(text) == placeholders(twin->second), id);
+        }
+        for (const auto& [id, text] : fr)
+            if (id.rfind(kCheckTitles, 0) != 0) CHECK_MESSAGE(en.count(id) == 1, "no English for " << id);
+    }
+
+    TEST_CASE("every function check has a French title, and English shows its name") {
+        for (const grader::FunctionCheck& check : grader::functionChecks(1)) {
+            CHECK(messageCatalogue(Language::Fr).count(std::string(kCheckTitles) + check.name) == 1);
+            const LanguageScope english(Language::En);
+            CHECK(grader::checkTitle(check.name) == check.name);
+        }
+    }
+
+    TEST_CASE("French typography: a no-break space before : ; ? ! and %, and « » with no-break spaces") {
+        const std::string nbsp = "\u00A0", narrow = "\u202F";
+        for (const auto& [id, text] : messageCatalogue(Language::Fr)) {
+            for (std::size_t k = 0; k < text.size(); ++k) {
+                const char c = text[k];
+                const bool prose = (c == ':' || c == ';' || c == '?' || c == '!') &&
+                                   (k + 1 == text.size() || text[k + 1] == ' ' || text[k + 1] == ')');
+                if (!prose && c != '%') continue;
+                const bool spaced = (k >= 2 && text.compare(k - 2, 2, nbsp) == 0) ||
+                                    (k >= 3 && text.compare(k - 3, 3, narrow) == 0);
+                CHECK_MESSAGE(spaced, id << ": \"" << text << "\" at " << k);
+            }
+            CHECK_MESSAGE(text.find('\'' + std::string("{")) == std::string::npos, id << ": quotes are « »");
+            for (std::size_t open = text.find("«"); open != std::string::npos; open = text.find("«", open + 1))
+                CHECK_MESSAGE(text.compare(open + 2, 2, nbsp) == 0, id);
+        }
+    }
+
+    TEST_CASE("numbers: a decimal point in English, a decimal comma in French") {
+        {
+            const LanguageScope english(Language::En);
+            CHECK(formatNumber(0.005) == "0.005");
+            CHECK(formatFixed(-1.25, 3, true) == "-1.250");
+            CHECK(tr("number.vector", {{"x", "1"}, {"y", "2"}, {"z", "3"}}) == "(1, 2, 3)");
+        }
+        const LanguageScope french(Language::Fr);
+        CHECK(formatNumber(0.005) == "0,005");
+        CHECK(formatNumber(12.5) == "12,5");
+        CHECK(formatFixed(0.25, 3, true) == "+0,250");
+        CHECK(grader::show(glm::dvec3(0.5, 1., -2.)) == "(0,5\u00A0; 1\u00A0; -2)");
+        CHECK(tr("report.total", {{"score", formatNumber(7.5)}, {"max", "10"}}) == "total\u00A0: 7,5 / 10");
+    }
+
+    TEST_CASE("placeholders are filled; an unknown id or a missing value is a programming error") {
+        const LanguageScope english(Language::En);
+        CHECK(tr("report.lab", {{"lab", "3"}}) == "lab 3");
+        CHECK(tr(Language::Fr, "report.lab", {{"lab", "3"}}) == "TP 3");
+        CHECK_THROWS_AS(tr("no.such.message"), std::logic_error);
+        CHECK_THROWS_AS(tr("report.lab"), std::logic_error);
+    }
+
+    TEST_CASE("the language comes from LC_ALL, then LC_MESSAGES, then LANG: fr_* gives French") {
+        {
+            const Environment e(nullptr, nullptr, "fr_FR.UTF-8");
+            CHECK(languageFromEnvironment() == Language::Fr);
+        }
+        {
+            const Environment e(nullptr, nullptr, "en_GB.UTF-8");
+            CHECK(languageFromEnvironment() == Language::En);
+        }
+        {
+            const Environment e("C", nullptr, "fr_FR.UTF-8");
+            CHECK(languageFromEnvironment() == Language::En);
+        }
+        {
+            const Environment e("", "fr_CA.UTF-8", "en_US.UTF-8");
+            CHECK(languageFromEnvironment() == Language::Fr);
+        }
+        {
+            const Environment e(nullptr, nullptr, nullptr);
+            CHECK(languageFromEnvironment() == Language::En);
+        }
+        CHECK(parseLanguage("fr") == Language::Fr);
+        CHECK(parseLanguage("en") == Language::En);
+        CHECK_FALSE(parseLanguage("de"));
+    }
+}
