@@ -3,13 +3,13 @@
 # install elsewhere. Safe to run again: it installs only what is missing.
 set -euo pipefail
 
-packages=(cmake g++ make pkg-config libglm-dev libstb-dev doctest-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev)
+packages=(cmake g++ make pkg-config libglm-dev libstb-dev doctest-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libcmark-dev)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   cat <<'TXT'
 setup.sh installs packages on Debian and Ubuntu only. Elsewhere, install:
-  macOS (Homebrew): brew install cmake glm stb doctest tomlplusplus cli11
-  Windows (vcpkg):  vcpkg install glm stb doctest tomlplusplus cli11
+  macOS (Homebrew): brew install cmake glm stb doctest tomlplusplus cli11 cmark
+  Windows (vcpkg):  vcpkg install glm stb doctest tomlplusplus cli11 cmark
 then run the cmake commands of README.md.
 TXT
   exit 0
