@@ -27,7 +27,8 @@ std::string markdownText(const std::string& text) {
     return out;
 }
 
-std::string bold(const std::string& label, const Words& w) { return "**" + label + w.colon + "**"; }
+// "**Name**: " ("**Nom** : " in French): the colon outside, where CommonMark lets the bold close.
+std::string bold(const std::string& label, const Words& w) { return "**" + label + "**" + w.colon; }
 
 // The points of the function checks and of the figures, of one lab (0: every lab).
 std::string pointsDetail(const grader::GradeResult& grade, int lab, const Words& w) {
@@ -139,7 +140,7 @@ std::string comparisonMarkdown(const KitContent& c) {
     }
     text += pictures + "\n\n" + costs + "\n" + closeUps + "\n\n";
     const KitFigure* aliased = findFigure(c, kAliasedFigure);
-    text += fill(w.closeUp, {w.colon, std::to_string(z.x), std::to_string(z.x + z.width - 1), std::to_string(z.y),
+    text += fill(w.closeUp, {std::to_string(z.x), std::to_string(z.x + z.width - 1), std::to_string(z.y),
                              std::to_string(z.y + z.height - 1), std::to_string(aliased ? aliased->width : 0),
                              std::to_string(aliased ? aliased->height : 0), std::to_string(z.zoom)}) +
             "\n";

@@ -38,7 +38,7 @@ constexpr Words kEnglish{
     "aliased (figure 3(c))",
     "antialiased (figure 6)",
     "%s: %s samples per pixel, %s rays, %s",
-    "Close-up%s pixels x %s to %s, y %s to %s of the %s x %s picture, each enlarged %s times.",
+    "Close-up: pixels x %s to %s, y %s to %s of the %s x %s picture, each enlarged %s times.",
     "Kept from the previous version",
     "Text from the previous report.md that `raylab report` could not place (outside the `raylab:student` "
     "markers, or under a marker it no longer writes). Nothing is dropped: move it where it belongs.",
@@ -84,7 +84,7 @@ constexpr Words kFrench{
     "sans anticrénelage (figure 3(c))",
     "avec anticrénelage (figure 6)",
     "%s" NBSP ": %s échantillons par pixel, %s rayons, %s",
-    "Gros plan%s pixels x %s à %s, y %s à %s de l'image de %s x %s, chaque pixel agrandi %s fois.",
+    "Gros plan" NBSP ": pixels x %s à %s, y %s à %s de l'image de %s x %s, chaque pixel agrandi %s fois.",
     "Conservé de la version précédente",
     "Texte du report.md précédent que `raylab report` n'a pas su placer (hors des marqueurs "
     "`raylab:student`, ou sous un marqueur qu'il n'écrit plus). Rien n'est perdu" NBSP ": déplacez-le où il faut.",

@@ -31,7 +31,7 @@ struct Words {
     const char* aliased;
     const char* antialiased;
     const char* cost; // "%s: %s samples per pixel, %s rays, %s"
-    const char* closeUp; // "%s: pixels x %d to %d, y %d to %d of the %d x %d picture, each enlarged %d times"
+    const char* closeUp; // "Close-up: pixels x %s to %s, y %s to %s of the %s x %s picture, each enlarged %s times."
     const char* kept;
     const char* keptIntro;
     const char* keptFrom; // "From the section %s:"

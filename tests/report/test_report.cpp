@@ -51,7 +51,7 @@ fs::path kitFolder(const std::string& name, bool fresh = true) {
 }
 
 // Runs `PROGRAM report --out DIR ARGS` (the kit is also where the browser test looks).
-fs::path makeKit(const char* name, const fs::path& dir, const std::string& args = "") {
+fs::path runKit(const char* name, const fs::path& dir, const std::string& args = "") {
     const int status = run(program(name) + " report --threads 2 --out \"" + dir.string() + "\" " + args, dir);
     REQUIRE_MESSAGE(status == 0, read(dir / "output.txt"));
     REQUIRE(fs::exists(dir / "report.md"));
@@ -59,8 +59,9 @@ fs::path makeKit(const char* name, const fs::path& dir, const std::string& args 
     return dir;
 }
 
+// The same in a new folder.
 fs::path makeKit(const char* name, const std::string& kit, const std::string& args = "") {
-    return makeKit(name, kitFolder(kit), args);
+    return runKit(name, kitFolder(kit), args);
 }
 
 // Every image the page names, by the pattern of its links.
@@ -159,14 +160,14 @@ TEST_CASE("the grade block's total is `raylab grade`'s: the reference agent, and
                     (graded / "report").string() + "\"",
                 graded) == 0);
     const std::string total = gradeTotal(read(graded / "output.txt"));
-    CHECK(read(reference / "report.md").find("**Total grade:** **" + total + "** (") != std::string::npos);
+    CHECK(read(reference / "report.md").find("**Total grade**: **" + total + "** (") != std::string::npos);
     CHECK(gradeTotal(read(reference / "output.txt")) == total);
 
     const fs::path student = makeKit("raylab", "student");
     const fs::path stubs = kitFolder("grade-student");
     run(program("raylab") + " grade --threads 2 --report \"" + (stubs / "report").string() + "\"", stubs);
     const std::string stubTotal = gradeTotal(read(stubs / "output.txt"));
-    CHECK(read(student / "report.md").find("**Total grade:** **" + stubTotal + "** (") != std::string::npos);
+    CHECK(read(student / "report.md").find("**Total grade**: **" + stubTotal + "** (") != std::string::npos);
 }
 
 TEST_CASE("the student build's kit (stubs): each lab not done yet, the references still shown") {
@@ -209,7 +210,7 @@ TEST_CASE("a re-run keeps the student's text: in place, rendered in the HTML, es
     md += "\nA conclusion written after every marker.\n";
     write(dir / "report.md", md);
 
-    makeKit("raylab", dir);
+    runKit("raylab", dir);
     const std::string again = read(dir / "report.md"), html = read(dir / "report.html");
     CHECK(again.find("<!-- raylab:student lab2 -->\nLab 2: the camera *looks* down **-z**") != std::string::npos);
     CHECK(again.find("&amp; the sphere.") == std::string::npos);
@@ -230,9 +231,9 @@ TEST_CASE("the title block comes from report.toml: created with placeholders, th
     CHECK(read(dir / "report.toml").find("name = \"Your name\"") != std::string::npos);
     CHECK(read(dir / "output.txt").find("note: fill in") != std::string::npos);
     write(dir / "report.toml", "name = \"Ada Lovelace\"\ngroup = \"B2\"\ncourse = \"Rendering 101\"\ndate = \"2026-11-23\"\n");
-    makeKit("raylab", dir);
+    runKit("raylab", dir);
     const std::string md = read(dir / "report.md");
-    CHECK(md.find("- **Name:** Ada Lovelace\n- **Group:** B2\n- **Course:** Rendering 101\n- **Date:** 2026\\-11\\-23\n") !=
+    CHECK(md.find("- **Name**: Ada Lovelace\n- **Group**: B2\n- **Course**: Rendering 101\n- **Date**: 2026\\-11\\-23\n") !=
           std::string::npos);
     CHECK(read(dir / "report.html").find("Ada Lovelace") != std::string::npos);
     CHECK(read(dir / "output.txt").find("note: fill in") == std::string::npos);
@@ -252,7 +253,7 @@ TEST_CASE("--pdf: a PDF with chromium, a clear message without") {
         MESSAGE("skipped: chromium is not installed, so no PDF is printed (Debian: apt-get install chromium)");
         return;
     }
-    makeKit("raylab", dir, "--pdf");
+    runKit("raylab", dir, "--pdf");
     CHECK(read(dir / "report.pdf").rfind("%PDF", 0) == 0);
     CHECK(fs::file_size(dir / "report.pdf") > 10000);
 }
@@ -265,7 +266,7 @@ TEST_CASE("--lang fr: French headings and typography") {
     CHECK(md.find("### Votre texte (TP 2)") != std::string::npos);
     CHECK(md.find("Figure 3(c) (lab3_cosine)") != std::string::npos);
     CHECK(std::regex_search(md, std::regex("temps de rendu\u00A0: [0-9]+,[0-9]{3} s")));
-    CHECK(md.find("- **Nom\u00A0:** Votre nom") != std::string::npos);
+    CHECK(md.find("- **Nom**\u00A0: Votre nom") != std::string::npos);
     CHECK(md.find("sombre\u00A0: dans la tolérance") != std::string::npos);
 }
 
