@@ -100,6 +100,7 @@ void compareFigures(std::vector<KitFigure>& figures, const std::map<std::string,
         const auto image = images.find(f.id);
         if (reference == nullptr || image == images.end()) continue;
         f.statistical = reference->stats.has_value();
+        if (f.statistical) f.outlierZ = reference->stats->outlierZ;
         writePng(out / "diff" / (f.id + ".png"), differenceMap(image->second, *reference, compareImage(*reference, image->second)));
         f.hasDifference = true;
     }

@@ -63,7 +63,10 @@ Segment titleSegment(const KitContent& c) {
 // The one-line reading of a difference map, with its scale.
 std::string differenceReading(const KitFigure& f, const Words& w) {
     std::string line = fill(w.scaleReading, {"![scale](diff/scale.png)", std::to_string(kScaleFullLsb)});
-    if (f.statistical) line += " " + fill(w.statisticalReading, {"6"});
+    if (f.statistical) {
+        line += ' ';
+        line += fill(w.statisticalReading, {number(f.outlierZ, -1, w)});
+    }
     return line + "\n\n";
 }
 

@@ -23,6 +23,7 @@ struct KitFigure {
     RenderStats stats;
     int width = 0, height = 0;
     bool hasReference = false, hasDifference = false, statistical = false;
+    double outlierZ = 0.; // statistical: the grader's tolerance, in standard deviations of the noise
     const grader::FigureOutcome* grade = nullptr; // null when the grader has no such figure
 };
 

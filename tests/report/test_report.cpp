@@ -35,7 +35,11 @@ std::string read(const fs::path& file) {
 
 void write(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
-std::string program(const char* name) { return "\"" + (fs::path(RAYLAB_BIN_DIR) / name).string() + "\""; }
+std::string program(const char* name) {
+    std::string quoted(1, '"');
+    quoted += (fs::path(RAYLAB_BIN_DIR) / name).string();
+    return quoted + '"';
+}
 
 // Runs `PROGRAM ARGS` (its output in DIR/output.txt); returns its exit status.
 int run(const std::string& commandLine, const fs::path& dir) {
