@@ -1,6 +1,8 @@
 #include "report/pdf.h"
 
 #include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <fcntl.h>
 #include <fstream>
@@ -8,6 +10,7 @@
 #include <spawn.h>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -20,8 +23,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Runs `args` (args[0] the program), its output to /dev/null, and returns its exit status. An
-// argument vector, no shell: a path with spaces or quotes stays one argument.
+// Runs `args` (args[0] the program), its output to /dev/null, for two minutes at most, and returns
+// its exit status. An argument vector, no shell: a path with spaces or quotes stays one argument.
 int runQuietly(const std::vector<std::string>& args) {
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
@@ -35,8 +38,13 @@ int runQuietly(const std::vector<std::string>& args) {
     posix_spawn_file_actions_destroy(&actions);
     if (error != 0) throw std::runtime_error("cannot run " + args[0]);
     int status = 0;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) throw std::runtime_error("lost " + args[0] + " while it ran");
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    for (pid_t done = 0; done != pid;) { // a browser that hangs is stopped, not waited for
+        done = waitpid(pid, &status, WNOHANG);
+        if (done < 0 && errno != EINTR) throw std::runtime_error("lost " + args[0] + " while it ran");
+        if (done == 0 && std::chrono::steady_clock::now() > deadline) kill(pid, SIGKILL);
+        if (done == 0) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 

@@ -52,7 +52,8 @@ void prepareFolders(const fs::path& out) {
 }
 
 // This build's figures into OUT/figures, in the handout's order (the figures it does not number last).
-std::vector<KitFigure> renderFigures(const ReportRequest& request, const LabCatalog& labs, std::map<std::string, Image8>& images) {
+std::vector<KitFigure> renderFigures(const ReportRequest& request, const LabCatalog& labs, std::map<std::string, Image8>& images,
+                                     const Words& words) {
     std::map<std::string, std::size_t> handoutOrder;
     for (const LabDescription& lab : labs.labs)
         for (const LabFigure& f : lab.figures) handoutOrder.emplace(f.id, handoutOrder.size());
@@ -65,7 +66,7 @@ std::vector<KitFigure> renderFigures(const ReportRequest& request, const LabCata
             images[d.id] = quantize(*r.image);
             writePng(request.out / "figures" / (d.id + ".png"), images[d.id]);
         }
-        std::printf("  %-24s %s\n", d.id.c_str(), f.rendered ? (std::to_string(f.stats.seconds) + " s").c_str() : f.message.c_str());
+        std::printf("  %-24s %s\n", d.id.c_str(), f.rendered ? seconds(f.stats.seconds, words).c_str() : f.message.c_str());
         figures.push_back(std::move(f));
     }
     const auto order = [&](const KitFigure& f) {
@@ -188,7 +189,7 @@ int writeReportKit(const ReportRequest& request) {
     GradeSetup setup = loadGradeSetup(request.references, request.labs, request.scenes, scratch);
     setup.threads = request.threads;
     std::map<std::string, Image8> images;
-    std::vector<KitFigure> figures = renderFigures(request, setup.labs, images);
+    std::vector<KitFigure> figures = renderFigures(request, setup.labs, images, words);
     const GradeResult result = gradeCodeOfThisBuild(request, setup);
     writeReports(result, setup.references, out / "grade");
     fs::remove_all(scratch);
