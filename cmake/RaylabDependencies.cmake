@@ -17,6 +17,23 @@ if(NOT TARGET tomlplusplus::tomlplusplus)
   raylab_missing("toml++ (scene files)" libtomlplusplus-dev tomlplusplus tomlplusplus)
 endif()
 
+# cmark (the report's Markdown to HTML): pkg-config first, since Debian's libcmark-dev ships a CMake
+# package that also wants the cmark program; elsewhere its CMake package.
+find_package(PkgConfig QUIET)
+if(PkgConfig_FOUND)
+  pkg_check_modules(CMARK QUIET IMPORTED_TARGET libcmark)
+endif()
+add_library(raylab_cmark INTERFACE)
+if(CMARK_FOUND)
+  target_link_libraries(raylab_cmark INTERFACE PkgConfig::CMARK)
+else()
+  find_package(cmark CONFIG QUIET)
+  if(NOT TARGET cmark::cmark)
+    raylab_missing("cmark (the report's Markdown)" libcmark-dev cmark cmark)
+  endif()
+  target_link_libraries(raylab_cmark INTERFACE cmark::cmark)
+endif()
+
 find_package(CLI11 CONFIG QUIET)
 if(NOT TARGET CLI11::CLI11)
   raylab_missing("CLI11 (command line)" libcli11-dev cli11 cli11)

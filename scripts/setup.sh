@@ -4,15 +4,15 @@
 set -euo pipefail
 
 packages=(cmake g++ make pkg-config libglm-dev libstb-dev zlib1g-dev doctest-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-          libzip-dev libyaml-cpp-dev) # libyaml-cpp-dev: the autograder's tests only
+          libzip-dev libcmark-dev libyaml-cpp-dev) # libyaml-cpp-dev: the autograder's tests only
 # The grader's sandbox on Linux (docs/grading.md); raylab builds and grades without it.
 optional=(bubblewrap)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   cat <<'TXT'
 setup.sh installs packages on Debian and Ubuntu only. Elsewhere, install:
-  macOS (Homebrew): brew install cmake glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip yaml-cpp
-  Windows (vcpkg):  vcpkg install glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip yaml-cpp
+  macOS (Homebrew): brew install cmake glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip cmark yaml-cpp
+  Windows (vcpkg):  vcpkg install glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip cmark yaml-cpp
 then run the cmake commands of README.md.
 TXT
   exit 0

@@ -1,10 +1,12 @@
 // raylab report, as a student runs it: the reference build's kit has every figure, its handout
-// number, the pictures it shows and an empty section per lab; the student build (stubs) reports
-// each lab as not done yet.
-#include "support/run_program.h"
-
+// number, its pictures and maps with their scale, the grade of the code (the same total as `raylab
+// grade`); the student build (stubs) reports each lab as not done yet; a re-run keeps the student's
+// text; the title block comes from report.toml; --pdf prints a PDF with chromium.
 #include <doctest/doctest.h>
 
+#include "raylab/image_io.h"
+
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -31,18 +33,39 @@ std::string read(const fs::path& file) {
     return text.str();
 }
 
-// Runs `PROGRAM report --out DIR ARGS` (the kit is also where the browser test looks).
-fs::path makeKit(const char* program, const std::string& name, const std::vector<std::string>& args = {}) {
+void write(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
+
+std::string program(const char* name) {
+    std::string quoted(1, '"');
+    quoted += (fs::path(RAYLAB_BIN_DIR) / name).string();
+    return quoted + '"';
+}
+
+// Runs `PROGRAM ARGS` (its output in DIR/output.txt); returns its exit status.
+int run(const std::string& commandLine, const fs::path& dir) {
+    const int status = std::system((commandLine + " > \"" + (dir / "output.txt").string() + "\" 2>&1").c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+fs::path kitFolder(const std::string& name, bool fresh = true) {
     const fs::path dir = fs::path(RAYLAB_REPORT_TEST_DIR) / name;
-    fs::remove_all(dir);
+    if (fresh) fs::remove_all(dir);
     fs::create_directories(dir);
-    std::vector<std::string> argv{(fs::path(RAYLAB_BIN_DIR) / program).string(), "report", "--threads", "2", "--out", dir.string()};
-    argv.insert(argv.end(), args.begin(), args.end());
-    const raylab::test::ProgramRun run = raylab::test::runProgram(argv, dir / "output.txt");
-    REQUIRE_MESSAGE(run.status == 0, run.output);
+    return dir;
+}
+
+// Runs `PROGRAM report --out DIR ARGS` (the kit is also where the browser test looks).
+fs::path runKit(const char* name, const fs::path& dir, const std::string& args = "") {
+    const int status = run(program(name) + " report --threads 2 --out \"" + dir.string() + "\" " + args, dir);
+    REQUIRE_MESSAGE(status == 0, read(dir / "output.txt"));
     REQUIRE(fs::exists(dir / "report.md"));
     REQUIRE(fs::exists(dir / "report.html"));
     return dir;
+}
+
+// The same in a new folder.
+fs::path makeKit(const char* name, const std::string& kit, const std::string& args = "") {
+    return runKit(name, kitFolder(kit), args);
 }
 
 // Every image the page names, by the pattern of its links.
@@ -57,7 +80,7 @@ void checkImagesExist(const fs::path& dir, const std::string& md, const std::str
     const auto mdImages = images(md, std::regex(R"re(!\[[^\]]*\]\(([^)]+)\))re"));
     const auto htmlImages = images(html, std::regex(R"re(<img[^>]* src="([^"]+)")re"));
     CHECK(!mdImages.empty());
-    CHECK(!htmlImages.empty());
+    CHECK(mdImages.size() == htmlImages.size());
     for (const std::vector<std::string>* list : {&mdImages, &htmlImages})
         for (const std::string& src : *list) {
             CHECK_MESSAGE(fs::is_regular_file(dir / src), src);
@@ -66,37 +89,89 @@ void checkImagesExist(const fs::path& dir, const std::string& md, const std::str
         }
 }
 
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+// "total: X / Y" as `raylab grade` prints it.
+std::string gradeTotal(const std::string& output) {
+    std::smatch m;
+    REQUIRE_MESSAGE(std::regex_search(output, m, std::regex(R"(total: ([0-9.]+ / [0-9.]+))")), output);
+    return m[1];
+}
+
 } // namespace
 
 TEST_SUITE("report") {
 
-TEST_CASE("the reference build's kit: every figure, its number, its pictures, an empty section per lab") {
+TEST_CASE("the reference build's kit: every figure, its number, its pictures and maps, a section per lab") {
     const fs::path dir = makeKit("raylab-reference", "reference");
     const std::string md = read(dir / "report.md"), html = read(dir / "report.html");
     for (const auto& [id, number] : kFigures) {
-        CHECK_MESSAGE(md.find(id) != std::string::npos, id);
         CHECK_MESSAGE(html.find(id) != std::string::npos, id);
         CHECK_MESSAGE(md.find(std::string(number) + (number[std::strlen(number) - 1] == ' ' ? "(" : " (") + id + ")") !=
                           std::string::npos,
                       number << " " << id);
         CHECK_MESSAGE(md.find("figures/" + std::string(id) + ".png") != std::string::npos, id);
-        CHECK_MESSAGE(md.find("grade/images/" + std::string(id) + ".diff.png") != std::string::npos, id);
+        CHECK_MESSAGE(md.find("diff/" + std::string(id) + ".png") != std::string::npos, id);
         CHECK_MESSAGE(html.find("grade/images/" + std::string(id) + ".reference.png") != std::string::npos, id);
         CHECK_MESSAGE(md.find("PASS  lab" + std::string(1, id[3]) + "  figure " + id + ":") != std::string::npos, id);
     }
     for (int lab = 1; lab <= 5; ++lab) {
         CHECK(md.find("## Lab " + std::to_string(lab) + ": ") != std::string::npos);
-        CHECK(md.find("### Your text (Lab " + std::to_string(lab) + ")\n\n<!-- raylab:your-text lab=" +
+        CHECK(md.find("### Your text (Lab " + std::to_string(lab) + ")\n<!-- raylab:end -->\n\n<!-- raylab:student lab" +
                       std::to_string(lab) + " -->") != std::string::npos);
         CHECK(html.find("id=\"your-text-lab" + std::to_string(lab) + "\"") != std::string::npos);
     }
+    // The grade holds the function checks as well as the figures.
+    CHECK(md.find("PASS  lab3  check ") != std::string::npos);
+    CHECK(md.find("FAIL  lab") == std::string::npos);
+    // Each difference map has its scale and its reading.
+    CHECK(count(md, "](diff/scale.png) dark: within tolerance") == std::size(kFigures));
+    CHECK(md.find("A noisy figure: a pixel is within tolerance") != std::string::npos);
+    // The antialiasing section: both renders' cost, the close-up's place and zoom.
     CHECK(md.find("Antialiasing: aliased against antialiased") != std::string::npos);
     CHECK(md.find("zoom/lab3_cosine.png") != std::string::npos);
     CHECK(md.find("zoom/lab5_antialiased.png") != std::string::npos);
+    CHECK(std::regex_search(md, std::regex(R"(aliased \(figure 3\(c\)\): 1 samples per pixel, [0-9]+ rays, [0-9.]+ s)")));
+    CHECK(std::regex_search(md, std::regex(R"(antialiased \(figure 6\): [0-9]+ samples per pixel, [0-9]+ rays, [0-9.]+ s)")));
+    CHECK(std::regex_search(md, std::regex(R"(Close-up: pixels x [0-9]+ to [0-9]+, y [0-9]+ to [0-9]+ of the [0-9]+ x [0-9]+ picture, each enlarged 10 times)")));
     CHECK(md.find("render time: ") != std::string::npos);
     CHECK(md.find("not done yet") == std::string::npos);
     CHECK(html.find("<pre id=\"image-check\" hidden>image check: not run</pre>") != std::string::npos);
     checkImagesExist(dir, md, html);
+}
+
+TEST_CASE("the difference map of a passing noisy render (lab 5) is dark: within tolerance") {
+    const fs::path dir = fs::path(RAYLAB_REPORT_TEST_DIR) / "reference";
+    REQUIRE(fs::exists(dir / "diff" / "lab5_antialiased.png"));
+    const raylab::Image8 map = raylab::readImage(dir / "diff" / "lab5_antialiased.png");
+    std::size_t dark = 0;
+    for (int j = 0; j < map.height; ++j)
+        for (int i = 0; i < map.width; ++i) {
+            const std::uint8_t* p = map.pixel(i, j);
+            if (p[0] == p[1] && p[1] == p[2] && p[0] <= 40) ++dark;
+        }
+    CHECK(double(dark) >= 0.999 * double(map.width) * double(map.height));
+}
+
+TEST_CASE("the grade block's total is `raylab grade`'s: the reference agent, and the student's stubs") {
+    const fs::path reference = fs::path(RAYLAB_REPORT_TEST_DIR) / "reference";
+    const fs::path graded = kitFolder("grade-reference");
+    REQUIRE(run(program("raylab") + " grade --threads 2 --agent " + program("raylab-agent-reference") + " --report \"" +
+                    (graded / "report").string() + "\"",
+                graded) == 0);
+    const std::string total = gradeTotal(read(graded / "output.txt"));
+    CHECK(read(reference / "report.md").find("**Total grade**: **" + total + "** (") != std::string::npos);
+    CHECK(gradeTotal(read(reference / "output.txt")) == total);
+
+    const fs::path student = makeKit("raylab", "student");
+    const fs::path stubs = kitFolder("grade-student");
+    run(program("raylab") + " grade --threads 2 --report \"" + (stubs / "report").string() + "\"", stubs);
+    const std::string stubTotal = gradeTotal(read(stubs / "output.txt"));
+    CHECK(read(student / "report.md").find("**Total grade**: **" + stubTotal + "** (") != std::string::npos);
 }
 
 TEST_CASE("the student build's kit (stubs): each lab not done yet, the references still shown") {
@@ -105,26 +180,98 @@ TEST_CASE("the student build's kit (stubs): each lab not done yet, the reference
     for (const auto& [id, number] : kFigures) {
         CHECK_MESSAGE(md.find(id) != std::string::npos, id);
         CHECK_MESSAGE(!fs::exists(dir / "figures" / (std::string(id) + ".png")), id);
-        CHECK_MESSAGE(md.find("FAIL  lab" + std::string(1, id[3]) + "  figure " + id + ": missing") != std::string::npos, id);
+        CHECK_MESSAGE(md.find("FAIL  lab" + std::string(1, id[3]) + "  figure " + id + ":") != std::string::npos, id);
     }
     for (int lab = 1; lab <= 5; ++lab) {
         const std::size_t begin = md.find("## Lab " + std::to_string(lab) + ": ");
         REQUIRE(begin != std::string::npos);
         const std::string section = md.substr(begin, md.find("\n## Lab ", begin + 1) - begin);
         CHECK_MESSAGE(section.find(" not done yet: write ") != std::string::npos, section);
-        CHECK(md.find("<!-- raylab:your-text lab=" + std::to_string(lab) + " -->") != std::string::npos);
+        CHECK(md.find("<!-- raylab:student lab" + std::to_string(lab) + " -->") != std::string::npos);
     }
     CHECK(html.find("not done yet") != std::string::npos);
     checkImagesExist(dir, md, html);
 }
 
-TEST_CASE("--lang fr: French headings") {
-    const fs::path dir = makeKit("raylab-reference", "french", {"--lang", "fr"});
+TEST_CASE("a re-run keeps the student's text: in place, rendered in the HTML, escaped; what it cannot place is kept") {
+    const fs::path dir = makeKit("raylab", "rerun");
+    std::string md = read(dir / "report.md");
+    const std::string placeholder = "*Write here what you did, what the figures show and what went wrong.*\n";
+    const auto writeIn = [&](int lab, const std::string& text) {
+        const std::string marker = "<!-- raylab:student lab" + std::to_string(lab) + " -->\n";
+        const std::size_t at = md.find(marker + placeholder);
+        REQUIRE(at != std::string::npos);
+        md.replace(at + marker.size(), placeholder.size(), text);
+    };
+    writeIn(2, "Lab 2: the camera *looks* down **-z**; see `generateRay`.\n\n- one\n- two\n");
+    writeIn(3, "<script>alert('lab 3')</script> & the sphere.\n");
+    // Lab 3's section moved to the top of the file.
+    const std::size_t lab3 = md.find("<!-- raylab:student lab3 -->");
+    const std::size_t lab3End = md.find("<!-- raylab:end -->", lab3) + std::strlen("<!-- raylab:end -->\n");
+    const std::string moved = md.substr(lab3, lab3End - lab3);
+    md.erase(lab3, lab3End - lab3);
+    md = moved + md;
+    md += "\nA conclusion written after every marker.\n";
+    write(dir / "report.md", md);
+
+    runKit("raylab", dir);
+    const std::string again = read(dir / "report.md"), html = read(dir / "report.html");
+    CHECK(again.find("<!-- raylab:student lab2 -->\nLab 2: the camera *looks* down **-z**") != std::string::npos);
+    CHECK(again.find("&amp; the sphere.") == std::string::npos);
+    CHECK(again.find("the sphere.") > again.find("## Lab 3: ")); // back under lab 3
+    CHECK(again.find("the sphere.") < again.find("## Lab 4: "));
+    CHECK(again.find("## Kept from the previous version") != std::string::npos);
+    CHECK(again.find("A conclusion written after every marker.") > again.find("<!-- raylab:student kept -->"));
+    CHECK(read(dir / "report.previous.md") == md);
+    // The HTML shows the student's Markdown, as HTML, and their markup as text.
+    CHECK(html.find("the camera <em>looks</em> down <strong>-z</strong>; see <code>generateRay</code>") != std::string::npos);
+    CHECK(html.find("<li>one</li>") != std::string::npos);
+    CHECK(html.find("<script>alert") == std::string::npos);
+    CHECK(html.find("A conclusion written after every marker.") != std::string::npos);
+}
+
+TEST_CASE("the title block comes from report.toml: created with placeholders, then the student's; errors name the line and key") {
+    const fs::path dir = makeKit("raylab", "title");
+    CHECK(read(dir / "report.toml").find("name = \"Your name\"") != std::string::npos);
+    CHECK(read(dir / "output.txt").find("note: fill in") != std::string::npos);
+    write(dir / "report.toml", "name = \"Ada Lovelace\"\ngroup = \"B2\"\ncourse = \"Rendering 101\"\ndate = \"2026-11-23\"\n");
+    runKit("raylab", dir);
+    const std::string md = read(dir / "report.md");
+    CHECK(md.find("- **Name**: Ada Lovelace\n- **Group**: B2\n- **Course**: Rendering 101\n- **Date**: 2026\\-11\\-23\n") !=
+          std::string::npos);
+    CHECK(read(dir / "report.html").find("Ada Lovelace") != std::string::npos);
+    CHECK(read(dir / "output.txt").find("note: fill in") == std::string::npos);
+
+    write(dir / "report.toml", "name = \"Ada Lovelace\"\ngroup = 2\n");
+    CHECK(run(program("raylab") + " report --out \"" + dir.string() + "\"", dir) != 0);
+    const std::string error = read(dir / "output.txt");
+    CHECK_MESSAGE(error.find("report.toml:2: group: must be a string") != std::string::npos, error);
+}
+
+TEST_CASE("--pdf: a PDF with chromium, a clear message without") {
+    const fs::path dir = kitFolder("pdf");
+    CHECK(run("PATH=/nonexistent " + program("raylab") + " report --threads 2 --pdf --out \"" + dir.string() + "\"", dir) == 1);
+    CHECK(read(dir / "output.txt").find("--pdf prints with chromium, which is not installed") != std::string::npos);
+    CHECK(!fs::exists(dir / "report.pdf"));
+    if (!fs::exists("/usr/bin/chromium") && !fs::exists("/usr/bin/chromium-browser")) {
+        MESSAGE("skipped: chromium is not installed, so no PDF is printed (Debian: apt-get install chromium)");
+        return;
+    }
+    runKit("raylab", dir, "--pdf");
+    CHECK(read(dir / "report.pdf").rfind("%PDF", 0) == 0);
+    CHECK(fs::file_size(dir / "report.pdf") > 10000);
+}
+
+TEST_CASE("--lang fr: French headings and typography") {
+    const fs::path dir = makeKit("raylab-reference", "french", "--lang fr");
     const std::string md = read(dir / "report.md");
     CHECK(md.find("# Compte rendu de TP") != std::string::npos);
-    CHECK(md.find("## TP 3 : Une sphère") != std::string::npos);
+    CHECK(md.find("## TP 3\u00A0: Une sphère") != std::string::npos);
     CHECK(md.find("### Votre texte (TP 2)") != std::string::npos);
     CHECK(md.find("Figure 3(c) (lab3_cosine)") != std::string::npos);
+    CHECK(std::regex_search(md, std::regex("temps de rendu\u00A0: [0-9]+,[0-9]{3} s")));
+    CHECK(md.find("- **Nom**\u00A0: Votre nom") != std::string::npos);
+    CHECK(md.find("sombre\u00A0: dans la tolérance") != std::string::npos);
 }
 
 }

@@ -1,0 +1,207 @@
+#include "report/report_kit.h"
+
+#include "grader/grade.h"
+#include "grader/report.h"
+#include "grader/submission.h"
+#include "raylab/figure.h"
+#include "raylab/image_io.h"
+#include "report/difference_map.h"
+#include "report/pdf.h"
+#include "report/report_pages.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+namespace raylab::report {
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace raylab::grader;
+
+// A whole file or none: written beside, then renamed over the old one.
+void writeFileAtomically(const fs::path& file, const std::string& content) {
+    const fs::path partial = file.string() + ".partial";
+    {
+        std::ofstream out(partial, std::ios::binary);
+        out << content;
+        if (!out.flush()) throw std::runtime_error("cannot write " + partial.string());
+    }
+    fs::rename(partial, file);
+}
+
+std::string readFile(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// The kit's picture folders, without an earlier run's pictures.
+void prepareFolders(const fs::path& out) {
+    for (const char* name : {"figures", "zoom", "diff"}) {
+        fs::create_directories(out / name);
+        for (const auto& entry : fs::directory_iterator(out / name))
+            if (entry.path().extension() == ".png") fs::remove(entry.path());
+    }
+}
+
+// This build's figures into OUT/figures, in the handout's order (the figures it does not number last).
+std::vector<KitFigure> renderFigures(const ReportRequest& request, const LabCatalog& labs, std::map<std::string, Image8>& images,
+                                     const Words& words) {
+    std::map<std::string, std::size_t> handoutOrder;
+    for (const LabDescription& lab : labs.labs)
+        for (const LabFigure& f : lab.figures) handoutOrder.emplace(f.id, handoutOrder.size());
+    std::vector<KitFigure> figures;
+    for (const SceneDescription& d : loadSceneFolder(request.scenes)) {
+        const FigureResult r = renderScene(d, RenderOptions{request.threads, request.progress});
+        KitFigure f{d.id, d.lab, r.status == FigureResult::Status::Rendered, r.message, r.stats, d.width, d.height};
+        if (r.status == FigureResult::Status::Failed) f.message = "failed: " + r.message;
+        if (f.rendered) {
+            images[d.id] = quantize(*r.image);
+            writePng(request.out / "figures" / (d.id + ".png"), images[d.id]);
+        }
+        std::printf("  %-24s %s\n", d.id.c_str(), f.rendered ? seconds(f.stats.seconds, words).c_str() : f.message.c_str());
+        figures.push_back(std::move(f));
+    }
+    const auto order = [&](const KitFigure& f) {
+        const auto it = handoutOrder.find(f.id);
+        return it != handoutOrder.end() ? it->second : handoutOrder.size();
+    };
+    std::stable_sort(figures.begin(), figures.end(), [&](const KitFigure& a, const KitFigure& b) { return order(a) < order(b); });
+    return figures;
+}
+
+// The code graded as `raylab grade` grades it: this build's agents (the reference's for raylab-reference).
+GradeResult gradeCodeOfThisBuild(const ReportRequest& request, const GradeSetup& setup) {
+    bool isolated = false;
+    std::vector<AgentPlan> agents;
+    if (request.referenceBuild) agents.push_back({request.programs / "raylab-agent-reference", 0});
+    else agents = findAgents(request.programs, setup.labs.numbers(), isolated);
+    if (agents.empty()) throw std::runtime_error("no grading agent in " + request.programs.string() + "; build first: cmake --build build");
+    GradeResult result = gradeCode(setup, agents, isolated);
+    result.title = "raylab report: the grade of your code";
+    return result;
+}
+
+// Each figure's grade, and a difference map (OUT/diff) of this build's picture against its reference.
+void compareFigures(std::vector<KitFigure>& figures, const std::map<std::string, Image8>& images, const GradeResult& result,
+                    const ReferenceSet& references, const fs::path& out) {
+    writePng(out / "diff" / "scale.png", differenceScale());
+    for (KitFigure& f : figures) {
+        for (const FigureOutcome& g : result.figures)
+            if (g.id == f.id) f.grade = &g;
+        const FigureReference* reference = references.find(f.id);
+        f.hasReference = reference != nullptr;
+        const auto image = images.find(f.id);
+        if (reference == nullptr || image == images.end()) continue;
+        f.statistical = reference->stats.has_value();
+        if (f.statistical) f.outlierZ = reference->stats->outlierZ;
+        writePng(out / "diff" / (f.id + ".png"), differenceMap(image->second, *reference, compareImage(*reference, image->second)));
+        f.hasDifference = true;
+    }
+}
+
+// Where the close-up looks: the sphere's left edge a third of the way down the reference picture.
+std::pair<int, int> silhouette(const Image8& reference) {
+    for (int j : {reference.height / 3, reference.height / 2}) {
+        const std::uint8_t* background = reference.pixel(0, j);
+        for (int i = 1; i < reference.width; ++i) {
+            const std::uint8_t* p = reference.pixel(i, j);
+            if (std::abs(int(p[0]) - background[0]) + std::abs(int(p[1]) - background[1]) + std::abs(int(p[2]) - background[2]) > 24)
+                return {i, j};
+        }
+    }
+    return {reference.width / 2, reference.height / 2};
+}
+
+// The block of `image` the close-up shows, each pixel enlarged to zoom x zoom.
+Image8 enlarge(const Image8& image, const CloseUp& z) {
+    Image8 big{z.width * z.zoom, z.height * z.zoom, {}};
+    big.rgb.reserve(std::size_t(big.width) * std::size_t(big.height) * 3);
+    for (int j = 0; j < big.height; ++j)
+        for (int i = 0; i < big.width; ++i) {
+            const std::uint8_t* p = image.pixel(std::min(z.x + i / z.zoom, image.width - 1), std::min(z.y + j / z.zoom, image.height - 1));
+            big.rgb.insert(big.rgb.end(), p, p + 3);
+        }
+    return big;
+}
+
+// The antialiasing comparison's close-ups (OUT/zoom), at the aliased reference's silhouette.
+std::optional<CloseUp> cropCloseUps(const std::map<std::string, Image8>& images, const ReferenceSet& references, const fs::path& out) {
+    const FigureReference* shape = references.find(kAliasedFigure);
+    if (shape == nullptr || references.find(kAntialiasedFigure) == nullptr) return std::nullopt;
+    const auto [cx, cy] = silhouette(shape->image);
+    CloseUp z{0, 0, 40, 28, 10};
+    z.x = std::clamp(cx - z.width / 2, 0, std::max(0, shape->image.width - z.width));
+    z.y = std::clamp(cy - z.height / 2, 0, std::max(0, shape->image.height - z.height));
+    for (const char* id : {kAliasedFigure, kAntialiasedFigure}) {
+        const auto image = images.find(id);
+        if (image != images.end()) writePng(out / "zoom" / (std::string(id) + ".png"), enlarge(image->second, z));
+    }
+    return z;
+}
+
+// report.md and report.html: this run's generated parts around the student's text of report.md.
+void writePages(const KitContent& content, const fs::path& out) {
+    const fs::path markdown = out / "report.md";
+    PreviousText previous;
+    if (fs::exists(markdown)) {
+        const std::string old = readFile(markdown);
+        writeFileAtomically(out / "report.previous.md", old); // one undo, whatever happens next
+        previous = readPreviousText(old, content.words);
+    }
+    const std::vector<Segment> document = placeStudentText(reportSegments(content), previous, content.words);
+    writeFileAtomically(markdown, toMarkdown(document));
+    writeFileAtomically(out / "report.html", reportHtml(document, content.words));
+}
+
+int printPdf(const fs::path& out) {
+    const std::optional<fs::path> chromium = findChromium();
+    if (!chromium) {
+        std::printf("report.pdf: not made: --pdf prints with chromium, which is not installed (Debian/Ubuntu: "
+                    "sudo apt-get install chromium; macOS: brew install --cask chromium); or open report.html in a "
+                    "browser and print it to PDF\n");
+        return 1;
+    }
+    printToPdf(*chromium, out / "report.html", out / "report.pdf");
+    std::printf("report: %s\n", (out / "report.pdf").string().c_str());
+    return 0;
+}
+
+} // namespace
+
+int writeReportKit(const ReportRequest& request) {
+    const fs::path& out = request.out;
+    const Words& words = wordsFor(request.lang);
+    fs::create_directories(out);
+    const TitleBlock title = readTitleBlock(out / "report.toml", words); // its errors before any render
+    prepareFolders(out);
+
+    std::random_device random;
+    const fs::path scratch = fs::temp_directory_path() / ("raylab-report-" + std::to_string(random()));
+    fs::create_directories(scratch);
+    GradeSetup setup = loadGradeSetup(request.references, request.labs, request.scenes, scratch);
+    setup.threads = request.threads;
+    std::map<std::string, Image8> images;
+    std::vector<KitFigure> figures = renderFigures(request, setup.labs, images, words);
+    const GradeResult result = gradeCodeOfThisBuild(request, setup);
+    writeReports(result, setup.references, out / "grade");
+    fs::remove_all(scratch);
+    compareFigures(figures, images, result, setup.references, out);
+    const std::optional<CloseUp> closeUp = cropCloseUps(images, setup.references, out);
+    writePages(KitContent{words, title, result, setup.labs, std::move(figures), closeUp}, out);
+
+    std::printf("%s", terminalSummary(result).c_str());
+    if (title.placeholders) std::printf("%s\n", fill(words.fillTitleBlock, {(out / "report.toml").string()}).c_str());
+    std::printf("report: %s and %s (the grader's report: %s)\n", (out / "report.md").string().c_str(),
+                (out / "report.html").string().c_str(), (out / "grade" / "index.html").string().c_str());
+    return request.pdf ? printPdf(out) : 0;
+}
+
+} // namespace raylab::report

@@ -1,0 +1,28 @@
+#pragma once
+// raylab report: the student's lab report kit. Renders this build's figures, grades the code as
+// `raylab grade` does (the same agents, the same total), and writes DIR/report.md (the student's
+// document: a re-run keeps their text) and DIR/report.html (every image beside it in DIR), and
+// DIR/report.pdf when asked and chromium is installed.
+
+#include <filesystem>
+#include <string>
+
+namespace raylab::report {
+
+struct ReportRequest {
+    std::filesystem::path out;        // the kit's folder
+    std::string lang = "en";          // "en" or "fr"
+    bool pdf = false;                 // also print report.pdf
+    int threads = 0;                  // 0: one per core
+    bool progress = false;            // progress bars on a terminal
+    bool referenceBuild = false;      // this program was built from solutions/: grade the reference agent
+    std::filesystem::path scenes;     // the figures' scene files
+    std::filesystem::path references; // the grader's references
+    std::filesystem::path labs;       // the labs' descriptions
+    std::filesystem::path programs;   // where the agents are (beside raylab)
+};
+
+// Writes the kit; returns the exit status (0, or 1 when --pdf was asked and no PDF could be made).
+int writeReportKit(const ReportRequest& request);
+
+} // namespace raylab::report

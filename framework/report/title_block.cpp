@@ -1,0 +1,72 @@
+#include "report/title_block.h"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <stdexcept>
+
+namespace raylab::report {
+
+namespace {
+
+constexpr const char* kKeys[] = {"name", "group", "course", "date"};
+
+std::string where(const std::filesystem::path& file, const toml::source_region& at) {
+    return file.string() + ":" + std::to_string(at.begin.line);
+}
+
+std::string today() {
+    const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    std::tm local{};
+    localtime_r(&now, &local);
+    char text[16];
+    std::strftime(text, sizeof text, "%Y-%m-%d", &local);
+    return text;
+}
+
+// A placeholder is the value the created file holds ("Your name", "Votre nom"...).
+bool isPlaceholder(const std::string& key, const std::string& value) {
+    for (const char* lang : {"en", "fr"}) {
+        const std::string created = wordsFor(lang).tomlTemplate;
+        if (created.find(key + " = \"" + value + "\"") != std::string::npos && !value.empty()) return true;
+    }
+    return false;
+}
+
+toml::table parse(const std::filesystem::path& file) {
+    try {
+        return toml::parse_file(file.string());
+    } catch (const toml::parse_error& e) {
+        throw std::runtime_error(where(file, e.source()) + ": " + std::string(e.description()));
+    }
+}
+
+} // namespace
+
+TitleBlock readTitleBlock(const std::filesystem::path& file, const Words& words) {
+    if (!std::filesystem::exists(file)) std::ofstream(file, std::ios::binary) << words.tomlTemplate;
+    const toml::table table = parse(file);
+    for (const auto& [key, node] : table) {
+        const bool known = std::find(std::begin(kKeys), std::end(kKeys), key.str()) != std::end(kKeys);
+        if (!known)
+            throw std::runtime_error(where(file, node.source()) + ": " + std::string(key.str()) +
+                                     ": unknown key (the keys are name, group, course and date)");
+        if (!node.is_string())
+            throw std::runtime_error(where(file, node.source()) + ": " + std::string(key.str()) +
+                                     ": must be a string in quotes");
+    }
+    TitleBlock block;
+    std::string* fields[] = {&block.name, &block.group, &block.course, &block.date};
+    for (std::size_t k = 0; k < std::size(kKeys); ++k) {
+        *fields[k] = table[kKeys[k]].value_or(std::string());
+        if (isPlaceholder(kKeys[k], *fields[k])) block.placeholders = true;
+    }
+    if (block.name.empty() || block.group.empty() || block.course.empty()) block.placeholders = true;
+    if (block.date.empty()) block.date = today();
+    return block;
+}
+
+} // namespace raylab::report

@@ -1,0 +1,102 @@
+// report.md is the student's: a re-run places each of their sections by its marker, never by
+// position, and keeps what it cannot place. These run on the text alone (no render).
+#include <doctest/doctest.h>
+
+#include "report/student_text.h"
+
+#include <string>
+#include <vector>
+
+using namespace raylab::report;
+
+namespace {
+
+const Words& kWords = wordsFor("en");
+
+// A document as a run writes it: two labs, each a generated part and the student's section.
+std::vector<Segment> freshDocument() {
+    return {{Segment::Kind::Generated, "title", "# Lab report\n"},
+            {Segment::Kind::Generated, "lab1", "## Lab 1\n\nrender time: 0.001 s\n"},
+            {Segment::Kind::Student, "lab1", "*Write here.*\n"},
+            {Segment::Kind::Generated, "lab2", "## Lab 2\n\nrender time: 0.002 s\n"},
+            {Segment::Kind::Student, "lab2", "*Write here.*\n"}};
+}
+
+std::string rerun(const std::string& previous) {
+    return toMarkdown(placeStudentText(freshDocument(), readPreviousText(previous, kWords), kWords));
+}
+
+// The student's section KEY in a report.md, or "(none)".
+std::string section(const std::string& markdown, const std::string& key) {
+    const std::string begin = "<!-- raylab:student " + key + " -->\n";
+    const std::size_t at = markdown.find(begin);
+    if (at == std::string::npos) return "(none)";
+    const std::size_t start = at + begin.size();
+    return markdown.substr(start, markdown.find("<!-- raylab:end -->", start) - start);
+}
+
+void replace(std::string& text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    REQUIRE_MESSAGE(at != std::string::npos, from);
+    text.replace(at, from.size(), to);
+}
+
+} // namespace
+
+TEST_SUITE("report") {
+
+TEST_CASE("student text: a first run writes the placeholders and no kept section") {
+    const std::string md = rerun("");
+    CHECK(section(md, "lab1") == "*Write here.*\n");
+    CHECK(section(md, "lab2") == "*Write here.*\n");
+    CHECK(section(md, kKeptKey) == "(none)");
+    CHECK(rerun(md) == md); // nothing written: nothing changes
+}
+
+TEST_CASE("student text: each section stays under its marker, even when the student moved it") {
+    std::string md = rerun("");
+    replace(md, "<!-- raylab:student lab1 -->\n*Write here.*\n", "<!-- raylab:student lab1 -->\nMy **first** lab.\n\nTwo paragraphs.\n");
+    replace(md, "<!-- raylab:student lab2 -->\n*Write here.*\n", "<!-- raylab:student lab2 -->\nThe second.\n");
+    // Moved: lab 2's section cut and pasted before lab 1's generated part.
+    const std::string lab2 = "<!-- raylab:student lab2 -->\nThe second.\n<!-- raylab:end -->\n";
+    replace(md, lab2, "");
+    replace(md, "<!-- raylab:generated lab1", lab2 + "<!-- raylab:generated lab1");
+    const std::string again = rerun(md);
+    CHECK(section(again, "lab1") == "My **first** lab.\n\nTwo paragraphs.\n");
+    CHECK(section(again, "lab2") == "The second.\n");
+    CHECK(again.find("The second.") > again.find("## Lab 2")); // back in its place
+    CHECK(section(again, kKeptKey) == "(none)");
+}
+
+TEST_CASE("student text: text outside the markers, a deleted marker and an unknown section are kept") {
+    std::string md = rerun("");
+    replace(md, "<!-- raylab:student lab1 -->\n*Write here.*\n<!-- raylab:end -->",
+            "<!-- raylab:student lab1 -->\nLab 1 text whose end marker was deleted.\n");
+    replace(md, "<!-- raylab:student lab2 -->\n*Write here.*\n", "Lab 2 text whose begin marker was deleted.\n");
+    md += "A paragraph written after the last marker.\n";
+    md += "<!-- raylab:student lab9 -->\nA lab that is gone.\n<!-- raylab:end -->\n";
+    const std::string again = rerun(md);
+    CHECK(section(again, "lab1") == "Lab 1 text whose end marker was deleted.\n");
+    CHECK(section(again, "lab2") == "*Write here.*\n");
+    const std::string kept = section(again, kKeptKey);
+    CHECK(kept.find("Lab 2 text whose begin marker was deleted.") != std::string::npos);
+    CHECK(kept.find("A paragraph written after the last marker.") != std::string::npos);
+    CHECK(kept.find("From the section `lab9`:\n\nA lab that is gone.") != std::string::npos);
+    CHECK(again.find("## Kept from the previous version") != std::string::npos);
+    // A third run keeps the kept section as it is, each text once.
+    const std::string third = rerun(again);
+    CHECK(section(third, kKeptKey) == kept);
+}
+
+TEST_CASE("student text: an edit inside a generated part is kept; CRLF line ends are no edit") {
+    std::string md = rerun("");
+    std::string crlf;
+    for (char c : md) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    CHECK(section(rerun(crlf), kKeptKey) == "(none)");
+    replace(md, "render time: 0.001 s\n", "render time: 0.001 s\n\nA remark under the figure.\n");
+    const std::string kept = section(rerun(md), kKeptKey);
+    CHECK(kept.find("Your edit of the generated part `lab1`") != std::string::npos);
+    CHECK(kept.find("A remark under the figure.") != std::string::npos);
+}
+
+}
