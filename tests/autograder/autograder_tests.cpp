@@ -212,7 +212,7 @@ TEST_CASE("run_autograder: a catalogued mistake in a wrapping folder loses its p
     CHECK(pointsByItem(j) == pointsOfAgent("raylab-mistake-" + id)); // as `raylab grade` grades the same code
     std::string hint;
     for (const Mistake& m : courseSetup().mistakes)
-        if (m.id == id) hint = m.hint;
+        if (m.id == id) hint = m.hint();
     REQUIRE_FALSE(hint.empty());
     const std::string check = "updateViewport: the viewport of the default camera";
     bool hinted = false;
