@@ -97,7 +97,7 @@ expect("${report}" "## TP 6 : Un TP jouet" "the French report has lab 6's secti
 string(FIND "${report}" "## TP 6 : Un TP jouet" section)
 string(SUBSTRING "${report}" ${section} -1 section)
 expect("${section}" "La direction d de chaque rayon primaire" "the French report shows lab 6's French caption")
-expect("${section}" "not done yet: write" "the student's report says lab 6's figure is not drawn yet")
+expect("${section}" "pas encore écrit" "the student's French report says lab 6's figure is not drawn yet")
 
 # 6. framework/'s sources are those of the tree: the lab needed none of its files changed (its
 # data folder holds what `raylab references` made).
