@@ -2,6 +2,7 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -12,8 +13,9 @@ namespace fs = std::filesystem;
 
 std::string Diagnosis::text() const {
     if (!mistake) return "";
-    std::string text = "your image matches '" + mistake->name + "' (lab " + std::to_string(mistake->lab) + "): " + mistake->hint;
-    if (alike) text += "; or, as it draws the same picture here, '" + alike->name + "' (lab " + std::to_string(alike->lab) + "): " + alike->hint;
+    const auto where = [](const Mistake& m) { return " (lab " + std::to_string(m.lab) + ", " + m.function + "): "; };
+    std::string text = "your image matches '" + mistake->name + "'" + where(*mistake) + mistake->hint;
+    if (alike) text += "; or, as it draws the same picture here, '" + alike->name + "'" + where(*alike) + alike->hint;
     return text;
 }
 
@@ -39,8 +41,11 @@ std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
         mistake.hint = (*m)["hint"].value_or(std::string());
         mistake.lab = (*m)["lab"].value_or(0);
         mistake.check = (*m)["check"].value_or(std::string());
-        if (mistake.id.empty() || mistake.name.empty() || mistake.hint.empty() || mistake.lab < 1 || mistake.lab > 5)
-            throw std::runtime_error(file.string() + ": mistake '" + mistake.id + "' needs id, name, hint and lab 1 ... 5");
+        mistake.function = (*m)["function"].value_or(std::string());
+        if (mistake.id.empty() || mistake.name.empty() || mistake.hint.empty() || mistake.function.empty() ||
+            mistake.lab < 1 || mistake.lab > 5)
+            throw std::runtime_error(file.string() + ": mistake '" + mistake.id +
+                                     "' needs id, name, hint, function and lab 1 ... 5");
         const fs::path folder = referenceFolder / "mistakes" / mistake.id;
         if (fs::is_directory(folder, error))
             for (const auto& entry : fs::directory_iterator(folder))
@@ -78,7 +83,7 @@ double meanAbsoluteDifference(const Image8& a, const Image8& b) {
 } // namespace
 
 Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figure, const Image8& student,
-                   const Image8& reference) {
+                   const Image8& reference, const std::vector<int>& labs) {
     Diagnosis best;
     const Image8 small = downsample(student);
     best.referenceDistance = meanAbsoluteDifference(small, downsample(reference));
@@ -86,7 +91,7 @@ Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figu
     double alikeDistance = best.distance;
     for (const Mistake& m : mistakes)
         for (const auto& [id, signature] : m.signatures) {
-            if (id != figure) continue;
+            if (id != figure || std::find(labs.begin(), labs.end(), m.lab) == labs.end()) continue;
             const double d = meanAbsoluteDifference(small, signature);
             if (d < best.distance) {
                 best.alike = best.mistake;

@@ -19,7 +19,8 @@ struct Mistake {
     std::string name;  // "fovy not halved"
     std::string hint;  // "use tan(fovy / 2): fovy is the full angle"
     int lab = 0;       // the lab whose file holds the mistake
-    std::string check; // the function check expected to catch it ("lab2/...")
+    std::string function; // where in that lab: "PerspectiveCamera::updateViewport (perspective_camera.cpp)"
+    std::string check;    // the function check expected to catch it ("updateViewport: ...")
     std::vector<std::pair<std::string, Image8>> signatures; // figure id, signature
 };
 
@@ -28,7 +29,7 @@ struct Diagnosis {
     const Mistake* alike = nullptr;   // another mistake that draws the same picture (within 0.25 LSB)
     double distance = 0.;             // mean absolute difference to its signature, LSB
     double referenceDistance = 0.;    // the same to the reference
-    std::string text() const;         // "your image matches 'fovy not halved': use tan(fovy / 2) ..."
+    std::string text() const; // "your image matches 'fovy not halved' (lab 2, updateViewport): use tan(fovy / 2) ..."
 };
 
 // Reads the catalogue and every signature present; a missing signature folder leaves it empty.
@@ -38,9 +39,10 @@ std::vector<Mistake> loadMistakes(const std::filesystem::path& referenceFolder);
 // whole blocks only).
 Image8 downsample(const Image8& image);
 
-// The closest signature of this figure, when it fits: much closer to the student's image than the
+// The closest signature of this figure among the mistakes of the labs in `labs` (those whose code
+// drew the image and may be wrong), when it fits: much closer to the student's image than the
 // reference is, and within a few LSB on average.
 Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figure, const Image8& student,
-                   const Image8& reference);
+                   const Image8& reference, const std::vector<int>& labs);
 
 } // namespace raylab::grader

@@ -135,10 +135,6 @@ FigureOutcome gradeImage(const GradeSetup& setup, const FigureReference& referen
     f.verdict = compareImage(reference, image);
     f.passed = f.verdict.passed;
     f.reason = f.verdict.reason;
-    if (!f.passed && image.width == reference.image.width && image.height == reference.image.height) {
-        const Diagnosis d = diagnose(setup.mistakes, f.id, image, reference.image);
-        f.diagnosis = d.text();
-    }
     f.points = f.passed ? f.maxPoints : 0.;
     return f;
 }
@@ -197,6 +193,29 @@ void addDependencyNotes(const LabCatalog& catalog, GradeResult& result) {
             lab.notes.push_back("lab " + std::to_string(lab.lab) + " uses lab " + std::to_string(other) +
                                 ", which has failures: fix lab " + std::to_string(other) + " first");
         }
+    }
+}
+
+// Names the likely mistake of every failed figure, once every lab is scored: only a mistake of the
+// figure's own lab, or of a lab it uses that has failures of its own (never when that lab came from
+// the reference), so a correct lab is never blamed.
+void addDiagnoses(const GradeSetup& setup, GradeResult& result, bool isolated) {
+    for (FigureOutcome& f : result.figures) {
+        if (f.passed || f.studentImage.empty()) continue;
+        const FigureReference* reference = setup.references.find(f.id);
+        if (reference == nullptr) continue;
+        std::vector<int> suspects{f.lab};
+        if (const LabFigure* figure = setup.labs.figure(f.id); figure != nullptr && !isolated)
+            for (int other : figure->uses)
+                if (hasFailures(outcomeOf(result, other))) suspects.push_back(other);
+        Image8 image;
+        try {
+            image = readImage(f.studentImage);
+        } catch (const std::exception&) {
+            continue; // unreadable: its reason already says so
+        }
+        if (image.width == reference->image.width && image.height == reference->image.height)
+            f.diagnosis = diagnose(setup.mistakes, f.id, image, reference->image, suspects).text();
     }
 }
 
@@ -285,6 +304,7 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         }
     }
     scoreLabs(setup.labs, result);
+    addDiagnoses(setup, result, isolated);
     if (isolated)
         for (LabOutcome& lab : result.labs) lab.notes.push_back("graded on its own: the other labs came from the reference solutions");
     else
@@ -310,6 +330,7 @@ GradeResult gradeImages(const GradeSetup& setup, const fs::path& folder) {
             if (entry.path().extension() == ".png" && !setup.references.find(entry.path().stem().string()))
                 result.problems.push_back("ignored " + entry.path().filename().string() + ": no figure has this id");
     scoreLabs(setup.labs, result);
+    addDiagnoses(setup, result, false);
     return result;
 }
 

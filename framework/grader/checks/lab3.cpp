@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 namespace raylab::grader {
 
@@ -49,6 +50,19 @@ protocol::Call call(const Case& c) {
     return {Probe::Intersect, in};
 }
 
+// The two roots of the ray's line on the sphere, in double (nullopt when it misses the line).
+std::optional<std::pair<double, double>> roots(const Sphere& s, const Ray& r) {
+    const glm::dvec3 oc = r.origin - s.centre;
+    const double a = glm::dot(r.direction, r.direction), b = glm::dot(oc, r.direction);
+    const double disc = b * b - a * (glm::dot(oc, oc) - s.radius * s.radius);
+    if (disc < 0.) return std::nullopt;
+    return std::pair{(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a};
+}
+
+constexpr const char* kFarRootHint =
+    "this t is the far root (-b' + sqrt(Δ)) / a, the back of the sphere: take the near root (-b' - sqrt(Δ)) / a "
+    "when it is in [tMin, tMax], and the far one only when it is not";
+
 bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
     Outputs o(out);
     const bool found = o.number() != 0.;
@@ -59,7 +73,12 @@ bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
             judge.fail(c.what, "a hit at t = " + show(c.t), "no hit", c.hint);
             return false;
         }
-        return judge.expectNear(c.what + ", t", t, c.t, c.tolerance, c.hint) &&
+        // The hint names the cause the outputs show: a far root where the near one was due is the root
+        // choice, whatever the check is about.
+        const auto line = roots(c.sphere, c.ray);
+        const bool farRoot = line && std::abs(c.t - line->second) > c.tolerance &&
+                             std::abs(t - line->second) <= c.tolerance && line->first >= c.tMin;
+        return judge.expectNear(c.what + ", t", t, c.t, c.tolerance, farRoot ? kFarRootHint : c.hint) &&
                judge.expectNear(c.what + ", hit.position", position, c.ray.at(c.t), c.tolerance * 2.,
                                 "store hit.position = ray.at(hit.t)");
     }
@@ -78,6 +97,32 @@ void addIntersect(std::vector<FunctionCheck>& checks, const std::string& name, s
     checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
                           for (std::size_t k = 0; k < cases.size(); ++k)
                               judgeCase(judge, cases[k], out[k]);
+                      }});
+}
+
+// A far sphere's cases, judged after a near sphere confirms the root choice: the discriminant's
+// cancellation is blamed only when the near root is taken where it should be, and the hint says
+// what the near sphere showed otherwise.
+void addFarIntersect(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<Case> cases) {
+    const Case nearSphere{"", kSphere, {{0., 0., 0.}, {0., 0., 1.}}, 0., kInf, 2., 1e-5, ""};
+    std::vector<protocol::Call> calls{call(nearSphere)};
+    for (const Case& c : cases)
+        calls.push_back(call(c));
+    checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
+                          Outputs near(out[0]);
+                          const bool found = near.number() != 0.;
+                          const double t = near.number();
+                          const bool rootChoiceRight = found && std::abs(t - 2.) <= 1e-5;
+                          for (std::size_t k = 0; k < cases.size(); ++k) {
+                              Case c = cases[k];
+                              if (!rootChoiceRight)
+                                  c.hint = "the near sphere (0, 0, 3), radius 1, seen from the origin along +z, "
+                                           "already gives " +
+                                           (found ? "t = " + show(t) : std::string("no hit")) +
+                                           " instead of t = 2: fix that first (see the checks on near spheres)" +
+                                           (found && std::abs(t - 4.) <= 1e-5 ? std::string("; ") + kFarRootHint : "");
+                              judgeCase(judge, c, out[k + 1]);
+                          }
                       }});
 }
 
@@ -259,8 +304,9 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         const Sphere far{{0., 0., 1000.}, 1.};
         const double offset = CaseRandom::asFloat(random.uniform(0., 0.9));
         const char* hint =
-            "b'^2 - c' subtracts two numbers near 10^6 and loses digits: the handout's stable form avoids it";
-        addIntersect(checks, "intersect: a sphere 1000 radii away",
+            "the discriminant b'^2 - a c' subtracts two numbers near 10^6 and loses digits: the handout's stable form "
+            "a (r^2 - |l|^2), l = oc - (b' / a) d, avoids it";
+        addFarIntersect(checks, "intersect: a sphere 1000 radii away",
                      {{"ray at 0.5 radius from the centre line",
                        far,
                        {{0.5, 0., 0.}, {0., 0., 1.}},
@@ -288,9 +334,9 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     }
     {
         const Sphere far{{0., 0., 10000.}, 1.};
-        const char* hint = "at 10^4 radii the textbook discriminant b'^2 - c' is lost to rounding; compute it as "
-                           "r^2 - |oc - (oc.d / d.d) d|^2 (Ray Tracing Gems, chapter 7; see the handout)";
-        addIntersect(
+        const char* hint = "at 10^4 radii the textbook discriminant b'^2 - a c' is lost to rounding; compute it as "
+                           "a (r^2 - |l|^2) with l = oc - (b' / a) d (the handout's stable form)";
+        addFarIntersect(
             checks, "intersect: a sphere 10000 radii away keeps its silhouette",
             {{"ray at 1.1 radii from the centre line", far, {{1.1, 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
              {"ray at 0.9 radius from the centre line",

@@ -3,6 +3,7 @@
 // handout's pixels and on pixels, counts and seeds drawn at grading time.
 #include "grader/checks/checks.h"
 
+#include <cmath>
 #include <set>
 #include <utility>
 
@@ -110,6 +111,36 @@ void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                                                std::to_string(distinct[k].samples), std::to_string(points.size()),
                                                "call sampler.next2D() once per sample, inside the loop");
                           }
+                      }});
+
+    // Two pixels, each with its own sampler: the same offsets in both is a pattern reused in every
+    // pixel (docs/grading.md: a mistake here, whatever its seed).
+    const int samples = random.integer(4, 16);
+    const std::vector<Pixel> twoPixels{{16, 16, 2, 5, samples, std::uint64_t(random.integer(0, 1 << 30))},
+                                       {16, 16, 11, 9, samples, std::uint64_t(random.integer(0, 1 << 30))}};
+    calls.clear();
+    for (const Pixel& p : twoPixels)
+        calls.push_back(p.call());
+    checks.push_back({5, "renderPixel: each pixel takes its own offsets", calls, [twoPixels](const auto& out, Judge& judge) {
+                          std::vector<std::vector<std::pair<double, double>>> offsets;
+                          for (std::size_t k = 0; k < twoPixels.size(); ++k) {
+                              const Pixel& p = twoPixels[k];
+                              offsets.emplace_back();
+                              const Rendered rendered(out[k]);
+                              for (const auto& [sx, sy] : rendered.points)
+                                  offsets.back().emplace_back(sx * p.width - p.i, sy * p.height - p.j);
+                          }
+                          // (i + x) / W in float, read back: the same x within 1e-5 pixel at these sizes.
+                          bool same = offsets[0].size() == offsets[1].size() && !offsets[0].empty();
+                          for (std::size_t k = 0; same && k < offsets[0].size(); ++k)
+                              same = std::abs(offsets[0][k].first - offsets[1][k].first) <= 1e-5 &&
+                                     std::abs(offsets[0][k].second - offsets[1][k].second) <= 1e-5;
+                          judge.expectTrue("the offsets of " + twoPixels[0].name() + " and of pixel (" +
+                                               std::to_string(twoPixels[1].i) + ", " + std::to_string(twoPixels[1].j) +
+                                               "), each with its own sampler",
+                                           !same, "different offsets", "the same offsets in both pixels",
+                                           "take the offsets from this pixel's sampler (sampler.next2D()): a pattern "
+                                           "reused in every pixel draws the same error along every edge");
                       }});
 }
 
