@@ -2,7 +2,6 @@
 
 #include <toml++/toml.h>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -83,7 +82,7 @@ double meanAbsoluteDifference(const Image8& a, const Image8& b) {
 } // namespace
 
 Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figure, const Image8& student,
-                   const Image8& reference, const std::vector<int>& labs) {
+                   const Image8& reference, const std::function<bool(const Mistake&)>& suspect) {
     Diagnosis best;
     const Image8 small = downsample(student);
     best.referenceDistance = meanAbsoluteDifference(small, downsample(reference));
@@ -91,7 +90,7 @@ Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figu
     double alikeDistance = best.distance;
     for (const Mistake& m : mistakes)
         for (const auto& [id, signature] : m.signatures) {
-            if (id != figure || std::find(labs.begin(), labs.end(), m.lab) == labs.end()) continue;
+            if (id != figure || !suspect(m)) continue;
             const double d = meanAbsoluteDifference(small, signature);
             if (d < best.distance) {
                 best.alike = best.mistake;

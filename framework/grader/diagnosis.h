@@ -6,6 +6,7 @@
 #include "raylab/image_io.h"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,10 +40,10 @@ std::vector<Mistake> loadMistakes(const std::filesystem::path& referenceFolder);
 // whole blocks only).
 Image8 downsample(const Image8& image);
 
-// The closest signature of this figure among the mistakes of the labs in `labs` (those whose code
-// drew the image and may be wrong), when it fits: much closer to the student's image than the
-// reference is, and within a few LSB on average.
+// The closest signature of this figure among the mistakes `suspect` accepts (those whose code may
+// be wrong), when it fits: much closer to the student's image than the reference is, and within a
+// few LSB on average.
 Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figure, const Image8& student,
-                   const Image8& reference, const std::vector<int>& labs);
+                   const Image8& reference, const std::function<bool(const Mistake&)>& suspect);
 
 } // namespace raylab::grader

@@ -196,18 +196,26 @@ void addDependencyNotes(const LabCatalog& catalog, GradeResult& result) {
     }
 }
 
-// Names the likely mistake of every failed figure, once every lab is scored: only a mistake of the
-// figure's own lab, or of a lab it uses that has failures of its own (never when that lab came from
-// the reference), so a correct lab is never blamed.
+// Names the likely mistake of every failed figure, once every lab is scored. A suspect is a mistake
+// of the figure's own lab, or of a lab it uses that has failures of its own (never one that came from
+// the reference, as when each lab is graded alone), and whose check, when it ran, failed: so a lab
+// whose code is right is never blamed, even for a picture its mistake would also draw.
 void addDiagnoses(const GradeSetup& setup, GradeResult& result, bool isolated) {
+    const auto checkPassed = [&result](const std::string& name) {
+        return std::any_of(result.checks.begin(), result.checks.end(),
+                           [&name](const CheckOutcome& c) { return c.name == name && c.passed; });
+    };
     for (FigureOutcome& f : result.figures) {
         if (f.passed || f.studentImage.empty()) continue;
         const FigureReference* reference = setup.references.find(f.id);
         if (reference == nullptr) continue;
-        std::vector<int> suspects{f.lab};
+        std::vector<int> labs{f.lab};
         if (const LabFigure* figure = setup.labs.figure(f.id); figure != nullptr && !isolated)
             for (int other : figure->uses)
-                if (hasFailures(outcomeOf(result, other))) suspects.push_back(other);
+                if (hasFailures(outcomeOf(result, other))) labs.push_back(other);
+        const auto suspect = [&](const Mistake& m) {
+            return std::find(labs.begin(), labs.end(), m.lab) != labs.end() && !checkPassed(m.check);
+        };
         Image8 image;
         try {
             image = readImage(f.studentImage);
@@ -215,7 +223,7 @@ void addDiagnoses(const GradeSetup& setup, GradeResult& result, bool isolated) {
             continue; // unreadable: its reason already says so
         }
         if (image.width == reference->image.width && image.height == reference->image.height)
-            f.diagnosis = diagnose(setup.mistakes, f.id, image, reference->image, suspects).text();
+            f.diagnosis = diagnose(setup.mistakes, f.id, image, reference->image, suspect).text();
     }
 }
 
