@@ -163,11 +163,31 @@ const LabOutcome* outcomeOf(const GradeResult& result, int lab) {
 
 bool hasFailures(const LabOutcome* lab) { return lab != nullptr && lab->points < lab->maxPoints; }
 
+// Whether lab `lab` fails where no other failing lab can be the cause: a failed check or figure that
+// uses no lab with failures. A lab whose every failure runs a failing earlier lab's code is not
+// worth fixing first (lab 3's figures through a lab 2 stub, say).
+bool hasOwnFailures(const LabCatalog& catalog, const GradeResult& result, int lab) {
+    const LabDescription* description = catalog.lab(lab);
+    // An item no description names counts as the lab's own.
+    const auto own = [&](const auto* item) {
+        return item == nullptr || std::none_of(item->uses.begin(), item->uses.end(), [&](int other) {
+                   return hasFailures(outcomeOf(result, other));
+               });
+    };
+    return std::any_of(result.figures.begin(), result.figures.end(),
+                       [&](const FigureOutcome& f) {
+                           return f.lab == lab && !f.passed && own(description ? description->figure(f.id) : nullptr);
+                       }) ||
+           std::any_of(result.checks.begin(), result.checks.end(), [&](const CheckOutcome& c) {
+               return c.lab == lab && !c.passed && own(description ? description->check(c.name) : nullptr);
+           });
+}
+
 // Whether a failure of lab `lab` can come from lab `other`: a failed figure or check of `lab`
-// whose description says it runs `other`'s code, while `other` has failures itself.
+// whose description says it runs `other`'s code, while `other` has failures of its own.
 bool failsThrough(const LabCatalog& catalog, const GradeResult& result, int lab, int other) {
     const LabDescription* description = catalog.lab(lab);
-    if (description == nullptr || !hasFailures(outcomeOf(result, lab)) || !hasFailures(outcomeOf(result, other)))
+    if (description == nullptr || !hasFailures(outcomeOf(result, lab)) || !hasOwnFailures(catalog, result, other))
         return false;
     const auto uses = [other](const std::vector<int>& labs) { return std::find(labs.begin(), labs.end(), other) != labs.end(); };
     const bool figure = std::any_of(result.figures.begin(), result.figures.end(), [&](const FigureOutcome& f) {
@@ -212,7 +232,7 @@ void addDiagnoses(const GradeSetup& setup, GradeResult& result, bool isolated) {
         std::vector<int> labs{f.lab};
         if (const LabFigure* figure = setup.labs.figure(f.id); figure != nullptr && !isolated)
             for (int other : figure->uses)
-                if (hasFailures(outcomeOf(result, other))) labs.push_back(other);
+                if (hasOwnFailures(setup.labs, result, other)) labs.push_back(other);
         const auto suspect = [&](const Mistake& m) {
             return std::find(labs.begin(), labs.end(), m.lab) != labs.end() && !checkPassed(m.check);
         };
