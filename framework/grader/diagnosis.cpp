@@ -24,7 +24,7 @@ const std::string& Mistake::hint() const { return language() == Language::Fr ? h
 
 std::vector<std::pair<std::string_view, std::string>> Mistake::args() const {
     const std::string shown = label.empty() ? "" : (language() == Language::Fr ? "E" : "M") + label + " ";
-    return {{"name", name()}, {"hint", hint()}, {"label", shown}, {"lab", std::to_string(lab)}};
+    return {{"name", name()}, {"hint", hint()}, {"label", shown}, {"lab", std::to_string(lab)}, {"function", function}};
 }
 
 std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
@@ -52,10 +52,11 @@ std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
         mistake.label = (*m)["label"].value_or(std::string());
         mistake.lab = (*m)["lab"].value_or(0);
         mistake.check = (*m)["check"].value_or(std::string());
+        mistake.function = (*m)["function"].value_or(std::string());
         if (mistake.id.empty() || mistake.nameEn.empty() || mistake.hintEn.empty() || mistake.nameFr.empty() ||
-            mistake.hintFr.empty() || mistake.lab < 1 || mistake.lab > 5)
+            mistake.hintFr.empty() || mistake.function.empty() || mistake.lab < 1 || mistake.lab > 5)
             throw std::runtime_error(file.string() + ": mistake '" + mistake.id +
-                                     "' needs id, name, name_fr, hint, hint_fr and lab 1 ... 5");
+                                     "' needs id, name, name_fr, hint, hint_fr, function and lab 1 ... 5");
         const fs::path folder = referenceFolder / "mistakes" / mistake.id;
         if (fs::is_directory(folder, error))
             for (const auto& entry : fs::directory_iterator(folder))
@@ -93,7 +94,7 @@ double meanAbsoluteDifference(const Image8& a, const Image8& b) {
 } // namespace
 
 Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figure, const Image8& student,
-                   const Image8& reference) {
+                   const Image8& reference, const std::function<bool(const Mistake&)>& suspect) {
     Diagnosis best;
     const Image8 small = downsample(student);
     best.referenceDistance = meanAbsoluteDifference(small, downsample(reference));
@@ -101,7 +102,7 @@ Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figu
     double alikeDistance = best.distance;
     for (const Mistake& m : mistakes)
         for (const auto& [id, signature] : m.signatures) {
-            if (id != figure) continue;
+            if (id != figure || !suspect(m)) continue;
             const double d = meanAbsoluteDifference(small, signature);
             if (d < best.distance) {
                 best.alike = best.mistake;

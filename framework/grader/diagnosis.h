@@ -6,6 +6,7 @@
 #include "raylab/image_io.h"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,12 +23,13 @@ struct Mistake {
     std::string hintEn, hintFr; // "use tan(fovy / 2): fovy is the full angle"
     std::string label; // its number in the handouts, "2.1": M2.1 in English, E2.1 in French; may be empty
     int lab = 0;       // the lab whose file holds the mistake
-    std::string check; // the function check expected to catch it ("lab2/...")
+    std::string function; // where in that lab: "PerspectiveCamera::updateViewport (perspective_camera.cpp)"
+    std::string check;    // the function check expected to catch it ("updateViewport: ...")
     std::vector<std::pair<std::string, Image8>> signatures; // figure id, signature
     // In the current language (raylab/messages.h).
     const std::string& name() const;
     const std::string& hint() const;
-    // The placeholders of the diagnosis messages: name, hint, label ("M2.1 ", or empty), lab.
+    // The placeholders of the diagnosis messages: name, hint, label ("M2.1 ", or empty), lab, function.
     std::vector<std::pair<std::string_view, std::string>> args() const;
 };
 
@@ -36,7 +38,7 @@ struct Diagnosis {
     const Mistake* alike = nullptr;   // another mistake that draws the same picture (within 0.25 LSB)
     double distance = 0.;             // mean absolute difference to its signature, LSB
     double referenceDistance = 0.;    // the same to the reference
-    std::string text() const;         // "your image matches 'fovy not halved': use tan(fovy / 2) ..."
+    std::string text() const; // "your image matches 'fovy not halved' (lab 2, updateViewport): use tan(fovy / 2) ..."
 };
 
 // Reads the catalogue and every signature present; a missing signature folder leaves it empty.
@@ -46,9 +48,10 @@ std::vector<Mistake> loadMistakes(const std::filesystem::path& referenceFolder);
 // whole blocks only).
 Image8 downsample(const Image8& image);
 
-// The closest signature of this figure, when it fits: much closer to the student's image than the
-// reference is, and within a few LSB on average.
+// The closest signature of this figure among the mistakes `suspect` accepts (those whose code may
+// be wrong), when it fits: much closer to the student's image than the reference is, and within a
+// few LSB on average.
 Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figure, const Image8& student,
-                   const Image8& reference);
+                   const Image8& reference, const std::function<bool(const Mistake&)>& suspect);
 
 } // namespace raylab::grader

@@ -147,10 +147,6 @@ FigureOutcome gradeImage(const GradeSetup& setup, const FigureReference& referen
     f.verdict = compareImage(reference, image);
     f.passed = f.verdict.passed;
     f.reason = f.verdict.reason;
-    if (!f.passed && image.width == reference.image.width && image.height == reference.image.height) {
-        const Diagnosis d = diagnose(setup.mistakes, f.id, image, reference.image);
-        f.diagnosis = d.text();
-    }
     f.points = f.passed ? f.maxPoints : 0.;
     return f;
 }
@@ -179,11 +175,31 @@ const LabOutcome* outcomeOf(const GradeResult& result, int lab) {
 
 bool hasFailures(const LabOutcome* lab) { return lab != nullptr && lab->points < lab->maxPoints; }
 
+// Whether lab `lab` fails where no other failing lab can be the cause: a failed check or figure that
+// uses no lab with failures. A lab whose every failure runs a failing earlier lab's code is not
+// worth fixing first (lab 3's figures through a lab 2 stub, say).
+bool hasOwnFailures(const LabCatalog& catalog, const GradeResult& result, int lab) {
+    const LabDescription* description = catalog.lab(lab);
+    // An item no description names counts as the lab's own.
+    const auto own = [&](const auto* item) {
+        return item == nullptr || std::none_of(item->uses.begin(), item->uses.end(), [&](int other) {
+                   return hasFailures(outcomeOf(result, other));
+               });
+    };
+    return std::any_of(result.figures.begin(), result.figures.end(),
+                       [&](const FigureOutcome& f) {
+                           return f.lab == lab && !f.passed && own(description ? description->figure(f.id) : nullptr);
+                       }) ||
+           std::any_of(result.checks.begin(), result.checks.end(), [&](const CheckOutcome& c) {
+               return c.lab == lab && !c.passed && own(description ? description->check(c.name) : nullptr);
+           });
+}
+
 // Whether a failure of lab `lab` can come from lab `other`: a failed figure or check of `lab`
-// whose description says it runs `other`'s code, while `other` has failures itself.
+// whose description says it runs `other`'s code, while `other` has failures of its own.
 bool failsThrough(const LabCatalog& catalog, const GradeResult& result, int lab, int other) {
     const LabDescription* description = catalog.lab(lab);
-    if (description == nullptr || !hasFailures(outcomeOf(result, lab)) || !hasFailures(outcomeOf(result, other)))
+    if (description == nullptr || !hasFailures(outcomeOf(result, lab)) || !hasOwnFailures(catalog, result, other))
         return false;
     const auto uses = [other](const std::vector<int>& labs) { return std::find(labs.begin(), labs.end(), other) != labs.end(); };
     const bool figure = std::any_of(result.figures.begin(), result.figures.end(), [&](const FigureOutcome& f) {
@@ -209,6 +225,37 @@ void addDependencyNotes(const LabCatalog& catalog, GradeResult& result) {
             lab.notes.push_back(
                 tr("grade.uses_failing_lab", {{"lab", std::to_string(lab.lab)}, {"other", std::to_string(other)}}));
         }
+    }
+}
+
+// Names the likely mistake of every failed figure, once every lab is scored. A suspect is a mistake
+// of the figure's own lab, or of a lab it uses that has failures of its own (never one that came from
+// the reference, as when each lab is graded alone), and whose check, when it ran, failed: so a lab
+// whose code is right is never blamed, even for a picture its mistake would also draw.
+void addDiagnoses(const GradeSetup& setup, GradeResult& result, bool isolated) {
+    const auto checkPassed = [&result](const std::string& name) {
+        return std::any_of(result.checks.begin(), result.checks.end(),
+                           [&name](const CheckOutcome& c) { return c.name == name && c.passed; });
+    };
+    for (FigureOutcome& f : result.figures) {
+        if (f.passed || f.studentImage.empty()) continue;
+        const FigureReference* reference = setup.references.find(f.id);
+        if (reference == nullptr) continue;
+        std::vector<int> labs{f.lab};
+        if (const LabFigure* figure = setup.labs.figure(f.id); figure != nullptr && !isolated)
+            for (int other : figure->uses)
+                if (hasOwnFailures(setup.labs, result, other)) labs.push_back(other);
+        const auto suspect = [&](const Mistake& m) {
+            return std::find(labs.begin(), labs.end(), m.lab) != labs.end() && !checkPassed(m.check);
+        };
+        Image8 image;
+        try {
+            image = readImage(f.studentImage);
+        } catch (const std::exception&) {
+            continue; // unreadable: its reason already says so
+        }
+        if (image.width == reference->image.width && image.height == reference->image.height)
+            f.diagnosis = diagnose(setup.mistakes, f.id, image, reference->image, suspect).text();
     }
 }
 
@@ -247,7 +294,7 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
     GradeResult result;
     if (!unbuilt.empty()) {
         std::string labs;
-        for (int lab : unbuilt) labs += " " + std::to_string(lab);
+        for (int lab : unbuilt) labs.append(" ").append(std::to_string(lab));
         result.problems.push_back(tr("grade.labs_do_not_build", {{"labs", labs}}) + "\n" + buildMessage);
     }
     std::map<int, const AgentPlan*> agentOfLab;
@@ -297,6 +344,7 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         }
     }
     scoreLabs(setup.labs, result);
+    addDiagnoses(setup, result, isolated);
     if (isolated)
         for (LabOutcome& lab : result.labs) lab.notes.push_back(tr("grade.graded_alone"));
     else
@@ -322,6 +370,7 @@ GradeResult gradeImages(const GradeSetup& setup, const fs::path& folder) {
             if (entry.path().extension() == ".png" && !setup.references.find(entry.path().stem().string()))
                 result.problems.push_back(tr("grade.picture_ignored", {{"file", entry.path().filename().string()}}));
     scoreLabs(setup.labs, result);
+    addDiagnoses(setup, result, false);
     return result;
 }
 

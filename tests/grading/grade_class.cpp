@@ -116,8 +116,8 @@ TEST_CASE("grade-class builds and grades each student; a compile error costs onl
     const fs::path build = fs::path(RAYLAB_GRADING_BIN).parent_path() / "grading-class-build"; // kept: faster next time
     REQUIRE(gradeClass(root / "class", root / "out", build) == 0);
     const std::string csv = slurp(root / "out" / "grades.csv");
-    CHECK_MESSAGE(csv.find("\nalice,10,16,24,12,12,74,74,\n") != std::string::npos, csv);
-    CHECK_MESSAGE(csv.find("\nbob,10,16,0,12,12,50,74,") != std::string::npos, csv);
+    CHECK_MESSAGE(csv.find("\nalice,10,16,24,12,13,75,75,\n") != std::string::npos, csv);
+    CHECK_MESSAGE(csv.find("\nbob,10,16,0,12,13,51,75,") != std::string::npos, csv);
     CHECK(csv.find("sphere_geometry.cpp") != std::string::npos); // the compiler's message
     CHECK(fs::exists(root / "out" / "students" / "bob" / "report" / "index.html"));
     CHECK(fs::exists(root / "out" / "students" / "alice" / "report" / "results.json"));

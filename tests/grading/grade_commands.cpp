@@ -152,7 +152,7 @@ TEST_CASE("grade --lab N grades that lab alone") {
                                      dir);
     CHECK_MESSAGE(run.status == 0, run.output); // the mistake is in lab 1
     CHECK(run.output.find("lab1") == std::string::npos);
-    CHECK(hasLine(run.output, "  total: 12 / 12", ""));
+    CHECK(hasLine(run.output, "  total: 13 / 13", ""));
 }
 
 TEST_CASE("a French grade speaks French only: the reference, the stubs and a mistake") {
@@ -166,7 +166,7 @@ TEST_CASE("a French grade speaks French only: the reference, the stubs and a mis
         if (agent == "raylab-agent-reference") CHECK(run.status == 0);
         if (agent == "raylab-agent") CHECK(run.output.find("pas encore écrit\u00A0: écrivez") != std::string::npos);
         if (agent == "raylab-mistake-fovy_not_halved") {
-            CHECK(run.output.find("E2.1 «\u00A0fovy non divisé par deux\u00A0» (TP 2)") != std::string::npos);
+            CHECK(run.output.find("E2.1 «\u00A0fovy non divisé par deux\u00A0» (TP 2, PerspectiveCamera::updateViewport (perspective_camera.cpp))") != std::string::npos);
             CHECK(run.output.find("1,154701") != std::string::npos); // a decimal comma
         }
     }

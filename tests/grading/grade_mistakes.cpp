@@ -1,16 +1,33 @@
-// Every classic mistake is caught by the check the catalogue expects, and a figure it changes is
-// diagnosed as that mistake.
+// Every classic mistake is caught by the check the catalogue expects, a figure it changes is
+// diagnosed as that mistake (with its lab, function and formula, and no other lab blamed), and no
+// hint names a cause the code does not have.
 #include "grading_support.h"
 
 #include <algorithm>
+#include <map>
 
 using namespace raylab::test;
 
 TEST_SUITE("mistakes") {
 
+// What the hints must not say for a mistake, by check-name prefix: a cause the code does not have.
+struct WrongCause {
+    std::string checks; // the checks concerned: their names start with this
+    std::string text;   // it must not appear in their messages
+};
+
+const std::map<std::string, std::vector<WrongCause>> kWrongCauses{
+    // The root choice, not the discriminant: the far-sphere checks must not blame the cancellation.
+    {"far_root_first", {{"intersect", "lost to rounding"}, {"intersect", "loses digits"}}},
+    // A viewport mistake: generateRay inherits it and must not repeat generateRay's formula.
+    {"degrees_as_radians", {{"generateRay", "sy goes down against v"}, {"generateRay", "topLeft includes"}}},
+    {"fovy_not_halved", {{"generateRay", "sy goes down against v"}, {"generateRay", "topLeft includes"}}},
+    {"aspect_inverted", {{"generateRay", "sy goes down against v"}, {"generateRay", "topLeft includes"}}},
+};
+
 TEST_CASE("each catalogued mistake is caught and named") {
     const GradeSetup setup = courseSetup();
-    REQUIRE(setup.mistakes.size() >= 13);
+    REQUIRE(setup.mistakes.size() >= 19);
     for (const Mistake& m : setup.mistakes) {
         CAPTURE(m.id);
         GradeSetup own = courseSetup();
@@ -26,14 +43,31 @@ TEST_CASE("each catalogued mistake is caught and named") {
             if (lab.lab != m.lab && std::find(uses.begin(), uses.end(), m.lab) == uses.end())
                 CHECK_MESSAGE(lab.points == lab.maxPoints, "lab " << lab.lab << failures(r));
         }
+        if (const auto wrong = kWrongCauses.find(m.id); wrong != kWrongCauses.end())
+            for (const CheckOutcome& c : r.checks)
+                for (const WrongCause& cause : wrong->second)
+                    if (c.name.rfind(cause.checks, 0) == 0)
+                        CHECK_MESSAGE(c.message.find(cause.text) == std::string::npos,
+                                      c.name << " names a cause the code does not have: " << c.message);
+        const std::string where = "(lab " + std::to_string(m.lab) + ", " + m.function + ")";
         int named = 0, failing = 0;
         std::string seen;
         for (const FigureOutcome& f : r.figures) {
             if (f.passed) continue;
             ++failing;
             seen += "\n  " + f.id + ": " + (f.diagnosis.empty() ? "(no diagnosis)" : f.diagnosis);
-            if (f.diagnosis.find("'" + m.name() + "'") != std::string::npos) ++named;
-            else CHECK_MESSAGE(f.diagnosis.empty(), f.id << " is diagnosed as another mistake: " << f.diagnosis);
+            if (f.diagnosis.find("'" + m.name() + "'") != std::string::npos) {
+                ++named;
+                CHECK_MESSAGE(f.diagnosis.find(where) != std::string::npos, f.id << " does not say " << where);
+                CHECK_MESSAGE(f.diagnosis.find(m.hint()) != std::string::npos, f.id << " does not give the formula");
+            } else {
+                CHECK_MESSAGE(f.diagnosis.empty(), f.id << " is diagnosed as another mistake: " << f.diagnosis);
+            }
+            // Only the mistaken lab is blamed, even by a mistake that draws the same picture.
+            for (int lab = 1; lab <= 5; ++lab)
+                if (lab != m.lab)
+                    CHECK_MESSAGE(f.diagnosis.find("(lab " + std::to_string(lab) + ",") == std::string::npos,
+                                  f.id << " blames lab " << lab << ": " << f.diagnosis);
         }
         if (!m.signatures.empty()) CHECK_MESSAGE(named >= 1, m.id << ": no figure names it" << seen);
         MESSAGE(m.id << ": " << failing << " figures fail, " << named << " name it" << seen);

@@ -105,3 +105,42 @@ TEST_CASE("without the reference, grading is cumulative and names the earlier la
 }
 
 } // TEST_SUITE
+
+// Issue 11: a lab is graded on its own code. A student who did lab N alone (every other lab the
+// handed-out stub) is graded cumulatively as in the students' tree; with the earlier labs from the
+// reference (solutions/ present), lab N gets every point: no check of a lab needs a later lab.
+TEST_SUITE("grade reference") {
+
+TEST_CASE("each lab alone, the other labs stubs: its own points, and no circular advice") {
+    const GradeSetup setup = courseSetup();
+    for (int lab : setup.labs.numbers()) {
+        CAPTURE(lab);
+        const GradeResult alone = gradeAgent(courseSetup(), "raylab-alone-lab" + std::to_string(lab));
+        const GradeResult overReference =
+            gradeAgent(courseSetup(), "raylab-alone-over-reference-lab" + std::to_string(lab));
+        const LabDescription& description = *setup.labs.lab(lab);
+        for (const LabOutcome& outcome : overReference.labs)
+            if (outcome.lab == lab)
+                CHECK_MESSAGE(outcome.points == outcome.maxPoints, "over the reference" << failures(overReference));
+        // With the other labs stubs, only what uses an earlier lab may fail, and then the note says so.
+        for (const CheckOutcome& c : alone.checks)
+            if (c.lab == lab && !c.passed)
+                CHECK_MESSAGE(!description.check(c.name)->uses.empty(), c.name << ": " << c.message);
+        for (const FigureOutcome& f : alone.figures)
+            if (f.lab == lab && !f.passed)
+                CHECK_MESSAGE(!description.figure(f.id)->uses.empty(), f.id << ": " << f.reason);
+        for (const LabOutcome& outcome : alone.labs) {
+            if (outcome.lab == lab && description.uses.empty())
+                CHECK_MESSAGE(outcome.points == outcome.maxPoints, failures(alone));
+            for (const std::string& note : outcome.notes) {
+                CAPTURE(note);
+                // "lab N uses lab K ... fix lab K first": always an earlier lab, never the correct one.
+                CHECK(note.find("fix lab " + std::to_string(lab) + " first") == std::string::npos);
+                for (int later = outcome.lab + 1; later <= 9; ++later)
+                    CHECK(note.find("fix lab " + std::to_string(later) + " first") == std::string::npos);
+            }
+        }
+    }
+}
+
+} // TEST_SUITE

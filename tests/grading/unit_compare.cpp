@@ -123,26 +123,44 @@ TEST_CASE("statistical: a few wild pixels are outliers") {
 }
 
 TEST_CASE("diagnosis: the closest signature is named when it fits, and only then") {
-    Mistake dark{"dark", "too dark", "trop sombre", "brighten it", "éclaircissez-la", "", 3, "", {{"fig", downsample(flat(16, 16, 10, 10, 10))}}};
-    Mistake red{"red", "all red", "toute rouge", "less red", "moins de rouge", "", 3, "", {{"fig", downsample(flat(16, 16, 250, 0, 0))}}};
+    Mistake dark{"dark", "too dark", "trop sombre", "brighten it", "éclaircissez-la", "", 3, "shade (shade.cpp)", "", {{"fig", downsample(flat(16, 16, 10, 10, 10))}}};
+    Mistake red{"red", "all red", "toute rouge", "less red", "moins de rouge", "", 3, "shade (shade.cpp)", "", {{"fig", downsample(flat(16, 16, 250, 0, 0))}}};
     const std::vector<Mistake> catalogue{dark, red};
     const Image8 reference = flat(16, 16, 100, 100, 100);
-    const Diagnosis d = diagnose(catalogue, "fig", flat(16, 16, 11, 10, 9), reference);
+    const auto anyMistake = [](const Mistake&) { return true; };
+    const Diagnosis d = diagnose(catalogue, "fig", flat(16, 16, 11, 10, 9), reference, anyMistake);
     REQUIRE(d.mistake != nullptr);
     CHECK(d.mistake->id == "dark");
     raylab::setLanguage(raylab::Language::En);
-    CHECK(d.text() == "your image matches 'too dark' (lab 3): brighten it");
+    CHECK(d.text() == "your image matches 'too dark' (lab 3, shade (shade.cpp)): brighten it");
     raylab::setLanguage(raylab::Language::Fr);
-    CHECK(d.text() == "votre image correspond à l'erreur «\u00A0trop sombre\u00A0» (TP 3)\u00A0: éclaircissez-la");
+    CHECK(d.text() == "votre image correspond à l'erreur «\u00A0trop sombre\u00A0» (TP 3, shade (shade.cpp))\u00A0: éclaircissez-la");
     std::vector<Mistake> labelled{dark}; // numbered in the handouts: M3.4 in English, E3.4 in French
     labelled[0].label = "3.4";
-    CHECK(diagnose(labelled, "fig", flat(16, 16, 11, 10, 9), reference).text() ==
-          "votre image correspond à l'erreur E3.4 «\u00A0trop sombre\u00A0» (TP 3)\u00A0: éclaircissez-la");
+    CHECK(diagnose(labelled, "fig", flat(16, 16, 11, 10, 9), reference, anyMistake).text() ==
+          "votre image correspond à l'erreur E3.4 «\u00A0trop sombre\u00A0» (TP 3, shade (shade.cpp))\u00A0: éclaircissez-la");
     raylab::setLanguage(raylab::Language::En);
-    CHECK(diagnose(labelled, "fig", flat(16, 16, 11, 10, 9), reference).text() ==
-          "your image matches M3.4 'too dark' (lab 3): brighten it");
-    CHECK(diagnose(catalogue, "fig", flat(16, 16, 60, 60, 60), reference).mistake == nullptr);
-    CHECK(diagnose(catalogue, "other", flat(16, 16, 10, 10, 10), reference).mistake == nullptr);
+    CHECK(diagnose(labelled, "fig", flat(16, 16, 11, 10, 9), reference, anyMistake).text() ==
+          "your image matches M3.4 'too dark' (lab 3, shade (shade.cpp)): brighten it");
+    CHECK(diagnose(catalogue, "fig", flat(16, 16, 60, 60, 60), reference, anyMistake).mistake == nullptr);
+    CHECK(diagnose(catalogue, "other", flat(16, 16, 10, 10, 10), reference, anyMistake).mistake == nullptr);
+}
+
+TEST_CASE("diagnosis: only the suspects are named") {
+    const Image8 reference = flat(16, 16, 100, 100, 100), student = flat(16, 16, 10, 10, 10);
+    Mistake own{"own", "dim", "sombre", "brighten it", "éclaircissez-la", "", 4, "lookAt", "", {{"fig", downsample(flat(16, 16, 12, 12, 12))}}};
+    Mistake earlier{"earlier", "dark", "noire", "brighten it", "éclaircissez-la", "", 2, "camera", "", {{"fig", downsample(student)}}};
+    const std::vector<Mistake> catalogue{own, earlier};
+    const auto ofLabs = [](std::vector<int> labs) {
+        return [labs](const Mistake& m) { return std::find(labs.begin(), labs.end(), m.lab) != labs.end(); };
+    };
+    // Lab 2 is right (or came from the reference): its closer signature is not a candidate.
+    const Diagnosis alone = diagnose(catalogue, "fig", student, reference, ofLabs({4}));
+    REQUIRE(alone.mistake != nullptr);
+    CHECK(alone.mistake->id == "own");
+    CHECK(alone.alike == nullptr);
+    CHECK(diagnose(catalogue, "fig", student, reference, ofLabs({2, 4})).mistake->id == "earlier");
+    CHECK(diagnose(catalogue, "fig", student, reference, ofLabs({})).mistake == nullptr);
 }
 
 } // TEST_SUITE

@@ -23,9 +23,11 @@ struct Camera {
     double viewportWidth() const { return viewportHeight() * width / height; }
     // The default frame: u = (-1, 0, 0), v = (0, 1, 0), looking along +z (docs/conventions.md).
     glm::dvec3 topLeft() const { return position + glm::dvec3(viewportWidth() / 2., viewportHeight() / 2., 1.); }
-    glm::dvec3 direction(double sx, double sy) const {
-        return glm::normalize(topLeft() + sx * viewportWidth() * glm::dvec3(-1., 0., 0.) -
-                              sy * viewportHeight() * glm::dvec3(0., 1., 0.) - position);
+    glm::dvec3 direction(double sx, double sy) const { return direction(sx, sy, viewportHeight(), viewportWidth()); }
+    // Through a viewport of this height and width in front of the camera (the student's own, say).
+    static glm::dvec3 direction(double sx, double sy, double height, double width) {
+        return glm::normalize(glm::dvec3(width / 2., height / 2., 1.) + sx * width * glm::dvec3(-1., 0., 0.) -
+                              sy * height * glm::dvec3(0., 1., 0.));
     }
     protocol::Call viewport() const { return {Probe::Viewport, {double(width), double(height), fovy}}; }
     protocol::Call ray(double sx, double sy) const {
@@ -60,15 +62,37 @@ struct Point {
     std::string name;
 };
 
-void expectRays(Judge& judge, const Camera& c, const std::vector<Point>& points,
-                const std::vector<std::vector<double>>& out, std::size_t first) {
+// The viewport the student's updateViewport gave a camera's size and fovy.
+struct SeenViewport {
+    double height, width;
+    bool right; // as updateViewport's checks want it
+    SeenViewport(const Camera& c, const std::vector<double>& out) {
+        Outputs o(out);
+        height = o.number();
+        width = o.number();
+        right = std::abs(height - c.viewportHeight()) <= 1e-5 && std::abs(width - c.viewportWidth()) <= 1e-5;
+    }
+};
+
+// generateRay is judged on its own code: when the student's viewport is wrong (updateViewport's
+// checks fail and say why), the rays are expected through that viewport, and a failure's hint
+// says generateRay inherits the viewport's mistake rather than repeat its formula.
+void expectRays(Judge& judge, const Camera& c, const SeenViewport& viewport, const std::vector<Point>& points,
+                const std::vector<std::vector<double>>& out, std::size_t first,
+                const std::string& hint = tr("hint.lab2.ray_direction")) {
+    const std::string inherited =
+        tr("hint.lab2.inherited_viewport", {{"height", show(viewport.height)}, {"width", show(viewport.width)}});
     for (std::size_t k = 0; k < points.size(); ++k) {
         Outputs o(out[first + k]);
         const Point& p = points[k];
+        const std::string what = tr("what.lab2.ray_direction_at", {{"point", p.name}});
         judge.expectNear(tr("what.lab2.ray_origin_at", {{"point", p.name}}), o.vec3(), c.position, 1e-6,
                          tr("hint.lab2.ray_origin"));
-        judge.expectNear(tr("what.lab2.ray_direction_at", {{"point", p.name}}), o.vec3(), c.direction(p.sx, p.sy), 1e-5,
-                         tr("hint.lab2.ray_direction"));
+        if (viewport.right)
+            judge.expectNear(what, o.vec3(), c.direction(p.sx, p.sy), 1e-5, hint);
+        else
+            judge.expectNear(tr("what.lab2.through_viewport", {{"what", what}}), o.vec3(),
+                             Camera::direction(p.sx, p.sy, viewport.height, viewport.width), 1e-5, inherited);
     }
 }
 
@@ -114,10 +138,14 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         calls.push_back(handout.ray(p.sx, p.sy));
     for (const Point& p : drawnPoints)
         calls.push_back(other.ray(p.sx, p.sy));
+    calls.push_back(handout.viewport());
+    calls.push_back(other.viewport());
     checks.push_back({2, "generateRay: the centre and the four corners of the default camera", calls,
                       [handout, other, corners, drawnPoints, fixedCorners](const auto& out, Judge& judge) {
-                          expectRays(judge, handout, corners, out, 0);
-                          expectRays(judge, other, drawnPoints, out, fixedCorners);
+                          const std::size_t viewports = fixedCorners + drawnPoints.size();
+                          expectRays(judge, handout, SeenViewport(handout, out[viewports]), corners, out, 0);
+                          expectRays(judge, other, SeenViewport(other, out[viewports + 1]), drawnPoints, out,
+                                     fixedCorners);
                       }});
 
     const Camera unit{640, 480, 75.};
@@ -148,18 +176,14 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const double sx = CaseRandom::asFloat(random.uniform(0., 1.)), sy = CaseRandom::asFloat(random.uniform(0., 1.));
     checks.push_back({2,
                       "generateRay: a camera away from the origin starts its rays at its position",
-                      {away.ray(0., 0.), drawnAway.ray(sx, sy)},
+                      {away.ray(0., 0.), drawnAway.ray(sx, sy), away.viewport(), drawnAway.viewport()},
                       [away, drawnAway, sx, sy](const auto& out, Judge& judge) {
-                          const std::string hint = tr("hint.lab2.away_direction");
-                          for (const auto& [c, o, x, y] :
-                               {std::tuple{away, out[0], 0., 0.}, std::tuple{drawnAway, out[1], sx, sy}}) {
-                              Outputs ray(o);
-                              const std::string at = show(c.position);
-                              judge.expectNear(tr("what.lab2.away_origin", {{"position", at}}), ray.vec3(), c.position,
-                                               1e-5, tr("hint.lab2.away_origin"));
-                              judge.expectNear(tr("what.lab2.away_direction", {{"sx", show(x)}, {"sy", show(y)}, {"position", at}}),
-                                               ray.vec3(), c.direction(x, y), 1e-5, hint);
-                          }
+                          for (const auto& [c, o, viewport, x, y] :
+                               {std::tuple{away, out[0], out[2], 0., 0.}, std::tuple{drawnAway, out[1], out[3], sx, sy}})
+                              expectRays(judge, c, SeenViewport(c, viewport),
+                                         {{x, y, tr("what.lab2.away_point", {{"sx", show(x)}, {"sy", show(y)},
+                                                                             {"position", show(c.position)}})}},
+                                         {o}, 0, tr("hint.lab2.away_direction"));
                       }});
 }
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 namespace raylab::grader {
 
@@ -51,6 +52,16 @@ protocol::Call call(const Case& c) {
     return {Probe::Intersect, in};
 }
 
+// The two roots of the ray's line on the sphere, in double (nullopt when it misses the line).
+std::optional<std::pair<double, double>> roots(const Sphere& s, const Ray& r) {
+    const glm::dvec3 oc = r.origin - s.centre;
+    const double a = glm::dot(r.direction, r.direction), b = glm::dot(oc, r.direction);
+    const double disc = b * b - a * (glm::dot(oc, oc) - s.radius * s.radius);
+    if (disc < 0.) return std::nullopt;
+    return std::pair{(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a};
+}
+
+
 bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
     Outputs o(out);
     const bool found = o.number() != 0.;
@@ -61,7 +72,12 @@ bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
             judge.fail(c.what, tr("what.lab3.hit_at", {{"t", show(c.t)}}), tr("what.lab3.no_hit"), c.hint);
             return false;
         }
-        return judge.expectNear(c.what + ", t", t, c.t, c.tolerance, c.hint) &&
+        // The hint names the cause the outputs show: a far root where the near one was due is the root
+        // choice, whatever the check is about.
+        const auto line = roots(c.sphere, c.ray);
+        const bool farRoot = line && std::abs(c.t - line->second) > c.tolerance &&
+                             std::abs(t - line->second) <= c.tolerance && line->first >= c.tMin;
+        return judge.expectNear(c.what + ", t", t, c.t, c.tolerance, farRoot ? tr("hint.lab3.far_root") : c.hint) &&
                judge.expectNear(c.what + ", hit.position", position, c.ray.at(c.t), c.tolerance * 2.,
                                 tr("hint.lab3.position"));
     }
@@ -80,6 +96,29 @@ void addIntersect(std::vector<FunctionCheck>& checks, const std::string& name, s
     checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
                           for (std::size_t k = 0; k < cases.size(); ++k)
                               judgeCase(judge, cases[k], out[k]);
+                      }});
+}
+
+// A far sphere's cases, judged after a near sphere confirms the root choice: the discriminant's
+// cancellation is blamed only when the near root is taken where it should be, and the hint says
+// what the near sphere showed otherwise.
+void addFarIntersect(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<Case> cases) {
+    const Case nearSphere{"", kSphere, {{0., 0., 0.}, {0., 0., 1.}}, 0., kInf, 2., 1e-5, ""};
+    std::vector<protocol::Call> calls{call(nearSphere)};
+    for (const Case& c : cases)
+        calls.push_back(call(c));
+    checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
+                          Outputs near(out[0]);
+                          const bool found = near.number() != 0.;
+                          const double t = near.number();
+                          const bool rootChoiceRight = found && std::abs(t - 2.) <= 1e-5;
+                          for (std::size_t k = 0; k < cases.size(); ++k) {
+                              Case c = cases[k];
+                              if (!rootChoiceRight)
+                                  c.hint = tr("hint.lab3.near_first", {{"got", found ? "t = " + show(t) : tr("what.lab3.no_hit")}}) +
+                                           (found && std::abs(t - 4.) <= 1e-5 ? tr("hint.lab3.and_far_root") : "");
+                              judgeCase(judge, c, out[k + 1]);
+                          }
                       }});
 }
 
@@ -259,7 +298,7 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         const Sphere far{{0., 0., 1000.}, 1.};
         const double offset = CaseRandom::asFloat(random.uniform(0., 0.9));
         const std::string hint = tr("hint.lab3.far_1000");
-        addIntersect(checks, "intersect: a sphere 1000 radii away",
+        addFarIntersect(checks, "intersect: a sphere 1000 radii away",
                      {{tr("what.lab3.at_radius", {{"offset", show(0.5)}}),
                        far,
                        {{0.5, 0., 0.}, {0., 0., 1.}},
@@ -288,7 +327,7 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     {
         const Sphere far{{0., 0., 10000.}, 1.};
         const std::string hint = tr("hint.lab3.far_10000");
-        addIntersect(
+        addFarIntersect(
             checks, "intersect: a sphere 10000 radii away keeps its silhouette",
             {{tr("what.lab3.at_radii", {{"offset", show(1.1)}}), far, {{1.1, 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
              {tr("what.lab3.at_radius", {{"offset", show(0.9)}}),

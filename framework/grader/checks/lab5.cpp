@@ -5,6 +5,7 @@
 
 #include "raylab/messages.h"
 
+#include <cmath>
 #include <set>
 #include <utility>
 
@@ -110,6 +111,36 @@ void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                                                std::to_string(distinct[k].samples), std::to_string(points.size()),
                                                tr("hint.lab5.next2d"));
                           }
+                      }});
+
+    // Two pixels, each with its own sampler: the same offsets in both is a pattern reused in every
+    // pixel (docs/grading.md: a mistake here, whatever its seed).
+    // The first pixel is a fixed case, the second drawn (never the same pixel).
+    const int otherI = random.integer(3, 15), otherJ = random.integer(0, 15);
+    const std::vector<Pixel> twoPixels{{16, 16, 2, 5, 8, 11},
+                                       {16, 16, otherI, otherJ, 8, std::uint64_t(random.integer(0, 1 << 30))}};
+    calls.clear();
+    for (const Pixel& p : twoPixels)
+        calls.push_back(p.call());
+    checks.push_back({5, "renderPixel: each pixel takes its own offsets", calls, [twoPixels](const auto& out, Judge& judge) {
+                          std::vector<std::vector<std::pair<double, double>>> offsets;
+                          for (std::size_t k = 0; k < twoPixels.size(); ++k) {
+                              const Pixel& p = twoPixels[k];
+                              offsets.emplace_back();
+                              const Rendered rendered(out[k]);
+                              for (const auto& [sx, sy] : rendered.points)
+                                  offsets.back().emplace_back(sx * p.width - p.i, sy * p.height - p.j);
+                          }
+                          // (i + x) / W in float, read back: the same x within 1e-5 pixel at these sizes.
+                          bool same = offsets[0].size() == offsets[1].size() && !offsets[0].empty();
+                          for (std::size_t k = 0; same && k < offsets[0].size(); ++k)
+                              same = std::abs(offsets[0][k].first - offsets[1][k].first) <= 1e-5 &&
+                                     std::abs(offsets[0][k].second - offsets[1][k].second) <= 1e-5;
+                          judge.expectTrue(tr("what.lab5.own_offsets", {{"pixel", twoPixels[0].name()},
+                                                                        {"i", std::to_string(twoPixels[1].i)},
+                                                                        {"j", std::to_string(twoPixels[1].j)}}),
+                                           !same, tr("what.lab5.different_offsets"), tr("what.lab5.same_offsets"),
+                                           tr("hint.lab5.own_offsets"));
                       }});
 }
 
