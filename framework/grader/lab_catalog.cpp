@@ -101,6 +101,94 @@ bool contains(const std::vector<int>& list, int value) {
     return std::find(list.begin(), list.end(), value) != list.end();
 }
 
+toml::table parseToml(const fs::path& file) {
+    try {
+        return toml::parse_file(file.string());
+    } catch (const toml::parse_error& e) {
+        throw std::runtime_error(file.string() + ":" + std::to_string(e.source().begin.line) +
+                                 ": not valid TOML: " + std::string(e.description()));
+    }
+}
+
+// The lab's number, id (its folder's name, "labN_..."), titles and the labs it uses.
+void readHeading(const Reader& r, const toml::table& root, const fs::path& file, LabDescription& lab) {
+    const toml::node* number = root.get("number");
+    if (number == nullptr || !number->is_integer() || number->value_or(int64_t(0)) < 1)
+        r.fail(number != nullptr ? number : &root, "number", "expected the lab's number, an integer >= 1");
+    lab.number = int(number->value_or(int64_t(0)));
+    lab.id = r.text(root, "", "id");
+    const std::string folder = file.parent_path().filename().string();
+    if (lab.id != folder) r.fail(root.get("id"), "id", "\"" + lab.id + "\" is not the folder's name, " + folder);
+    const std::string prefix = "lab" + std::to_string(lab.number) + "_";
+    if (lab.id.rfind(prefix, 0) != 0)
+        r.fail(root.get("id"), "id",
+               "\"" + lab.id + "\" must begin with " + prefix + " (number = " + std::to_string(lab.number) + ")");
+    std::tie(lab.titleEn, lab.titleFr) = r.inTwoLanguages(root, "", "title");
+    lab.uses = r.labs(root, "").value_or(std::vector<int>{});
+    if (contains(lab.uses, lab.number)) r.fail(root.get("uses"), "uses", "a lab does not use itself");
+}
+
+std::vector<LabFunction> readFunctions(const Reader& r, const toml::table& root, const fs::path& file) {
+    return r.list<LabFunction>(root, "function", [&](const toml::table& t, const std::string& where) {
+        r.onlyKeys(t, where, {"file", "name"});
+        LabFunction f{r.text(t, where, "file"), r.text(t, where, "name")};
+        std::error_code error;
+        if (!fs::is_regular_file(file.parent_path() / f.file, error))
+            r.fail(t.get("file"), where + "file", "no file " + f.file + " beside " + file.filename().string());
+        return f;
+    });
+}
+
+// An item uses what it says, which must be among the lab's `uses`.
+std::vector<int> itemUses(const Reader& r, const LabDescription& lab, const toml::table& t, const std::string& where,
+                          const std::vector<int>& fallback) {
+    const std::vector<int> uses = r.labs(t, where).value_or(fallback);
+    for (int other : uses)
+        if (!contains(lab.uses, other))
+            r.fail(t.get("uses"), where + "uses", "lab " + std::to_string(other) + " is not in the lab's uses");
+    return uses;
+}
+
+std::vector<LabFigure> readFigures(const Reader& r, const toml::table& root, const LabDescription& lab,
+                                   const fs::path& scenes) {
+    return r.list<LabFigure>(root, "figure", [&](const toml::table& t, const std::string& where) {
+        r.onlyKeys(t, where, {"id", "scene", "handout", "caption", "points", "uses"});
+        LabFigure f;
+        f.id = r.text(t, where, "id");
+        f.scene = scenes / r.text(t, where, "scene");
+        if (f.scene.stem().string() != f.id || f.scene.extension() != ".toml")
+            r.fail(t.get("scene"), where + "scene",
+                   "expected " + f.id + ".toml (a figure's id is its scene file's name)");
+        std::error_code error;
+        if (!fs::is_regular_file(f.scene, error))
+            r.fail(t.get("scene"), where + "scene", "no scene file " + f.scene.string());
+        f.handout = r.text(t, where, "handout");
+        std::tie(f.captionEn, f.captionFr) = r.inTwoLanguages(t, where, "caption");
+        f.points = r.points(t, where);
+        f.uses = itemUses(r, lab, t, where, lab.uses);
+        return f;
+    });
+}
+
+std::vector<LabCheck> readChecks(const Reader& r, const toml::table& root, const LabDescription& lab) {
+    return r.list<LabCheck>(root, "check", [&](const toml::table& t, const std::string& where) {
+        r.onlyKeys(t, where, {"name", "points", "uses"});
+        LabCheck c{r.text(t, where, "name"), r.points(t, where), itemUses(r, lab, t, where, {})};
+        if (c.name.find_first_of(",*?") != std::string::npos)
+            r.fail(t.get("name"), where + "name", "\"" + c.name + "\": doctest's filters split names on , * ?");
+        return c;
+    });
+}
+
+// Figure ids and check names share one namespace within a lab.
+void rejectDuplicateNames(const Reader& r, const toml::table& root, const LabDescription& lab) {
+    std::map<std::string, int> seen;
+    for (const LabFigure& f : lab.figures)
+        if (seen[f.id]++) r.fail(root.get("figure"), "figure", "the id " + f.id + " is there twice");
+    for (const LabCheck& c : lab.checks)
+        if (seen[c.name]++) r.fail(root.get("check"), "check", "the name \"" + c.name + "\" is there twice");
+}
+
 } // namespace
 
 const LabFigure* LabDescription::figure(const std::string& wanted) const {
@@ -151,77 +239,16 @@ double LabCatalog::figurePoints(const std::string& id, double fallback) const {
 }
 
 LabDescription loadLabDescription(const fs::path& file, const fs::path& scenes) {
-    toml::table root;
-    try {
-        root = toml::parse_file(file.string());
-    } catch (const toml::parse_error& e) {
-        throw std::runtime_error(file.string() + ":" + std::to_string(e.source().begin.line) +
-                                 ": not valid TOML: " + std::string(e.description()));
-    }
+    const toml::table root = parseToml(file);
     const Reader r(file);
     r.onlyKeys(root, "", {"number", "id", "title", "uses", "function", "figure", "check"});
     LabDescription lab;
     lab.file = file;
-    const toml::node* number = root.get("number");
-    if (number == nullptr || !number->is_integer() || number->value_or(int64_t(0)) < 1)
-        r.fail(number != nullptr ? number : &root, "number", "expected the lab's number, an integer >= 1");
-    lab.number = int(number->value_or(int64_t(0)));
-    lab.id = r.text(root, "", "id");
-    const std::string folder = file.parent_path().filename().string();
-    if (lab.id != folder) r.fail(root.get("id"), "id", "\"" + lab.id + "\" is not the folder's name, " + folder);
-    const std::string prefix = "lab" + std::to_string(lab.number) + "_";
-    if (lab.id.rfind(prefix, 0) != 0)
-        r.fail(root.get("id"), "id",
-               "\"" + lab.id + "\" must begin with " + prefix + " (number = " + std::to_string(lab.number) + ")");
-    std::tie(lab.titleEn, lab.titleFr) = r.inTwoLanguages(root, "", "title");
-    lab.uses = r.labs(root, "").value_or(std::vector<int>{});
-    if (contains(lab.uses, lab.number)) r.fail(root.get("uses"), "uses", "a lab does not use itself");
-
-    lab.functions = r.list<LabFunction>(root, "function", [&](const toml::table& t, const std::string& where) {
-        r.onlyKeys(t, where, {"file", "name"});
-        LabFunction f{r.text(t, where, "file"), r.text(t, where, "name")};
-        std::error_code error;
-        if (!fs::is_regular_file(file.parent_path() / f.file, error))
-            r.fail(t.get("file"), where + "file", "no file " + f.file + " beside " + file.filename().string());
-        return f;
-    });
-    // An item uses what it says, which must be among the lab's `uses`.
-    const auto itemUses = [&](const toml::table& t, const std::string& where, const std::vector<int>& fallback) {
-        const std::vector<int> uses = r.labs(t, where).value_or(fallback);
-        for (int other : uses)
-            if (!contains(lab.uses, other))
-                r.fail(t.get("uses"), where + "uses", "lab " + std::to_string(other) + " is not in the lab's uses");
-        return uses;
-    };
-    lab.figures = r.list<LabFigure>(root, "figure", [&](const toml::table& t, const std::string& where) {
-        r.onlyKeys(t, where, {"id", "scene", "handout", "caption", "points", "uses"});
-        LabFigure f;
-        f.id = r.text(t, where, "id");
-        f.scene = scenes / r.text(t, where, "scene");
-        if (f.scene.stem().string() != f.id || f.scene.extension() != ".toml")
-            r.fail(t.get("scene"), where + "scene",
-                   "expected " + f.id + ".toml (a figure's id is its scene file's name)");
-        std::error_code error;
-        if (!fs::is_regular_file(f.scene, error))
-            r.fail(t.get("scene"), where + "scene", "no scene file " + f.scene.string());
-        f.handout = r.text(t, where, "handout");
-        std::tie(f.captionEn, f.captionFr) = r.inTwoLanguages(t, where, "caption");
-        f.points = r.points(t, where);
-        f.uses = itemUses(t, where, lab.uses);
-        return f;
-    });
-    lab.checks = r.list<LabCheck>(root, "check", [&](const toml::table& t, const std::string& where) {
-        r.onlyKeys(t, where, {"name", "points", "uses"});
-        LabCheck c{r.text(t, where, "name"), r.points(t, where), itemUses(t, where, {})};
-        if (c.name.find_first_of(",*?") != std::string::npos)
-            r.fail(t.get("name"), where + "name", "\"" + c.name + "\": doctest's filters split names on , * ?");
-        return c;
-    });
-    std::map<std::string, int> seen;
-    for (const LabFigure& f : lab.figures)
-        if (seen[f.id]++) r.fail(root.get("figure"), "figure", "the id " + f.id + " is there twice");
-    for (const LabCheck& c : lab.checks)
-        if (seen[c.name]++) r.fail(root.get("check"), "check", "the name \"" + c.name + "\" is there twice");
+    readHeading(r, root, file, lab);
+    lab.functions = readFunctions(r, root, file);
+    lab.figures = readFigures(r, root, lab, scenes);
+    lab.checks = readChecks(r, root, lab);
+    rejectDuplicateNames(r, root, lab);
     return lab;
 }
 

@@ -30,6 +30,7 @@ struct Ray {
 };
 
 const Sphere kSphere{{0., 0., 3.}, 1.};
+const Ray kAlongZ{{0., 0., 0.}, {0., 0., 1.}}; // from the origin towards kSphere
 
 // One intersect call and what it must give: a hit at t, or a miss (t < 0).
 struct Case {
@@ -103,7 +104,7 @@ void addIntersect(std::vector<FunctionCheck>& checks, const std::string& name, s
 // cancellation is blamed only when the near root is taken where it should be, and the hint says
 // what the near sphere showed otherwise.
 void addFarIntersect(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<Case> cases) {
-    const Case nearSphere{"", kSphere, {{0., 0., 0.}, {0., 0., 1.}}, 0., kInf, 2., 1e-5, ""};
+    const Case nearSphere{"", kSphere, kAlongZ, 0., kInf, 2., 1e-5, ""};
     std::vector<protocol::Call> calls{call(nearSphere)};
     for (const Case& c : cases)
         calls.push_back(call(c));
@@ -201,16 +202,13 @@ void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vec
                       }});
 }
 
-} // namespace
-
-void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
-    const Ray alongZ{{0., 0., 0.}, {0., 0., 1.}};
+void addIntersectChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     {
         const std::string hint = tr("hint.lab3.quadratic");
         const Sphere s = drawnSphere(random);
         const Ray r = rayTowards(random, s, 0.);
         addIntersect(checks, "intersect: a ray through the centre hits the near side",
-                     {{tr("what.lab3.origin_along_z"), kSphere, alongZ, 0., kInf, 2., 1e-5, hint},
+                     {{tr("what.lab3.origin_along_z"), kSphere, kAlongZ, 0., kInf, 2., 1e-5, hint},
                       {tr("what.lab3.towards_centre", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf,
                        *nearestHit(s, r), 1e-4, hint}});
     }
@@ -277,8 +275,8 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     }
     addIntersect(
         checks, "intersect: tMin and tMax bound the hit",
-        {{tr("what.lab3.t_max", {{"t", show(1.5)}}), kSphere, alongZ, 0., 1.5, -1., 0., tr("hint.lab3.t_max")},
-         {tr("what.lab3.t_min", {{"t", show(2.5)}}), kSphere, alongZ, 2.5, kInf, 4., 1e-5, tr("hint.lab3.t_min")}});
+        {{tr("what.lab3.t_max", {{"t", show(1.5)}}), kSphere, kAlongZ, 0., 1.5, -1., 0., tr("hint.lab3.t_max")},
+         {tr("what.lab3.t_min", {{"t", show(2.5)}}), kSphere, kAlongZ, 2.5, kInf, 4., 1e-5, tr("hint.lab3.t_min")}});
     {
         const std::string hint = tr("hint.lab3.not_unit");
         const double scale = CaseRandom::asFloat(random.uniform(0.3, 5.));
@@ -339,30 +337,34 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
               0.02,
               hint}});
     }
-    {
-        const Sphere big{{1., 2., 3.}, 2.}, drawn = drawnSphere(random);
-        const glm::dvec3 n = random.unitVector(), point = CaseRandom::asFloat(drawn.centre + n * drawn.radius);
-        const std::vector<std::pair<Sphere, glm::dvec3>> cases{
-            {kSphere, {0., 0., 2.}}, {big, {1., 2., 5.}}, {drawn, point}};
-        std::vector<protocol::Call> calls;
-        for (const auto& [s, p] : cases) {
-            std::vector<double> in;
-            appendInputs(in, s.centre);
-            in.push_back(s.radius);
-            appendInputs(in, p);
-            calls.push_back({Probe::ComputeNormal, in});
-        }
-        checks.push_back(
-            {3, "computeNormal: unit and pointing outwards", calls, [cases](const auto& out, Judge& judge) {
-                 judge.expectNear(tr("what.lab3.normal_at", {{"point", show(glm::dvec3(0., 0., 2.))}}),
-                                  Outputs(out[0]).vec3(), {0., 0., -1.}, 1e-6, tr("hint.lab3.normal_outwards"));
-                 judge.expectNear(tr("what.lab3.normal_radius_2", {{"point", show(glm::dvec3(1., 2., 5.))}}),
-                                  Outputs(out[1]).vec3(), {0., 0., 1.}, 1e-6, tr("hint.lab3.normal_unit"));
-                 const auto& [s, p] = cases[2];
-                 judge.expectNear(tr("what.lab3.normal_of", {{"point", show(p)}, {"sphere", describe(s)}}),
-                                  Outputs(out[2]).vec3(), (p - s.centre) / s.radius, 1e-5, tr("hint.lab3.normal"));
-             }});
+}
+
+void addNormalCheck(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    const Sphere big{{1., 2., 3.}, 2.}, drawn = drawnSphere(random);
+    const glm::dvec3 n = random.unitVector(), point = CaseRandom::asFloat(drawn.centre + n * drawn.radius);
+    const std::vector<std::pair<Sphere, glm::dvec3>> cases{
+        {kSphere, {0., 0., 2.}}, {big, {1., 2., 5.}}, {drawn, point}};
+    std::vector<protocol::Call> calls;
+    for (const auto& [s, p] : cases) {
+        std::vector<double> in;
+        appendInputs(in, s.centre);
+        in.push_back(s.radius);
+        appendInputs(in, p);
+        calls.push_back({Probe::ComputeNormal, in});
     }
+    checks.push_back(
+        {3, "computeNormal: unit and pointing outwards", calls, [cases](const auto& out, Judge& judge) {
+             judge.expectNear(tr("what.lab3.normal_at", {{"point", show(glm::dvec3(0., 0., 2.))}}),
+                              Outputs(out[0]).vec3(), {0., 0., -1.}, 1e-6, tr("hint.lab3.normal_outwards"));
+             judge.expectNear(tr("what.lab3.normal_radius_2", {{"point", show(glm::dvec3(1., 2., 5.))}}),
+                              Outputs(out[1]).vec3(), {0., 0., 1.}, 1e-6, tr("hint.lab3.normal_unit"));
+             const auto& [s, p] = cases[2];
+             judge.expectNear(tr("what.lab3.normal_of", {{"point", show(p)}, {"sphere", describe(s)}}),
+                              Outputs(out[2]).vec3(), (p - s.centre) / s.radius, 1e-5, tr("hint.lab3.normal"));
+         }});
+}
+
+void addLiChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const Sphere drawn = drawnSphere(random);
     const glm::dvec3 colour = CaseRandom::asFloat(random.vec3(0.1, 1.)),
                      background = CaseRandom::asFloat(random.vec3(0., 1.));
@@ -373,7 +375,7 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         const std::string hitHint = tr("hint.lab3.flat_hit");
         const std::string missHint = tr("hint.lab3.flat_miss");
         addLi(checks, "Li: flat shading sees the sphere's colour or the background",
-              {{tr("what.lab3.flat_z"), kFlat, kSphere, kBlue, kGrey, alongZ, 1e-6, hitHint},
+              {{tr("what.lab3.flat_z"), kFlat, kSphere, kBlue, kGrey, kAlongZ, 1e-6, hitHint},
                {tr("what.lab3.flat_x"),
                 kFlat,
                 kSphere,
@@ -389,7 +391,7 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         const std::string hint = tr("hint.lab3.cosine");
         // From (0.6, 0, 0) along +z: the hit is (0.6, 0, 2.2), n = (0.6, 0, -0.8), -d.n = 0.8.
         addLi(checks, "Li: cosine shading is colour times the cosine -d.n",
-              {{tr("what.lab3.cosine_z"), kCosine, kSphere, kBlue, kGrey, alongZ, 1e-5, tr("hint.lab3.cosine_facing")},
+              {{tr("what.lab3.cosine_z"), kCosine, kSphere, kBlue, kGrey, kAlongZ, 1e-5, tr("hint.lab3.cosine_facing")},
                {tr("what.lab3.cosine_from", {{"origin", show(glm::dvec3(0.6, 0., 0.))}}),
                 kCosine,
                 kSphere,
@@ -402,9 +404,18 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                 1e-4, hint}});
     }
     addLi(checks, "Li: the placeholder normal faces the ray",
-          {{tr("what.lab3.placeholder_z"), kPlaceholder, kSphere, kBlue, kGrey, alongZ, 1e-5, tr("hint.lab3.placeholder")},
+          {{tr("what.lab3.placeholder_z"), kPlaceholder, kSphere, kBlue, kGrey, kAlongZ, 1e-5, tr("hint.lab3.placeholder")},
            {tr("what.lab3.placeholder_drawn", {{"origin", show(hitting.origin)}, {"scene", drawnScene}}), kPlaceholder,
             drawn, colour, background, hitting, 1e-5, tr("hint.lab3.placeholder")}});
+}
+
+} // namespace
+
+// The draws happen in this order: intersect, computeNormal, then Li.
+void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    addIntersectChecks(checks, random);
+    addNormalCheck(checks, random);
+    addLiChecks(checks, random);
 }
 
 } // namespace raylab::grader
