@@ -53,6 +53,18 @@ fs::path makeClass(const std::string& name) {
     return root;
 }
 
+// A stub tree whose lab 3 is the reference solution, included from the grader's tree through the
+// framework's include folder (raylab/../../../ is the tree's root) when the grader has solutions/.
+void addStudentIncludingTheSolution(const fs::path& classDir) {
+    fs::copy(sourceDir() / "labs", classDir / "mallory", fs::copy_options::recursive);
+    std::ofstream(classDir / "mallory" / "lab3_sphere" / "sphere_geometry.cpp")
+        << "#if __has_include(\"raylab/../../../solutions/lab3_sphere/sphere_geometry.cpp\")\n"
+           "#include \"raylab/../../../solutions/lab3_sphere/sphere_geometry.cpp\"\n"
+           "#endif\n";
+    std::ofstream(classDir / "mallory" / "lab3_sphere" / "ray_cast_integrator.cpp")
+        << "#include \"raylab/../../../solutions/lab3_sphere/ray_cast_integrator.cpp\"\n";
+}
+
 } // namespace
 
 TEST_SUITE("commands") {
@@ -113,12 +125,19 @@ TEST_CASE("grade-class: students named like its own files (grades.csv, build) ar
 
 TEST_CASE("grade-class builds and grades each student; a compile error costs only its labs") {
     const fs::path root = makeClass("raylab-class-full");
+    addStudentIncludingTheSolution(root / "class");
     const fs::path build = fs::path(RAYLAB_GRADING_BIN).parent_path() / "grading-class-build"; // kept: faster next time
     REQUIRE(gradeClass(root / "class", root / "out", build) == 0);
     const std::string csv = slurp(root / "out" / "grades.csv");
     CHECK_MESSAGE(csv.find("\nalice,10,16,24,12,13,75,75,\n") != std::string::npos, csv);
     CHECK_MESSAGE(csv.find("\nbob,10,16,0,12,13,51,75,") != std::string::npos, csv);
     CHECK(csv.find("sphere_geometry.cpp") != std::string::npos); // the compiler's message
+#ifndef _WIN32
+    // The solution included from the grader's tree does not build: lab 3 gets nothing, and the
+    // message names the file read.
+    CHECK_MESSAGE(csv.find("\nmallory,0,0,0,0,0,0,75,") != std::string::npos, csv);
+    CHECK(csv.find("solutions/lab3_sphere/sphere_geometry.cpp, outside your submission") != std::string::npos);
+#endif
     CHECK(fs::exists(root / "out" / "students" / "bob" / "report" / "index.html"));
     CHECK(fs::exists(root / "out" / "students" / "alice" / "report" / "results.json"));
 }
