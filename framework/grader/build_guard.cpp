@@ -159,7 +159,7 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds) {
         for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
         args.push_back(nullptr);
         execvp(args[0], args.data());
-        std::fprintf(stderr, "raylab-build-guard: cannot run %s: %s\n", args[0], std::strerror(errno));
+        std::fprintf(stderr, "error: raylab-build-guard cannot run %s: %s\n", args[0], std::strerror(errno));
         _exit(127);
     }
     setpgid(pid, pid);

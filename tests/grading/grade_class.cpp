@@ -51,18 +51,13 @@ fs::path makeClass(const std::string& name) {
     fs::copy(sourceDir() / "solutions", root / "class" / "bob", fs::copy_options::recursive);
     std::ofstream(root / "class" / "bob" / "lab3_sphere" / "sphere_geometry.cpp", std::ios::app) << "\nnot C++ at all\n";
     return root;
-}
-
-// A stub tree whose lab 3 is the reference solution, included from the grader's tree through the
-// framework's include folder (raylab/../../../ is the tree's root) when the grader has solutions/.
-void addStudentIncludingTheSolution(const fs::path& classDir) {
-    fs::copy(sourceDir() / "labs", classDir / "mallory", fs::copy_options::recursive);
-    std::ofstream(classDir / "mallory" / "lab3_sphere" / "sphere_geometry.cpp")
-        << "#if __has_include(\"raylab/../../../solutions/lab3_sphere/sphere_geometry.cpp\")\n"
-           "#include \"raylab/../../../solutions/lab3_sphere/sphere_geometry.cpp\"\n"
+    // Bob's lab 4 is the reference, included from the grader's tree through the framework's include
+    // folder (raylab/../../../ is the tree's root): it must not build.
+    std::ofstream(root / "class" / "bob" / "lab4_lookat_camera" / "look_at.cpp")
+        << "#if __has_include(\"raylab/../../../solutions/lab4_lookat_camera/look_at.cpp\")\n"
+           "#include \"raylab/../../../solutions/lab4_lookat_camera/look_at.cpp\"\n"
            "#endif\n";
-    std::ofstream(classDir / "mallory" / "lab3_sphere" / "ray_cast_integrator.cpp")
-        << "#include \"raylab/../../../solutions/lab3_sphere/ray_cast_integrator.cpp\"\n";
+    return root;
 }
 
 } // namespace
@@ -125,19 +120,14 @@ TEST_CASE("grade-class: students named like its own files (grades.csv, build) ar
 
 TEST_CASE("grade-class builds and grades each student; a compile error costs only its labs") {
     const fs::path root = makeClass("raylab-class-full");
-    addStudentIncludingTheSolution(root / "class");
     const fs::path build = fs::path(RAYLAB_GRADING_BIN).parent_path() / "grading-class-build"; // kept: faster next time
     REQUIRE(gradeClass(root / "class", root / "out", build) == 0);
     const std::string csv = slurp(root / "out" / "grades.csv");
     CHECK_MESSAGE(csv.find("\nalice,10,16,24,12,13,75,75,\n") != std::string::npos, csv);
-    CHECK_MESSAGE(csv.find("\nbob,10,16,0,12,13,51,75,") != std::string::npos, csv);
+    // Lab 4 read the reference (raylab-build-guard): it does not build either, and the grade says why.
+    CHECK_MESSAGE(csv.find("\nbob,10,16,0,0,13,39,75,") != std::string::npos, csv);
+    CHECK(csv.find("solutions/lab4_lookat_camera/look_at.cpp, outside your submission") != std::string::npos);
     CHECK(csv.find("sphere_geometry.cpp") != std::string::npos); // the compiler's message
-#ifndef _WIN32
-    // The solution included from the grader's tree does not build: lab 3 gets nothing, and the
-    // message names the file read.
-    CHECK_MESSAGE(csv.find("\nmallory,0,0,0,0,0,0,75,") != std::string::npos, csv);
-    CHECK(csv.find("solutions/lab3_sphere/sphere_geometry.cpp, outside your submission") != std::string::npos);
-#endif
     CHECK(fs::exists(root / "out" / "students" / "bob" / "report" / "index.html"));
     CHECK(fs::exists(root / "out" / "students" / "alice" / "report" / "results.json"));
 }
