@@ -59,7 +59,8 @@ std::string errorLines(const fs::path& log) {
     for (std::string line; std::getline(in, line);) {
         if (const std::string refusal = guardRefusal(line); !refusal.empty()) line = "error: " + refusal;
         all += line + "\n";
-        const bool error = line.find("error") != std::string::npos || line.find("Error") != std::string::npos;
+        const bool error = line.find("error") != std::string::npos || line.find("Error") != std::string::npos ||
+                           line.find("out of memory") != std::string::npos; // cc1plus past the guard's limit
         if (error && errors.find(line + "\n") == std::string::npos && count++ < 40) errors += line + "\n"; // once each
     }
     if (!errors.empty()) return errors;
