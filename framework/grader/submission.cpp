@@ -1,6 +1,7 @@
 #include "grader/submission.h"
 
 #include "grader/process.h"
+#include "raylab/messages.h"
 
 #include <fstream>
 #include <functional>
@@ -36,14 +37,30 @@ fs::path cmakeSafe(const fs::path& labs, const fs::path& buildDir) {
     return link;
 }
 
+// A refusal of raylab-build-guard (build_guard.cpp), in the reader's language; empty for another line.
+std::string guardRefusal(const std::string& line) {
+    const std::string prefix = "raylab-build-guard: ";
+    if (line.rfind(prefix, 0) != 0) return "";
+    const std::size_t colon = line.find(": ", prefix.size());
+    if (colon == std::string::npos) return line;
+    const std::string why = line.substr(prefix.size(), colon - prefix.size()), rest = line.substr(colon + 2);
+    const std::size_t arrow = rest.find(" <- ");
+    const std::string source = rest.substr(0, arrow), read = arrow == std::string::npos ? "" : rest.substr(arrow + 4);
+    if (why == "outside") return tr("build.guard_outside", {{"source", source}, {"file", read}});
+    if (why == "stopped") return tr("build.guard_stopped", {{"source", source}});
+    return tr("build.guard_unchecked", {{"source", source}});
+}
+
 // The lines that say what went wrong, not the whole log.
 std::string errorLines(const fs::path& log) {
     std::ifstream in(log);
     std::string all, errors;
     int count = 0;
     for (std::string line; std::getline(in, line);) {
+        if (const std::string refusal = guardRefusal(line); !refusal.empty()) line = "error: " + refusal;
         all += line + "\n";
-        const bool error = line.find("error") != std::string::npos || line.find("Error") != std::string::npos;
+        const bool error = line.find("error") != std::string::npos || line.find("Error") != std::string::npos ||
+                           line.find("out of memory") != std::string::npos; // cc1plus past the guard's limit
         if (error && errors.find(line + "\n") == std::string::npos && count++ < 40) errors += line + "\n"; // once each
     }
     if (!errors.empty()) return errors;

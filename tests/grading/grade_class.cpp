@@ -51,6 +51,13 @@ fs::path makeClass(const std::string& name) {
     fs::copy(sourceDir() / "solutions", root / "class" / "bob", fs::copy_options::recursive);
     std::ofstream(root / "class" / "bob" / "lab3_sphere" / "sphere_geometry.cpp", std::ios::app) << "\nnot C++ at all\n";
     return root;
+    // Bob's lab 4 is the reference, included from the grader's tree through the framework's include
+    // folder (raylab/../../../ is the tree's root): it must not build.
+    std::ofstream(root / "class" / "bob" / "lab4_lookat_camera" / "look_at.cpp")
+        << "#if __has_include(\"raylab/../../../solutions/lab4_lookat_camera/look_at.cpp\")\n"
+           "#include \"raylab/../../../solutions/lab4_lookat_camera/look_at.cpp\"\n"
+           "#endif\n";
+    return root;
 }
 
 } // namespace
@@ -117,7 +124,9 @@ TEST_CASE("grade-class builds and grades each student; a compile error costs onl
     REQUIRE(gradeClass(root / "class", root / "out", build) == 0);
     const std::string csv = slurp(root / "out" / "grades.csv");
     CHECK_MESSAGE(csv.find("\nalice,10,16,24,12,13,75,75,\n") != std::string::npos, csv);
-    CHECK_MESSAGE(csv.find("\nbob,10,16,0,12,13,51,75,") != std::string::npos, csv);
+    // Lab 4 read the reference (raylab-build-guard): it does not build either, and the grade says why.
+    CHECK_MESSAGE(csv.find("\nbob,10,16,0,0,13,39,75,") != std::string::npos, csv);
+    CHECK(csv.find("solutions/lab4_lookat_camera/look_at.cpp, outside your submission") != std::string::npos);
     CHECK(csv.find("sphere_geometry.cpp") != std::string::npos); // the compiler's message
     CHECK(fs::exists(root / "out" / "students" / "bob" / "report" / "index.html"));
     CHECK(fs::exists(root / "out" / "students" / "alice" / "report" / "results.json"));

@@ -1,0 +1,208 @@
+// raylab-build-guard: the compiler launcher of a submission's lab files (POSIX; see
+// framework/grader/CMakeLists.txt). A submission is code we compile before any sandbox runs it, so
+// the compiler is where it can reach what it must not:
+//  - `#include "raylab/../../../solutions/lab3_sphere/sphere_geometry.cpp"` (or a classmate's
+//    file) would grade the reference as the student's work: every file the compiler read must lie
+//    in an allowed folder (the submission, the stubs, the include folders of the command line, the
+//    compiler's own), checked on the dependency file the compiler writes, after symlinks;
+//  - `#include "/dev/zero"` or a template that never ends would stall a class run: the compiler runs
+//    under CPU, memory and file-size limits and a wall-clock limit, in a process group of its own
+//    that is killed whole.
+// Usage: raylab-build-guard [--allow DIR]... [--wall-seconds N] -- COMPILER ARGS...
+// A refusal is one line `raylab-build-guard: <why>: <source>[ <- <file read>]` on stderr, <why> one of `outside`,
+// `stopped`, `no-depfile` (the grader says it in the student's language, grader/submission.cpp),
+// and exit status 1, with the object file removed.
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A lab file compiles in a few seconds; these are far beyond any honest one.
+constexpr rlim_t kCpuSeconds = 120;
+constexpr unsigned kWallSeconds = 300; // --wall-seconds N (the tests)
+constexpr rlim_t kMemoryBytes = rlim_t(2) << 30;
+constexpr rlim_t kFileBytes = rlim_t(1) << 30;
+
+volatile std::sig_atomic_t g_compiler = 0; // the compiler's process group, once started
+volatile std::sig_atomic_t g_timedOut = 0;
+
+extern "C" void onAlarm(int) {
+    g_timedOut = 1;
+    if (g_compiler > 0) kill(-pid_t(g_compiler), SIGKILL);
+}
+
+// Ctrl-C or a stop reaches us (we are in the build's process group), not the compiler's group.
+extern "C" void onStop(int signal) {
+    if (g_compiler > 0) kill(-pid_t(g_compiler), SIGKILL);
+    std::signal(signal, SIG_DFL);
+    raise(signal);
+}
+
+int refuse(const char* why, const std::string& source, const std::string& object, const std::string& read = "") {
+    std::fprintf(stderr, "raylab-build-guard: %s: %s%s%s\n", why, source.c_str(), read.empty() ? "" : " <- ", read.c_str());
+    std::error_code ignored;
+    if (!object.empty()) fs::remove(object, ignored);
+    return 1;
+}
+
+struct Command {
+    std::vector<fs::path> allowed;
+    unsigned wallSeconds = kWallSeconds;
+    std::vector<std::string> compiler; // the compiler and its arguments
+    std::string object, depfile;       // -o and -MF, when given
+};
+
+std::optional<Command> parse(int argc, char** argv) {
+    Command c;
+    int k = 1;
+    for (; k < argc && std::strcmp(argv[k], "--") != 0; ++k) {
+        if (k + 1 >= argc) return std::nullopt;
+        if (std::strcmp(argv[k], "--allow") == 0) c.allowed.emplace_back(argv[++k]);
+        else if (std::strcmp(argv[k], "--wall-seconds") == 0) c.wallSeconds = unsigned(std::atoi(argv[++k]));
+        else return std::nullopt;
+    }
+    if (c.wallSeconds == 0) return std::nullopt;
+    if (k + 1 >= argc) return std::nullopt;
+    c.compiler.assign(argv + k + 1, argv + argc);
+    // The include folders of the command line are allowed (CMake writes them; the submission cannot).
+    const std::vector<std::string> includeFlags{"-I", "-isystem", "-iquote", "-idirafter"};
+    for (std::size_t i = 1; i < c.compiler.size(); ++i) {
+        const std::string& a = c.compiler[i];
+        const bool hasNext = i + 1 < c.compiler.size();
+        if (a == "-o" && hasNext) c.object = c.compiler[i + 1];
+        if (a == "-MF" && hasNext) c.depfile = c.compiler[i + 1];
+        for (const std::string& flag : includeFlags) {
+            if (a == flag && hasNext) c.allowed.emplace_back(c.compiler[i + 1]);
+            else if (a.size() > flag.size() && a.compare(0, flag.size(), flag) == 0 && flag == "-I")
+                c.allowed.emplace_back(a.substr(flag.size()));
+        }
+    }
+    return c;
+}
+
+// The files a Make-style dependency file lists after its target: `obj: a.cpp b.h \` ...
+std::vector<std::string> dependencies(const std::string& depfile) {
+    std::ifstream in(depfile, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<std::string> files;
+    std::string word;
+    bool pastTarget = false;
+    const auto flush = [&] {
+        if (word.empty()) return;
+        if (pastTarget) files.push_back(word);
+        else if (word.back() == ':') pastTarget = true;
+        word.clear();
+    };
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char ch = text[i];
+        if (ch == '\\' && i + 1 < text.size() && (text[i + 1] == '\n' || text[i + 1] == '\r')) {
+            flush();
+            ++i;
+        } else if (ch == '\\' && i + 1 < text.size() && (text[i + 1] == ' ' || text[i + 1] == '#')) {
+            word += text[++i];
+        } else if (ch == '$' && i + 1 < text.size() && text[i + 1] == '$') {
+            word += text[++i];
+        } else if (ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r') {
+            flush();
+        } else {
+            word += ch;
+        }
+    }
+    flush();
+    return files;
+}
+
+bool isWithin(const fs::path& file, const fs::path& folder) {
+    const auto [end, _] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
+    return end == folder.end();
+}
+
+fs::path resolved(const fs::path& path) {
+    std::error_code error;
+    const fs::path real = fs::weakly_canonical(fs::absolute(path), error);
+    return error ? fs::absolute(path).lexically_normal() : real;
+}
+
+// Runs the compiler under the limits; its exit status, or -1 when it was stopped.
+int compile(const std::vector<std::string>& argv, unsigned wallSeconds) {
+    const pid_t pid = fork();
+    if (pid < 0) return 127;
+    if (pid == 0) {
+        setpgid(0, 0);
+#ifdef __linux__
+        prctl(PR_SET_PDEATHSIG, SIGKILL); // the driver dies with us (its compiler keeps the CPU limit)
+#endif
+        const rlimit cpu{kCpuSeconds, kCpuSeconds}, memory{kMemoryBytes, kMemoryBytes}, file{kFileBytes, kFileBytes};
+        setrlimit(RLIMIT_CPU, &cpu);
+        setrlimit(RLIMIT_AS, &memory);
+        setrlimit(RLIMIT_FSIZE, &file);
+        std::vector<char*> args;
+        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        execvp(args[0], args.data());
+        std::fprintf(stderr, "error: raylab-build-guard cannot run %s: %s\n", args[0], std::strerror(errno));
+        _exit(127);
+    }
+    setpgid(pid, pid);
+    g_compiler = pid;
+    alarm(wallSeconds);
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    alarm(0);
+    kill(-pid, SIGKILL); // whatever the driver left in its group
+    if (g_timedOut) return -1;
+    if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL)) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const std::optional<Command> command = parse(argc, argv);
+    if (!command) {
+        std::fprintf(stderr, "usage: raylab-build-guard [--allow DIR]... [--wall-seconds N] -- COMPILER ARGS...\n");
+        return 2;
+    }
+    struct sigaction alarmAction {};
+    alarmAction.sa_handler = onAlarm; // no SA_RESTART: the wait returns
+    sigaction(SIGALRM, &alarmAction, nullptr);
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, onStop);
+
+    std::string source = command->object.empty() ? command->compiler.front() : command->object;
+    for (std::size_t i = 0; i + 1 < command->compiler.size(); ++i)
+        if (command->compiler[i] == "-c") source = command->compiler[i + 1];
+    const int status = compile(command->compiler, command->wallSeconds);
+    if (status < 0)
+        return refuse("stopped", source, command->object);
+    if (status != 0) return status;
+    if (command->depfile.empty()) return refuse("no-depfile", source, command->object);
+
+    std::vector<fs::path> allowed;
+    for (const fs::path& folder : command->allowed) allowed.push_back(resolved(folder));
+    for (const std::string& file : dependencies(command->depfile)) {
+        const fs::path real = resolved(file);
+        const bool inside = std::any_of(allowed.begin(), allowed.end(), [&](const fs::path& f) { return isWithin(real, f); });
+        if (!inside) return refuse("outside", source, command->object, real.string());
+    }
+    return 0;
+}
