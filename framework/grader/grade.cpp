@@ -71,7 +71,7 @@ FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& refer
     }
     if (!fs::is_regular_file(file, error)) // a pipe or a device would block the read, or never end
         return figureAtZero(setup, reference,
-                            "not a PNG file: " + file.string() + " is not a regular file (a pipe, a device or a folder)");
+                            tr("grade.picture_not_file", {{"file", file.string()}}));
     {
         std::ifstream in(file, std::ios::binary);
         std::array<char, 8> magic{};
@@ -93,7 +93,7 @@ FigureOutcome gradePicture(const GradeSetup& setup, const FigureReference& refer
 void addBuildProblem(GradeResult& result, const std::vector<int>& unbuilt, const std::string& buildMessage) {
     if (unbuilt.empty()) return;
     std::string labs;
-    for (int lab : unbuilt) labs.append(" ").append(std::to_string(lab));
+    for (int lab : unbuilt) labs.append(labs.empty() ? "" : " ").append(std::to_string(lab));
     result.problems.push_back(tr("grade.labs_do_not_build", {{"labs", labs}}) + "\n" + buildMessage);
 }
 
