@@ -1,6 +1,8 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "grader/process.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -86,9 +88,7 @@ bool Context::ranInOtherImpl() {
     }
     std::vector<std::string> args{program.string()};
     for (int k = 1; k < argc; ++k) args.emplace_back(argv[k]);
-    std::vector<char*> cargs;
-    for (std::string& a : args) cargs.push_back(a.data());
-    cargs.push_back(nullptr);
+    const std::vector<char*> cargs = grader::argumentPointers(args);
     std::fflush(stdout);
 #ifdef _WIN32
     const auto status = _spawnv(_P_WAIT, program.string().c_str(), cargs.data());

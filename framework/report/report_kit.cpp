@@ -3,6 +3,7 @@
 #include "grader/grade.h"
 #include "grader/report.h"
 #include "grader/submission.h"
+#include "raylab/atomic_file.h"
 #include "raylab/figure.h"
 #include "raylab/image_io.h"
 #include "report/difference_map.h"
@@ -23,17 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace raylab::grader;
-
-// A whole file or none: written beside, then renamed over the old one.
-void writeFileAtomically(const fs::path& file, const std::string& content) {
-    const fs::path partial = file.string() + ".partial";
-    {
-        std::ofstream out(partial, std::ios::binary);
-        out << content;
-        if (!out.flush()) throw std::runtime_error("cannot write " + partial.string());
-    }
-    fs::rename(partial, file);
-}
 
 std::string readFile(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
