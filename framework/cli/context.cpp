@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 #ifdef _WIN32
@@ -55,11 +56,26 @@ void Context::addImplOption(CLI::App* command) {
         ->check(CLI::IsMember({"student", "reference"}));
 }
 
+void addTimingCommand(CLI::App& app, Context& context, const std::string& name, const std::string& description,
+                      int repeats, TimingRun run) {
+    auto repeatsOption = std::make_shared<int>(repeats);
+    CLI::App* command = app.add_subcommand(name, description);
+    context.addImplOption(command);
+    command->add_option("--repeats", *repeatsOption, "renders per measurement (the median is shown)")
+        ->check(CLI::Range(1, 100));
+    context.addRenderOptions(command);
+    command->callback([&context, repeatsOption, run] {
+        if (!context.ranInOtherImpl()) context.exitStatus = run(context.scenes, context.threads, *repeatsOption);
+    });
+}
+
 std::filesystem::path labsFolder() { return std::filesystem::path(build::kSourceDir) / "labs"; }
 
 std::filesystem::path referencesFolder() {
     return std::filesystem::path(build::kSourceDir) / "framework/grader/data/references";
 }
+
+grader::LabCatalog courseLabs() { return grader::loadLabCatalog(labsFolder(), build::kScenesDir); }
 
 CLI::App* studyCommand(CLI::App& app) {
     try {

@@ -48,9 +48,9 @@ std::vector<KitFigure> renderFigures(const ReportRequest& request, const LabCata
     for (const LabDescription& lab : labs.labs)
         for (const LabFigure& f : lab.figures) handoutOrder.emplace(f.id, handoutOrder.size());
     std::vector<KitFigure> figures;
-    for (const SceneDescription& d : loadSceneFolder(request.scenes)) {
+    for (const SceneDescription& d : loadFiguresInLabOrder(request.scenes, labs)) {
         const FigureResult r = renderScene(d, RenderOptions{request.threads, request.progress});
-        KitFigure f{d.id, d.lab, r.status == FigureResult::Status::Rendered, r.message, r.stats, d.width, d.height};
+        KitFigure f{d.id, labs.labNumberOfFigure(d.id), r.status == FigureResult::Status::Rendered, r.message, r.stats, d.width, d.height};
         if (r.status == FigureResult::Status::Failed) f.message = "failed: " + r.message;
         if (f.rendered) {
             images[d.id] = quantize(*r.image);
