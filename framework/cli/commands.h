@@ -2,13 +2,15 @@
 // The raylab subcommands. Each file adds its own subcommands to the program's CLI11 app; their
 // callbacks set the exit status in the shared context.
 
-#include "grader/lab_catalog.h"
-
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <string>
 #include <vector>
+
+namespace raylab::grader {
+struct LabCatalog;
+}
 
 namespace raylab::cli {
 

@@ -1,6 +1,7 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "grader/lab_catalog.h"
 #include "grader/process.h"
 
 #include <charconv>

@@ -1,6 +1,8 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "grader/lab_catalog.h"
+
 #include "raylab/atomic_file.h"
 #include "raylab/contact_sheet.h"
 #include "raylab/figure.h"

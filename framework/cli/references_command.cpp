@@ -5,6 +5,7 @@
 
 #include "grader/compare.h"
 #include "grader/diagnosis.h"
+#include "grader/lab_catalog.h"
 #include "grader/reference_render.h"
 #include "grader/references.h"
 #include "grader/grade.h"
