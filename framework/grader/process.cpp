@@ -3,7 +3,6 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
-#include <cstdio>
 #include <cstring>
 
 #ifdef _WIN32
@@ -106,7 +105,6 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOpti
         startup.hStdError = out;
     }
     PROCESS_INFORMATION process{};
-    std::fflush(nullptr);
     const std::wstring folder = options.workingDirectory.wstring();
     const BOOL ok = CreateProcessW(nullptr, commandLine.data(), nullptr, nullptr, TRUE, 0, nullptr,
                                    folder.empty() ? nullptr : folder.c_str(), &startup, &process);
@@ -165,7 +163,6 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOpti
     if (!options.workingDirectory.empty())
         posix_spawn_file_actions_addchdir_np(&actions, options.workingDirectory.c_str());
     pid_t pid = -1;
-    std::fflush(nullptr);
     const int error = posix_spawnp(&pid, cargs[0], &actions, nullptr, cargs.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     if (error != 0) {

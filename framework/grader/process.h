@@ -24,7 +24,7 @@ struct ProcessResult {
 };
 
 // Runs argv[0] (searched in PATH when it names no folder) with argv[1...], stdin from the null
-// device, and waits for it. What we printed before is flushed first, so it comes before its output.
+// device, and waits for it.
 ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOptions& options = {});
 
 // `args` as exec and spawn take them: a pointer to each argument's characters, then a null pointer
