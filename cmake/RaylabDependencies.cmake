@@ -7,45 +7,47 @@ function(raylab_missing what debian homebrew vcpkg)
                       "  Windows:       vcpkg install ${vcpkg}   (then configure with the vcpkg toolchain file)\n")
 endfunction()
 
-find_package(glm CONFIG QUIET)
-if(NOT TARGET glm::glm)
-  raylab_missing("GLM (vector maths)" libglm-dev glm glm)
-endif()
+# raylab_require_package(PACKAGE TARGET WHAT DEBIAN HOMEBREW VCPKG): PACKAGE's CMake package, unless
+# TARGET is already there; stops with raylab_missing's advice when TARGET is still missing.
+macro(raylab_require_package package target what debian homebrew vcpkg)
+  if(NOT TARGET ${target})
+    find_package(${package} CONFIG QUIET)
+  endif()
+  if(NOT TARGET ${target})
+    raylab_missing("${what}" ${debian} ${homebrew} ${vcpkg})
+  endif()
+endmacro()
 
-find_package(tomlplusplus CONFIG QUIET)
-if(NOT TARGET tomlplusplus::tomlplusplus)
-  raylab_missing("toml++ (scene files)" libtomlplusplus-dev tomlplusplus tomlplusplus)
-endif()
+# raylab_pkg_check(PREFIX ARGS...): pkg_check_modules(PREFIX QUIET ARGS...) where pkg-config is
+# installed; elsewhere PREFIX_FOUND stays unset.
+macro(raylab_pkg_check prefix)
+  find_package(PkgConfig QUIET)
+  if(PkgConfig_FOUND)
+    pkg_check_modules(${prefix} QUIET ${ARGN})
+  endif()
+endmacro()
+
+raylab_require_package(glm glm::glm "GLM (vector maths)" libglm-dev glm glm)
+raylab_require_package(tomlplusplus tomlplusplus::tomlplusplus "toml++ (scene files)" libtomlplusplus-dev tomlplusplus
+                       tomlplusplus)
 
 # cmark (the report's Markdown to HTML): pkg-config first, since Debian's libcmark-dev ships a CMake
 # package that also wants the cmark program; elsewhere its CMake package.
-find_package(PkgConfig QUIET)
-if(PkgConfig_FOUND)
-  pkg_check_modules(CMARK QUIET IMPORTED_TARGET libcmark)
-endif()
+raylab_pkg_check(CMARK IMPORTED_TARGET libcmark)
 add_library(raylab_cmark INTERFACE)
 if(CMARK_FOUND)
   target_link_libraries(raylab_cmark INTERFACE PkgConfig::CMARK)
 else()
-  find_package(cmark CONFIG QUIET)
-  if(NOT TARGET cmark::cmark)
-    raylab_missing("cmark (the report's Markdown)" libcmark-dev cmark cmark)
-  endif()
+  raylab_require_package(cmark cmark::cmark "cmark (the report's Markdown)" libcmark-dev cmark cmark)
   target_link_libraries(raylab_cmark INTERFACE cmark::cmark)
 endif()
 
-find_package(CLI11 CONFIG QUIET)
-if(NOT TARGET CLI11::CLI11)
-  raylab_missing("CLI11 (command line)" libcli11-dev cli11 cli11)
-endif()
+raylab_require_package(CLI11 CLI11::CLI11 "CLI11 (command line)" libcli11-dev cli11 cli11)
 
 # stb_image / stb_image_write: only their headers are taken (Debian's pkg-config stb also offers a
 # compiled libstb, not used); framework/src/stb_implementation.cpp compiles them, with zlib as the
 # PNG writer's deflate (docs/performance.md).
-find_package(PkgConfig QUIET)
-if(PkgConfig_FOUND)
-  pkg_check_modules(STB QUIET stb)
-endif()
+raylab_pkg_check(STB stb)
 find_path(STB_INCLUDE_DIR stb_image_write.h HINTS ${STB_INCLUDE_DIRS} PATH_SUFFIXES stb)
 if(NOT STB_INCLUDE_DIR)
   raylab_missing("stb (image files)" libstb-dev "stb" stb)
@@ -59,10 +61,8 @@ target_include_directories(raylab_stb SYSTEM PUBLIC ${STB_INCLUDE_DIR})
 target_link_libraries(raylab_stb PRIVATE ZLIB::ZLIB)
 
 if(BUILD_TESTING)
-  find_package(doctest CONFIG QUIET)
-  if(NOT TARGET doctest::doctest)
-    raylab_missing("doctest (tests; or configure with -DBUILD_TESTING=OFF)" doctest-dev doctest doctest)
-  endif()
+  raylab_require_package(doctest doctest::doctest "doctest (tests; or configure with -DBUILD_TESTING=OFF)" doctest-dev
+                         doctest doctest)
 endif()
 
 # Our own code compiles without warnings at these levels.

@@ -6,6 +6,7 @@
 #include "commands.h"
 
 #include "grader/autograder.h"
+#include "grader/process.h"
 #include "grader/report.h"
 #include "raylab/atomic_file.h"
 
@@ -64,9 +65,11 @@ int runGradescope(const Context& context) {
     try {
         const LabCatalog catalog = loadLabCatalog(labsFolder(), context.scenes);
         copySubmittedLabs(findSubmittedLabs(root / "submission", catalog), catalog, submitted);
-        const int status = runProgram(fs::path(build::kBinaryDir) / "raylab",
-                                      {"grade", "--labs", submitted.string(), "--build-dir", (tree / "build").string(),
-                                       "--report", results.string()});
+        std::fflush(stdout); // what we printed comes before what it prints
+        const int status = runProcess({(fs::path(build::kBinaryDir) / "raylab").string(), "grade", "--labs",
+                                       submitted.string(), "--build-dir", (tree / "build").string(), "--report",
+                                       results.string()})
+                               .exitCode;
         if (fs::exists(results / "results.json", error)) return 0;
         why = "the grader stopped (exit status " + std::to_string(status) + ") before it wrote the results";
     } catch (const std::exception& e) {

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <memory>
 #include <optional>
 #include <thread>
 #include <vector>
@@ -100,15 +99,9 @@ int runBench(const std::filesystem::path& scenes, int threads, int repeats) {
 } // namespace
 
 void addBenchCommand(CLI::App& app, Context& context) {
-    auto repeats = std::make_shared<int>(3);
-    CLI::App* bench = app.add_subcommand(
-        "bench", "primary rays per second on lab 5's scene at 1, 4, 16, 64 samples, beside a hand-written yardstick");
-    context.addImplOption(bench);
-    bench->add_option("--repeats", *repeats, "renders per measurement (the median is shown)")->check(CLI::Range(1, 100));
-    context.addRenderOptions(bench);
-    bench->callback([&context, repeats] {
-        if (!context.ranInOtherImpl()) context.exitStatus = runBench(context.scenes, context.threads, *repeats);
-    });
+    addTimingCommand(app, context, "bench",
+                     "primary rays per second on lab 5's scene at 1, 4, 16, 64 samples, beside a hand-written yardstick",
+                     3, runBench);
 }
 
 } // namespace raylab::cli

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -100,15 +99,9 @@ int runBenchEffects(const std::filesystem::path& scenes, int threads, int repeat
 } // namespace
 
 void addBenchEffectsCommand(CLI::App& app, Context& context) {
-    auto repeats = std::make_shared<int>(5);
-    CLI::App* bench = app.add_subcommand("bench-effects", "times pairs of scenes that differ in one effect: "
-                                                          "the one that asks for less must not be slower");
-    context.addImplOption(bench);
-    bench->add_option("--repeats", *repeats, "renders per measurement (the median is shown)")->check(CLI::Range(1, 100));
-    context.addRenderOptions(bench);
-    bench->callback([&context, repeats] {
-        if (!context.ranInOtherImpl()) context.exitStatus = runBenchEffects(context.scenes, context.threads, *repeats);
-    });
+    addTimingCommand(app, context, "bench-effects",
+                     "times pairs of scenes that differ in one effect: the one that asks for less must not be slower", 5,
+                     runBenchEffects);
 }
 
 } // namespace raylab::cli

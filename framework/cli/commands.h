@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+namespace raylab::grader {
+struct LabCatalog;
+}
+
 namespace raylab::cli {
 
 struct Context {
@@ -31,6 +35,9 @@ struct Context {
 // (labs/<lab>/lab.toml) and the grader's references (made by `raylab references`).
 std::filesystem::path labsFolder();
 std::filesystem::path referencesFolder();
+// The lab descriptions of labsFolder(), their figures' scene files in the tree's scenes/figures: what
+// says which lab a figure is, whichever folder --scenes names.
+grader::LabCatalog courseLabs();
 
 // The most render threads raylab starts (--threads): more only exhausts the system.
 inline constexpr int kMaxThreads = 1024;
@@ -39,6 +46,12 @@ inline constexpr int kMaxThreads = 1024;
 CLI::Validator threadCount();
 // A number of seconds: positive and finite (--timeout).
 CLI::Validator positiveSeconds();
+
+// A command that times renders (bench, bench-effects): --impl, --threads, --scenes and --repeats
+// (renders per measurement, `repeats` unless given); `run(scenes, threads, repeats)` is its exit status.
+using TimingRun = int (*)(const std::filesystem::path& scenes, int threads, int repeats);
+void addTimingCommand(CLI::App& app, Context& context, const std::string& name, const std::string& description,
+                      int repeats, TimingRun run);
 
 // The `study` subcommand, made by whichever study registers first; each study adds its own under it.
 CLI::App* studyCommand(CLI::App& app);

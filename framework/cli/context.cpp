@@ -1,11 +1,15 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "grader/lab_catalog.h"
+#include "grader/process.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 #ifdef _WIN32
@@ -53,11 +57,26 @@ void Context::addImplOption(CLI::App* command) {
         ->check(CLI::IsMember({"student", "reference"}));
 }
 
+void addTimingCommand(CLI::App& app, Context& context, const std::string& name, const std::string& description,
+                      int repeats, TimingRun run) {
+    auto repeatsOption = std::make_shared<int>(repeats);
+    CLI::App* command = app.add_subcommand(name, description);
+    context.addImplOption(command);
+    command->add_option("--repeats", *repeatsOption, "renders per measurement (the median is shown)")
+        ->check(CLI::Range(1, 100));
+    context.addRenderOptions(command);
+    command->callback([&context, repeatsOption, run] {
+        if (!context.ranInOtherImpl()) context.exitStatus = run(context.scenes, context.threads, *repeatsOption);
+    });
+}
+
 std::filesystem::path labsFolder() { return std::filesystem::path(build::kSourceDir) / "labs"; }
 
 std::filesystem::path referencesFolder() {
     return std::filesystem::path(build::kSourceDir) / "framework/grader/data/references";
 }
+
+grader::LabCatalog courseLabs() { return grader::loadLabCatalog(labsFolder(), build::kScenesDir); }
 
 CLI::App* studyCommand(CLI::App& app) {
     try {
@@ -86,9 +105,7 @@ bool Context::ranInOtherImpl() {
     }
     std::vector<std::string> args{program.string()};
     for (int k = 1; k < argc; ++k) args.emplace_back(argv[k]);
-    std::vector<char*> cargs;
-    for (std::string& a : args) cargs.push_back(a.data());
-    cargs.push_back(nullptr);
+    const std::vector<char*> cargs = grader::argumentPointers(args);
     std::fflush(stdout);
 #ifdef _WIN32
     const auto status = _spawnv(_P_WAIT, program.string().c_str(), cargs.data());

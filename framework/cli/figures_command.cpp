@@ -1,6 +1,8 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "grader/lab_catalog.h"
+
 #include "raylab/atomic_file.h"
 #include "raylab/contact_sheet.h"
 #include "raylab/figure.h"
@@ -67,7 +69,8 @@ struct FiguresOptions {
 // Renders figures, a line each. 1 if a figure failed or has NaN pixels, else 0: a figure waiting
 // for a lab not done yet is reported, not a failure.
 int runFigures(const FiguresOptions& o) {
-    std::vector<SceneDescription> scenes = loadSceneFolder(o.scenes);
+    const grader::LabCatalog labs = courseLabs();
+    std::vector<SceneDescription> scenes = grader::loadFiguresInLabOrder(o.scenes, labs);
     for (const std::string& id : o.only)
         if (std::none_of(scenes.begin(), scenes.end(), [&](const auto& d) { return d.id == id; })) {
             std::string known;
@@ -76,7 +79,7 @@ int runFigures(const FiguresOptions& o) {
         }
     std::erase_if(scenes, [&](const SceneDescription& d) {
         const bool wanted = o.only.empty() || std::find(o.only.begin(), o.only.end(), d.id) != o.only.end();
-        return !wanted || (o.lab != 0 && d.lab != o.lab);
+        return !wanted || (o.lab != 0 && labs.labNumberOfFigure(d.id) != o.lab);
     });
 
     std::printf("%s\n", tr("figures.header", {{"impl", tr(std::string("figures.impl_") + build::kImpl)}, {"origins", build::kLabOrigins}, {"folder", o.out.string()}})

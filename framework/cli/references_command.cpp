@@ -5,12 +5,14 @@
 
 #include "grader/compare.h"
 #include "grader/diagnosis.h"
+#include "grader/lab_catalog.h"
 #include "grader/reference_render.h"
 #include "grader/references.h"
 #include "grader/grade.h"
 
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 
 namespace raylab::cli {
 
@@ -67,8 +69,11 @@ void printReference(const SceneDescription& d, const RenderedReference& rendered
 
 int makeReferences(const fs::path& folder, const fs::path& scenes, const std::string& mistakesBin, int threads) {
     std::printf("raylab references: %s -> %s\n", build::kLabOrigins, folder.string().c_str());
-    for (const SceneDescription& d : loadSceneFolder(scenes)) {
-        const RenderedReference rendered = renderReference(d, threads);
+    const LabCatalog labs = courseLabs();
+    for (const SceneDescription& d : loadFiguresInLabOrder(scenes, labs)) {
+        const int lab = labs.labNumberOfFigure(d.id);
+        if (lab == 0) throw std::runtime_error(d.file.string() + ": no lab lists this figure (labs/*/lab.toml, [[figure]])");
+        const RenderedReference rendered = renderReference(d, lab, threads);
         printReference(d, rendered);
         writeReference(folder, rendered.reference);
     }

@@ -4,20 +4,12 @@
 #include <zip.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <random>
 #include <set>
 #include <stdexcept>
-#ifdef _WIN32
-#include <process.h>
-#else
-#include <spawn.h>
-#include <sys/wait.h>
-extern char** environ;
-#endif
 
 namespace raylab::grader {
 
@@ -268,26 +260,6 @@ void writeZip(const fs::path& zip, const std::vector<ZipEntry>& entries) {
     }
     archive.archive = nullptr;
     fs::rename(temporary, zip);
-}
-
-int runProgram(const fs::path& program, const std::vector<std::string>& args) {
-    std::vector<std::string> all{program.string()};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& a : all) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    std::fflush(stdout);
-#ifdef _WIN32
-    const auto status = _spawnv(_P_WAIT, program.string().c_str(), argv.data());
-    return status < 0 ? -1 : int(status);
-#else
-    pid_t child = 0;
-    if (posix_spawn(&child, program.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
-    int status = 0;
-    while (waitpid(child, &status, 0) < 0)
-        if (errno != EINTR) return -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-#endif
 }
 
 } // namespace raylab::grader

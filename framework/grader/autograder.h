@@ -71,7 +71,4 @@ struct ZipEntry {
 // Writes the archive whole: into a temporary file beside `zip`, renamed over it at the end.
 void writeZip(const std::filesystem::path& zip, const std::vector<ZipEntry>& entries);
 
-// Runs `program args...` (no shell), its output on ours; returns its exit status (-1: could not run).
-int runProgram(const std::filesystem::path& program, const std::vector<std::string>& args);
-
 } // namespace raylab::grader

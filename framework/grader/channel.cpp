@@ -7,56 +7,46 @@
 
 namespace raylab::grader {
 
-ResultChannel::ResultChannel(int fd, const std::string& file) {
+namespace {
+
+// A stream on our own copy of the descriptor `fd` when it is >= 0 (POSIX: closing the stream leaves
+// the parent's number alone), else on `file`; throws naming the `channel` ("result", "request").
+Stream openChannel(int fd, const std::string& file, const char* mode, const char* fileMode, const char* channel) {
 #ifndef _WIN32
     if (fd >= 0) {
-        // Our own copy of the descriptor: closing the FILE leaves the parent's number alone.
-        m_out = fdopen(dup(fd), "w");
-        if (!m_out) throw std::runtime_error("agent: cannot write to result descriptor " + std::to_string(fd));
-        return;
+        Stream stream(fdopen(dup(fd), mode));
+        if (!stream)
+            throw std::runtime_error(std::string("agent: cannot open the ") + channel + " descriptor " + std::to_string(fd));
+        return stream;
     }
 #else
     (void)fd;
+    (void)mode;
 #endif
-    m_out = std::fopen(file.c_str(), "a");
-    if (!m_out) throw std::runtime_error("agent: cannot open the result file " + file);
+    Stream stream(std::fopen(file.c_str(), fileMode));
+    if (!stream) throw std::runtime_error(std::string("agent: cannot open the ") + channel + " file " + file);
+    return stream;
 }
 
-RequestChannel::RequestChannel(int fd, const std::string& file) {
-#ifndef _WIN32
-    if (fd >= 0) {
-        m_in = fdopen(dup(fd), "r");
-        if (!m_in) throw std::runtime_error("agent: cannot read the request descriptor " + std::to_string(fd));
-        return;
-    }
-#else
-    (void)fd;
-#endif
-    m_in = std::fopen(file.c_str(), "r");
-    if (!m_in) throw std::runtime_error("agent: cannot open the request file " + file);
-}
+} // namespace
 
-RequestChannel::~RequestChannel() {
-    if (m_in) std::fclose(m_in);
-}
+ResultChannel::ResultChannel(int fd, const std::string& file) : m_out(openChannel(fd, file, "w", "a", "result")) {}
+
+RequestChannel::RequestChannel(int fd, const std::string& file) : m_in(openChannel(fd, file, "r", "r", "request")) {}
 
 bool RequestChannel::receive(std::string& line) {
     line.clear();
-    for (int c; (c = std::fgetc(m_in)) != EOF;) {
+    for (int c; (c = std::fgetc(m_in.get())) != EOF;) {
         if (c == '\n') return true;
         line += char(c);
     }
     return !line.empty();
 }
 
-ResultChannel::~ResultChannel() {
-    if (m_out) std::fclose(m_out);
-}
-
 void ResultChannel::send(const std::string& jsonLine) {
-    std::fputs(jsonLine.c_str(), m_out);
-    std::fputc('\n', m_out);
-    std::fflush(m_out);
+    std::fputs(jsonLine.c_str(), m_out.get());
+    std::fputc('\n', m_out.get());
+    std::fflush(m_out.get());
 }
 
 } // namespace raylab::grader

@@ -5,38 +5,39 @@
 // cannot pass for an answer.
 
 #include <cstdio>
+#include <memory>
 #include <string>
 
 namespace raylab::grader {
+
+// A stdio stream, closed when it goes.
+struct CloseStream {
+    void operator()(std::FILE* stream) const { std::fclose(stream); }
+};
+using Stream = std::unique_ptr<std::FILE, CloseStream>;
 
 class ResultChannel {
 public:
     // fd >= 0: a descriptor the parent opened (POSIX); otherwise `file` is opened for appending.
     ResultChannel(int fd, const std::string& file);
-    ~ResultChannel();
-    ResultChannel(const ResultChannel&) = delete;
-    ResultChannel& operator=(const ResultChannel&) = delete;
 
     // Writes one line and flushes it at once, so a child that dies later loses nothing it sent.
     void send(const std::string& jsonLine);
 
 private:
-    std::FILE* m_out = nullptr;
+    Stream m_out;
 };
 
 class RequestChannel {
 public:
     // fd >= 0: a descriptor the parent opened (POSIX); otherwise `file` is read.
     RequestChannel(int fd, const std::string& file);
-    ~RequestChannel();
-    RequestChannel(const RequestChannel&) = delete;
-    RequestChannel& operator=(const RequestChannel&) = delete;
 
     // The next line; false once the parent has sent everything.
     bool receive(std::string& line);
 
 private:
-    std::FILE* m_in = nullptr;
+    Stream m_in;
 };
 
 } // namespace raylab::grader

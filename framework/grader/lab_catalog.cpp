@@ -220,6 +220,11 @@ const LabDescription* LabCatalog::labOfFigure(const std::string& id) const {
     return nullptr;
 }
 
+int LabCatalog::labNumberOfFigure(const std::string& id) const {
+    const LabDescription* l = labOfFigure(id);
+    return l != nullptr ? l->number : 0;
+}
+
 std::vector<int> LabCatalog::numbers() const {
     std::vector<int> n;
     for (const LabDescription& l : labs)
@@ -250,6 +255,14 @@ LabDescription loadLabDescription(const fs::path& file, const fs::path& scenes) 
     lab.checks = readChecks(r, root, lab);
     rejectDuplicateNames(r, root, lab);
     return lab;
+}
+
+std::vector<SceneDescription> loadFiguresInLabOrder(const fs::path& folder, const LabCatalog& labs) {
+    std::vector<SceneDescription> scenes = loadSceneFolder(folder); // by id
+    std::stable_sort(scenes.begin(), scenes.end(), [&](const auto& a, const auto& b) {
+        return labs.labNumberOfFigure(a.id) < labs.labNumberOfFigure(b.id);
+    });
+    return scenes;
 }
 
 LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {

@@ -3,6 +3,8 @@
 // a student writes, the labs it uses, its figures and checks with their points). The grader, the
 // report, `raylab distribute` and the docs test read them; nothing else names a lab or counts them.
 
+#include "raylab/scene_file.h"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -52,6 +54,8 @@ struct LabCatalog {
     const LabDescription* lab(int number) const;
     const LabFigure* figure(const std::string& id) const;
     const LabDescription* labOfFigure(const std::string& id) const;
+    // The number of the lab that lists the figure; 0 when none does.
+    int labNumberOfFigure(const std::string& id) const;
     std::vector<int> numbers() const;
     // The points of a check or a figure; `fallback` when its lab's description does not name it.
     double checkPoints(int lab, const std::string& name, double fallback) const;
@@ -61,6 +65,10 @@ struct LabCatalog {
 // One lab.toml, checked on its own; throws std::runtime_error "FILE:LINE: key: problem".
 // `scenes`: the folder its figures' scene files must be in.
 LabDescription loadLabDescription(const std::filesystem::path& file, const std::filesystem::path& scenes);
+
+// The scene files of `folder` (loadSceneFolder) in the order of their lab, then of their id (a
+// scene no lab lists first).
+std::vector<SceneDescription> loadFiguresInLabOrder(const std::filesystem::path& folder, const LabCatalog& labs);
 
 // Every <labs>/lab*/lab.toml, checked together (numbers and figure ids unique, `uses` names labs
 // that exist); throws std::runtime_error naming the file, line and key.

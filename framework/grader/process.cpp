@@ -2,13 +2,16 @@
 
 #include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 
 #ifdef _WIN32
 #include <windows.h>
 #else
+#include <csignal>
 #include <fcntl.h>
 #include <spawn.h>
+#include <thread>
 #include <sys/wait.h>
 #include <unistd.h>
 extern char** environ;
@@ -40,6 +43,13 @@ struct RunningProcess {
 };
 
 } // namespace
+
+std::vector<char*> argumentPointers(std::vector<std::string>& args) {
+    std::vector<char*> pointers;
+    for (std::string& a : args) pointers.push_back(a.data());
+    pointers.push_back(nullptr);
+    return pointers;
+}
 
 bool isRunningProcess(long pid) {
     for (const std::atomic<long>& slot : g_running)
@@ -103,7 +113,11 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOpti
         result.error = "cannot run " + argv[0] + " (error " + std::to_string(GetLastError()) + ")";
         return result;
     }
-    WaitForSingleObject(process.hProcess, INFINITE);
+    const DWORD limit = options.timeLimit > 0. ? DWORD(options.timeLimit * 1000.) : INFINITE;
+    if (WaitForSingleObject(process.hProcess, limit) == WAIT_TIMEOUT) {
+        TerminateProcess(process.hProcess, 1);
+        WaitForSingleObject(process.hProcess, INFINITE);
+    }
     DWORD code = 0;
     GetExitCodeProcess(process.hProcess, &code);
     CloseHandle(process.hThread);
@@ -115,13 +129,30 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOpti
 
 #else
 
+namespace {
+
+// Waits for `pid` into `status`, killing it once `timeLimit` seconds (> 0) have passed: a program
+// that hangs is stopped, not waited for. Returns 0, or the errno of a wait that failed.
+int waitFor(pid_t pid, double timeLimit, int& status) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeLimit);
+    for (;;) {
+        const pid_t done = waitpid(pid, &status, timeLimit > 0. ? WNOHANG : 0);
+        if (done == pid) return 0;
+        if (done < 0 && errno != EINTR) return errno;
+        if (done == 0) {
+            if (std::chrono::steady_clock::now() > deadline) kill(pid, SIGKILL);
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+    }
+}
+
+} // namespace
+
 ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOptions& options) {
     ProcessResult result;
     if (argv.empty()) return result;
     std::vector<std::string> args = argv;
-    std::vector<char*> cargs;
-    for (std::string& a : args) cargs.push_back(a.data());
-    cargs.push_back(nullptr);
+    const std::vector<char*> cargs = argumentPointers(args);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
@@ -140,11 +171,10 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOpti
     }
     const RunningProcess running(pid);
     int status = 0;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) {
-            result.error = "lost " + argv[0] + ": " + std::strerror(errno);
-            return result;
-        }
+    if (const int lost = waitFor(pid, options.timeLimit, status); lost != 0) {
+        result.error = "lost " + argv[0] + ": " + std::strerror(lost);
+        return result;
+    }
     result.started = true;
     if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);

@@ -12,6 +12,7 @@ namespace raylab::grader {
 struct ProcessOptions {
     std::filesystem::path workingDirectory; // empty: ours
     std::filesystem::path output;           // stdout and stderr are appended here; empty: ours
+    double timeLimit = 0.;                  // seconds; past it the program is killed (0: none)
 };
 
 struct ProcessResult {
@@ -25,6 +26,10 @@ struct ProcessResult {
 // Runs argv[0] (searched in PATH when it names no folder) with argv[1...], stdin from the null
 // device, and waits for it.
 ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOptions& options = {});
+
+// `args` as exec and spawn take them: a pointer to each argument's characters, then a null pointer
+// (valid while `args` lives unchanged).
+std::vector<char*> argumentPointers(std::vector<std::string>& args);
 
 // Whether runProcess (in any thread) is waiting for process `pid`: the sandbox's sweep kills the
 // processes an agent left behind, never these. Safe in a signal handler.

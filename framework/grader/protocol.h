@@ -7,6 +7,8 @@
 // naming kProtocolVersion. Numbers that are not finite travel as the strings "nan", "inf", "-inf"
 // (a NaN is a value the parent judges, not a broken message). Images travel as base64 RGB bytes.
 
+#include <glm/vec3.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -49,6 +51,21 @@ bool outputsValid(Probe probe, std::span<const double> inputs, std::span<const d
 struct Call {
     Probe probe;
     std::vector<double> inputs;
+};
+
+// A call's numbers (its inputs, or its outputs), read in order.
+class NumberReader {
+public:
+    explicit NumberReader(const std::vector<double>& values) : m_values(values) {}
+    double number() { return m_values.at(m_next++); }
+    glm::dvec3 vec3() {
+        const double x = number(), y = number();
+        return {x, y, number()};
+    }
+
+private:
+    const std::vector<double>& m_values;
+    std::size_t m_next = 0;
 };
 
 // Parent -> child.

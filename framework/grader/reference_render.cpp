@@ -127,8 +127,8 @@ StatisticalMargins measureRmseLimit(const SceneDescription& d, FigureReference& 
 
 bool isStatistical(const SceneDescription& d) { return d.samples > 1 && d.sampler != SamplerKind::Center; }
 
-RenderedReference renderReference(const SceneDescription& d, int threads) {
-    RenderedReference rendered{FigureReference{d.id, d.lab, renderImage8(d, threads), {}, {}}, {}};
+RenderedReference renderReference(const SceneDescription& d, int lab, int threads) {
+    RenderedReference rendered{FigureReference{d.id, lab, renderImage8(d, threads), {}, {}}, {}};
     FigureReference& f = rendered.reference;
     if (isStatistical(d)) {
         f.stats = convergedStatistics(d, threads);

@@ -28,8 +28,9 @@ struct RenderedReference {
 // A figure whose samples are drawn at random, graded by statistics rather than pixel by pixel.
 bool isStatistical(const SceneDescription& d);
 
-// The figure's reference. Throws std::runtime_error when it does not render or has NaN pixels.
-RenderedReference renderReference(const SceneDescription& d, int threads);
+// The reference of a figure of lab `lab`. Throws std::runtime_error when it does not render or has
+// NaN pixels.
+RenderedReference renderReference(const SceneDescription& d, int lab, int threads);
 
 // Pixels whose centre ray is within 2e-3 pixel of a change of more than 1 LSB: a float or double
 // computation of the same formula may land on either side (a centre ray grazing the silhouette).

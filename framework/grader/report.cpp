@@ -3,6 +3,7 @@
 #include "grader/checks/checks.h"
 
 #include "raylab/atomic_file.h"
+#include "raylab/markup.h"
 #include "raylab/messages.h"
 
 #include <nlohmann/json.hpp>
@@ -17,19 +18,6 @@ namespace raylab::grader {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string escape(const std::string& text) {
-    std::string out;
-    for (char c : text) switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&apos;"; break;
-        default: out += c;
-        }
-    return out;
-}
 
 std::string number(double v) { return formatNumber(v, 4); }
 
@@ -63,57 +51,57 @@ void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, 
     const fs::path images = folder / "images";
     fs::create_directories(images);
     std::ostringstream out;
-    out << "<!doctype html>\n<html lang=\"" << languageCode(language()) << "\"><head><meta charset=\"utf-8\"><title>" << escape(result.title)
+    out << "<!doctype html>\n<html lang=\"" << languageCode(language()) << "\"><head><meta charset=\"utf-8\"><title>" << escapeMarkup(result.title)
         << "</title>\n<style>body{font-family:sans-serif;max-width:1400px;margin:auto}"
            "img{width:300px;image-rendering:pixelated;border:1px solid #ccc}.pass{color:#080}.fail{color:#b00}"
            "td,th{padding:4px 8px;vertical-align:top;text-align:left}pre{white-space:pre-wrap;margin:0}</style>"
            "</head><body>\n<h1>"
-        << escape(result.title) << "</h1>\n<p>"
+        << escapeMarkup(result.title) << "</h1>\n<p>"
         << tr("report.html.score", {{"score", "<b>" + number(result.score()) + " / " + number(result.maxScore()) + "</b>"}})
         << "</p>\n<table><tr><th>" << tr("report.html.lab") << "</th><th>" << tr("report.html.points") << "</th><th>"
         << tr("report.html.notes") << "</th></tr>\n";
     for (const LabOutcome& lab : result.labs) {
         std::string notes;
-        for (const std::string& n : lab.notes) notes += escape(n) + "<br>";
+        for (const std::string& n : lab.notes) notes += escapeMarkup(n) + "<br>";
         out << "<tr><td>" << tr("report.lab", {{"lab", std::to_string(lab.lab)}}) << "</td><td>" << number(lab.points) << " / " << number(lab.maxPoints)
             << "</td><td>" << notes << "</td></tr>\n";
     }
     out << "</table>\n";
-    for (const std::string& p : result.problems) out << "<p class=\"fail\"><pre>" << escape(p) << "</pre></p>\n";
+    for (const std::string& p : result.problems) out << "<p class=\"fail\"><pre>" << escapeMarkup(p) << "</pre></p>\n";
     out << "<h2>" << tr("report.html.figures") << "</h2>\n<table><tr><th>" << tr("report.html.figure") << "</th><th>"
         << tr("report.html.reference") << "</th><th>" << tr("report.html.yours") << "</th><th>"
         << tr("report.html.difference") << "</th><th>" << tr("report.html.verdict") << "</th></tr>\n";
     for (const FigureOutcome& f : result.figures) {
         const FigureReference* reference = references.find(f.id);
-        out << "<tr><td>" << escape(f.id) << "<br>" << tr("report.lab", {{"lab", std::to_string(f.lab)}}) << "<br>" << number(f.points) << " / "
+        out << "<tr><td>" << escapeMarkup(f.id) << "<br>" << tr("report.lab", {{"lab", std::to_string(f.lab)}}) << "<br>" << number(f.points) << " / "
             << number(f.maxPoints) << "</td><td>";
         if (reference) {
             writePng(images / (f.id + ".reference.png"), reference->image);
-            out << "<img src=\"images/" << escape(f.id) << ".reference.png\">";
+            out << "<img src=\"images/" << escapeMarkup(f.id) << ".reference.png\">";
         }
         out << "</td><td>";
         if (!f.studentImage.empty()) {
             copyFileAtomically(f.studentImage, images / (f.id + ".student.png"));
-            out << "<img src=\"images/" << escape(f.id) << ".student.png\">";
+            out << "<img src=\"images/" << escapeMarkup(f.id) << ".student.png\">";
         }
         out << "</td><td>";
         if (!f.verdict.error.empty()) {
             const bool statistical = reference && reference->stats;
             writePng(images / (f.id + ".diff.png"), heatMap(f.verdict, statistical ? 6.f : 64.f));
-            out << "<img src=\"images/" << escape(f.id) << ".diff.png\"><br><small>"
-                << escape(tr(statistical ? "report.html.scale_z" : "report.html.scale_lsb")) << "</small>";
+            out << "<img src=\"images/" << escapeMarkup(f.id) << ".diff.png\"><br><small>"
+                << escapeMarkup(tr(statistical ? "report.html.scale_z" : "report.html.scale_lsb")) << "</small>";
         }
         out << "</td><td><b class=\"" << (f.passed ? "pass" : "fail") << "\">" << verdict(f.passed) << "</b><pre>"
-            << escape(itemOutput(f)) << "</pre></td></tr>\n";
+            << escapeMarkup(itemOutput(f)) << "</pre></td></tr>\n";
     }
     out << "</table>\n<h2>" << tr("report.html.checks") << "</h2>\n<table><tr><th>" << tr("report.html.lab")
         << "</th><th>" << tr("report.html.check") << "</th><th>" << tr("report.html.points") << "</th><th>"
         << tr("report.html.verdict") << "</th></tr>\n";
     for (const CheckOutcome& c : result.checks)
         out << "<tr><td>" << tr("report.lab", {{"lab", std::to_string(c.lab)}}) << "</td><td>"
-            << escape(checkTitle(c.name)) << "</td><td>" << number(c.points) << " / " << number(c.maxPoints)
+            << escapeMarkup(checkTitle(c.name)) << "</td><td>" << number(c.points) << " / " << number(c.maxPoints)
             << "</td><td><b class=\"" << (c.passed ? "pass" : "fail") << "\">" << verdict(c.passed) << "</b><pre>"
-            << escape(c.message) << "</pre></td></tr>\n";
+            << escapeMarkup(c.message) << "</pre></td></tr>\n";
     out << "</table>\n</body></html>\n";
     writeFileAtomically(folder / "index.html", out.str());
 }
@@ -151,18 +139,18 @@ void writeGradescopeJson(const GradeResult& result, const fs::path& file) {
 
 void writeJUnitXml(const GradeResult& result, const fs::path& file) {
     std::ostringstream out;
-    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"" << escape(result.title) << "\">\n";
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"" << escapeMarkup(result.title) << "\">\n";
     for (const LabOutcome& outcome : result.labs) {
         const int lab = outcome.lab;
         std::ostringstream cases;
         int tests = 0, failures = 0;
         auto item = [&](const std::string& name, bool passed, const std::string& message) {
             ++tests;
-            cases << "  <testcase classname=\"lab" << lab << "\" name=\"" << escape(name) << "\">";
+            cases << "  <testcase classname=\"lab" << lab << "\" name=\"" << escapeMarkup(name) << "\">";
             if (!passed) {
                 ++failures;
-                cases << "<failure message=\"" << escape(message.substr(0, message.find('\n'))) << "\">"
-                      << escape(message) << "</failure>";
+                cases << "<failure message=\"" << escapeMarkup(message.substr(0, message.find('\n'))) << "\">"
+                      << escapeMarkup(message) << "</failure>";
             }
             cases << "</testcase>\n";
         };

@@ -3,6 +3,7 @@
 #include "grader/grade.h"
 #include "grader/report.h"
 #include "grader/submission.h"
+#include "raylab/atomic_file.h"
 #include "raylab/figure.h"
 #include "raylab/image_io.h"
 #include "report/difference_map.h"
@@ -23,17 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace raylab::grader;
-
-// A whole file or none: written beside, then renamed over the old one.
-void writeFileAtomically(const fs::path& file, const std::string& content) {
-    const fs::path partial = file.string() + ".partial";
-    {
-        std::ofstream out(partial, std::ios::binary);
-        out << content;
-        if (!out.flush()) throw std::runtime_error("cannot write " + partial.string());
-    }
-    fs::rename(partial, file);
-}
 
 std::string readFile(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -58,9 +48,9 @@ std::vector<KitFigure> renderFigures(const ReportRequest& request, const LabCata
     for (const LabDescription& lab : labs.labs)
         for (const LabFigure& f : lab.figures) handoutOrder.emplace(f.id, handoutOrder.size());
     std::vector<KitFigure> figures;
-    for (const SceneDescription& d : loadSceneFolder(request.scenes)) {
+    for (const SceneDescription& d : loadFiguresInLabOrder(request.scenes, labs)) {
         const FigureResult r = renderScene(d, RenderOptions{request.threads, request.progress});
-        KitFigure f{d.id, d.lab, r.status == FigureResult::Status::Rendered, r.message, r.stats, d.width, d.height};
+        KitFigure f{d.id, labs.labNumberOfFigure(d.id), r.status == FigureResult::Status::Rendered, r.message, r.stats, d.width, d.height};
         if (r.status == FigureResult::Status::Failed) f.message = "failed: " + r.message;
         if (f.rendered) {
             images[d.id] = quantize(*r.image);

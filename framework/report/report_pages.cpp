@@ -3,6 +3,8 @@
 #include "report/difference_map.h"
 #include "report/templates.h"
 
+#include "raylab/markup.h"
+
 #include <cmark.h>
 
 #include <cstdlib>
@@ -192,18 +194,6 @@ std::string substitute(const std::string& text, const std::map<std::string, std:
     return out + text.substr(at);
 }
 
-std::string escapeHtml(const std::string& text) {
-    std::string out;
-    for (char ch : text) switch (ch) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += ch;
-        }
-    return out;
-}
-
 } // namespace
 
 std::vector<Segment> reportSegments(const KitContent& content) {
@@ -216,10 +206,10 @@ std::string reportHtml(const std::vector<Segment>& document, const Words& words)
     std::string body;
     for (const Segment& s : document)
         body += s.kind == Segment::Kind::Student
-                    ? substitute(templates::kStudentTextHtml, {{"key", escapeHtml(s.key)}, {"content", markdownToHtml(s.text)}})
+                    ? substitute(templates::kStudentTextHtml, {{"key", escapeMarkup(s.key)}, {"content", markdownToHtml(s.text)}})
                     : markdownToHtml(s.text);
     return substitute(templates::kReportHtml, {{"lang", words.lang},
-                                               {"title", escapeHtml(words.title)},
+                                               {"title", escapeMarkup(words.title)},
                                                {"style", templates::kReportCss},
                                                {"script", templates::kReportJs},
                                                {"body", body}});

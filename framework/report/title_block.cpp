@@ -1,11 +1,12 @@
 #include "report/title_block.h"
 
+#include "raylab/atomic_file.h"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
 #include <chrono>
 #include <ctime>
-#include <fstream>
 #include <stdexcept>
 
 namespace raylab::report {
@@ -47,7 +48,7 @@ toml::table parse(const std::filesystem::path& file) {
 } // namespace
 
 TitleBlock readTitleBlock(const std::filesystem::path& file, const Words& words) {
-    if (!std::filesystem::exists(file)) std::ofstream(file, std::ios::binary) << words.tomlTemplate;
+    if (!std::filesystem::exists(file)) writeFileAtomically(file, words.tomlTemplate);
     const toml::table table = parse(file);
     for (const auto& [key, node] : table) {
         const bool known = std::find(std::begin(kKeys), std::end(kKeys), key.str()) != std::end(kKeys);

@@ -258,8 +258,7 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
     d.id = file.stem().string();
     d.scene.spheres.clear();
     if (const toml::table* t = r.table(root, "figure")) {
-        r.onlyKeys(*t, "[figure] ", {"lab", "title"});
-        d.lab = int(r.integer(*t, "[figure] ", "lab", 0, 99).value_or(0));
+        r.onlyKeys(*t, "[figure] ", {"title"}); // its lab is the one whose lab.toml lists it
         d.title = r.string(*t, "[figure] ", "title").value_or("");
     }
     if (const toml::table* t = r.table(root, "image")) {
@@ -307,9 +306,7 @@ std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folde
     std::vector<SceneDescription> scenes;
     for (const auto& entry : std::filesystem::directory_iterator(folder))
         if (entry.path().extension() == ".toml") scenes.push_back(loadSceneFile(entry.path()));
-    std::sort(scenes.begin(), scenes.end(), [](const auto& a, const auto& b) {
-        return a.lab != b.lab ? a.lab < b.lab : a.id < b.id;
-    });
+    std::sort(scenes.begin(), scenes.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
     return scenes;
 }
 

@@ -1,5 +1,7 @@
 #include "svg_plot.h"
 
+#include "raylab/markup.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,17 +14,6 @@ namespace {
 constexpr double kWidth = 760, kHeight = 500;
 constexpr double kLeft = 80, kRight = 250, kTop = 40, kBottom = 60; // margins; the legend is on the right
 constexpr const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
-
-std::string escape(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else out += c;
-    }
-    return out;
-}
 
 std::string num(double v) {
     char buffer[32];
@@ -94,7 +85,7 @@ void writeSeries(std::ostream& svg, const LogFrame& f, const Series& series, std
     svg << "<line x1=\"" << lx << "\" y1=\"" << ly - 4 << "\" x2=\"" << lx + 22 << "\" y2=\"" << ly - 4 << "\" stroke=\""
         << color << "\" stroke-width=\"" << (series.linesBetween ? 2 : 0) << "\"/><circle cx=\"" << lx + 11 << "\" cy=\""
         << ly - 4 << "\" r=\"3\" fill=\"" << color << "\"/>\n";
-    svg << "<text x=\"" << lx + 28 << "\" y=\"" << ly << "\">" << escape(series.label) << "</text>\n";
+    svg << "<text x=\"" << lx + 28 << "\" y=\"" << ly << "\">" << escapeMarkup(series.label) << "</text>\n";
 }
 
 } // namespace
@@ -105,12 +96,12 @@ std::string toSvg(const LogLogPlot& plot) {
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
         << "\" viewBox=\"0 0 " << kWidth << ' ' << kHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
     svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    svg << "<text x=\"" << kWidth / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << escape(plot.title) << "</text>\n";
+    svg << "<text x=\"" << kWidth / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << escapeMarkup(plot.title) << "</text>\n";
     writeGrid(svg, f);
     svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << f.plotW << "\" height=\"" << f.plotH
         << "\" fill=\"none\" stroke=\"black\"/>\n";
-    svg << "<text x=\"" << kLeft + f.plotW / 2 << "\" y=\"" << kHeight - 15 << "\" text-anchor=\"middle\">" << escape(plot.xLabel) << "</text>\n";
-    svg << "<text transform=\"translate(18," << kTop + f.plotH / 2 << ") rotate(-90)\" text-anchor=\"middle\">" << escape(plot.yLabel) << "</text>\n";
+    svg << "<text x=\"" << kLeft + f.plotW / 2 << "\" y=\"" << kHeight - 15 << "\" text-anchor=\"middle\">" << escapeMarkup(plot.xLabel) << "</text>\n";
+    svg << "<text transform=\"translate(18," << kTop + f.plotH / 2 << ") rotate(-90)\" text-anchor=\"middle\">" << escapeMarkup(plot.yLabel) << "</text>\n";
     for (std::size_t s = 0; s < plot.series.size(); ++s) writeSeries(svg, f, plot.series[s], s);
     svg << "</svg>\n";
     return svg.str();

@@ -3,6 +3,8 @@
 // with an argument vector in a process group of its own, its output in a file, waited for later.
 // POSIX only.
 
+#include "grader/process.h"
+
 #include <doctest/doctest.h>
 
 #include <cerrno>
@@ -64,9 +66,7 @@ inline ProgramProcess startProgram(const std::filesystem::path& program, const s
                                    const std::filesystem::path& output, long fileSizeLimit = 0) {
     std::vector<std::string> argv{program.string()};
     argv.insert(argv.end(), args.begin(), args.end());
-    std::vector<char*> cargs;
-    for (std::string& a : argv) cargs.push_back(a.data());
-    cargs.push_back(nullptr);
+    const std::vector<char*> cargs = grader::argumentPointers(argv);
     std::fflush(nullptr);
     const pid_t pid = fork();
     REQUIRE(pid >= 0);

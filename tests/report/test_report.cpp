@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include "raylab/image_io.h"
+#include "support/run_program.h"
 
 #include <cstdlib>
 #include <cstring>
@@ -35,16 +36,11 @@ std::string read(const fs::path& file) {
 
 void write(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
-std::string program(const char* name) {
-    std::string quoted(1, '"');
-    quoted += (fs::path(RAYLAB_BIN_DIR) / name).string();
-    return quoted + '"';
-}
+std::string program(const char* name) { return (fs::path(RAYLAB_BIN_DIR) / name).string(); }
 
-// Runs `PROGRAM ARGS` (its output in DIR/output.txt); returns its exit status.
-int run(const std::string& commandLine, const fs::path& dir) {
-    const int status = std::system((commandLine + " > \"" + (dir / "output.txt").string() + "\" 2>&1").c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+// Runs `argv` (its output in DIR/output.txt); returns its exit status.
+int run(const std::vector<std::string>& argv, const fs::path& dir) {
+    return raylab::test::runProgram(argv, dir / "output.txt").status;
 }
 
 fs::path kitFolder(const std::string& name, bool fresh = true) {
@@ -55,8 +51,10 @@ fs::path kitFolder(const std::string& name, bool fresh = true) {
 }
 
 // Runs `PROGRAM report --out DIR ARGS` (the kit is also where the browser test looks).
-fs::path runKit(const char* name, const fs::path& dir, const std::string& args = "") {
-    const int status = run(program(name) + " report --threads 2 --out \"" + dir.string() + "\" " + args, dir);
+fs::path runKit(const char* name, const fs::path& dir, const std::vector<std::string>& args = {}) {
+    std::vector<std::string> argv{program(name), "report", "--threads", "2", "--out", dir.string()};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const int status = run(argv, dir);
     REQUIRE_MESSAGE(status == 0, read(dir / "output.txt"));
     REQUIRE(fs::exists(dir / "report.md"));
     REQUIRE(fs::exists(dir / "report.html"));
@@ -64,7 +62,7 @@ fs::path runKit(const char* name, const fs::path& dir, const std::string& args =
 }
 
 // The same in a new folder.
-fs::path makeKit(const char* name, const std::string& kit, const std::string& args = "") {
+fs::path makeKit(const char* name, const std::string& kit, const std::vector<std::string>& args = {}) {
     return runKit(name, kitFolder(kit), args);
 }
 
@@ -160,8 +158,8 @@ TEST_CASE("the difference map of a passing noisy render (lab 5) is dark: within 
 TEST_CASE("the grade block's total is `raylab grade`'s: the reference agent, and the student's stubs") {
     const fs::path reference = fs::path(RAYLAB_REPORT_TEST_DIR) / "reference";
     const fs::path graded = kitFolder("grade-reference");
-    REQUIRE(run(program("raylab") + " grade --threads 2 --agent " + program("raylab-agent-reference") + " --report \"" +
-                    (graded / "report").string() + "\"",
+    REQUIRE(run({program("raylab"), "grade", "--threads", "2", "--agent", program("raylab-agent-reference"), "--report",
+                 (graded / "report").string()},
                 graded) == 0);
     const std::string total = gradeTotal(read(graded / "output.txt"));
     CHECK(read(reference / "report.md").find("**Total grade**: **" + total + "** (") != std::string::npos);
@@ -169,7 +167,7 @@ TEST_CASE("the grade block's total is `raylab grade`'s: the reference agent, and
 
     const fs::path student = makeKit("raylab", "student");
     const fs::path stubs = kitFolder("grade-student");
-    run(program("raylab") + " grade --threads 2 --report \"" + (stubs / "report").string() + "\"", stubs);
+    run({program("raylab"), "grade", "--threads", "2", "--report", (stubs / "report").string()}, stubs);
     const std::string stubTotal = gradeTotal(read(stubs / "output.txt"));
     CHECK(read(student / "report.md").find("**Total grade**: **" + stubTotal + "** (") != std::string::npos);
 }
@@ -243,27 +241,32 @@ TEST_CASE("the title block comes from report.toml: created with placeholders, th
     CHECK(read(dir / "output.txt").find("note: fill in") == std::string::npos);
 
     write(dir / "report.toml", "name = \"Ada Lovelace\"\ngroup = 2\n");
-    CHECK(run(program("raylab") + " report --out \"" + dir.string() + "\"", dir) != 0);
+    CHECK(run({program("raylab"), "report", "--out", dir.string()}, dir) != 0);
     const std::string error = read(dir / "output.txt");
     CHECK_MESSAGE(error.find("report.toml:2: group: must be a string") != std::string::npos, error);
 }
 
 TEST_CASE("--pdf: a PDF with chromium, a clear message without") {
     const fs::path dir = kitFolder("pdf");
-    CHECK(run("PATH=/nonexistent " + program("raylab") + " report --threads 2 --pdf --out \"" + dir.string() + "\"", dir) == 1);
+    const char* path = std::getenv("PATH");
+    const std::string ourPath = path ? path : "";
+    setenv("PATH", "/nonexistent", 1); // raylab finds no chromium
+    const int status = run({program("raylab"), "report", "--threads", "2", "--pdf", "--out", dir.string()}, dir);
+    setenv("PATH", ourPath.c_str(), 1);
+    CHECK(status == 1);
     CHECK(read(dir / "output.txt").find("--pdf prints with chromium, which is not installed") != std::string::npos);
     CHECK(!fs::exists(dir / "report.pdf"));
     if (!fs::exists("/usr/bin/chromium") && !fs::exists("/usr/bin/chromium-browser")) {
         MESSAGE("skipped: chromium is not installed, so no PDF is printed (Debian: apt-get install chromium)");
         return;
     }
-    runKit("raylab", dir, "--pdf");
+    runKit("raylab", dir, {"--pdf"});
     CHECK(read(dir / "report.pdf").rfind("%PDF", 0) == 0);
     CHECK(fs::file_size(dir / "report.pdf") > 10000);
 }
 
 TEST_CASE("--lang fr: French headings and typography") {
-    const fs::path dir = makeKit("raylab-reference", "french", "--lang fr");
+    const fs::path dir = makeKit("raylab-reference", "french", {"--lang", "fr"});
     const std::string md = read(dir / "report.md");
     CHECK(md.find("# Compte rendu de TP") != std::string::npos);
     CHECK(md.find("## TP 3\u00A0: Une sphère") != std::string::npos);

@@ -54,7 +54,6 @@ TEST_CASE("a full scene file") {
     const SceneDescription d = loadText(R"(
 background = [0.1, 0.2, 0.3]
 [figure]
-lab = 4
 title = "t"
 [image]
 width = 64
@@ -77,7 +76,6 @@ center = [0, 0, 5]
 radius = 2
 )");
     CHECK(d.id == "scene");
-    CHECK(d.lab == 4);
     CHECK(d.width == 64);
     CHECK(d.height == 32);
     CHECK(d.camera.lookAt);
@@ -105,6 +103,8 @@ TEST_CASE("an empty file is the default camera on an empty scene") {
 TEST_CASE("errors name the file, the line and the key") {
     CHECK(errorOf("[camera]\nfovy = 60\nzoom = 2\n") ==
           "scene.toml:3: [camera] zoom: unknown key (known keys: position, look_at, up, fovy)");
+    // A figure's lab is the lab.toml that lists it, never the scene file.
+    CHECK(errorOf("[figure]\nlab = 4\n") == "scene.toml:2: [figure] lab: unknown key (known keys: title)");
     CHECK(errorOf("[image]\nwidth = \"600\"\n") == "scene.toml:2: [image] width: expected an integer, got a string");
     CHECK(errorOf("[image]\nwidth = 0\n") == "scene.toml:2: [image] width: 0 is out of range [1, 16384]");
     CHECK(errorOf("[camera]\nfovy = 180\n") ==

@@ -16,21 +16,17 @@ using grader::protocol::Probe;
 
 namespace {
 
-// Reads the inputs in order.
+// Reads the inputs in order, as the student's functions take them (float, int).
 class Inputs {
 public:
-    explicit Inputs(const std::vector<double>& values) : m_values(values) {}
-    double number() { return m_values.at(m_next++); }
+    explicit Inputs(const std::vector<double>& values) : m_numbers(values) {}
+    double number() { return m_numbers.number(); }
     float real() { return float(number()); }
     int integer() { return int(number()); }
-    glm::vec3 vec3() {
-        const float x = real(), y = real();
-        return {x, y, real()};
-    }
+    glm::vec3 vec3() { return glm::vec3(m_numbers.vec3()); }
 
 private:
-    const std::vector<double>& m_values;
-    std::size_t m_next = 0;
+    grader::protocol::NumberReader m_numbers;
 };
 
 void append(std::vector<double>& out, const glm::vec3& v) {

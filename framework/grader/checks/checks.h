@@ -36,19 +36,7 @@ std::string show(double v);
 std::string show(const glm::dvec3& v);
 
 // The outputs of one call, read in order.
-class Outputs {
-public:
-    explicit Outputs(const std::vector<double>& values) : m_values(values) {}
-    double number() { return m_values.at(m_next++); }
-    glm::dvec3 vec3() {
-        const double x = number(), y = number();
-        return {x, y, number()};
-    }
-
-private:
-    const std::vector<double>& m_values;
-    std::size_t m_next = 0;
-};
+using Outputs = protocol::NumberReader;
 
 struct FunctionCheck {
     int lab = 0;

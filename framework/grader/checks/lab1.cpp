@@ -4,6 +4,7 @@
 
 #include "raylab/messages.h"
 
+#include <functional>
 #include <utility>
 
 namespace raylab::grader {
@@ -37,8 +38,21 @@ struct Gradient {
     }
 };
 
-protocol::Call gradient(int width, int height) {
-    return {Probe::FillGradient, {double(width), double(height)}};
+struct Size {
+    int width, height;
+};
+
+// A fillGradient check: one call a size, the handout's then those drawn at grading time; `judge`
+// receives the textures in that order.
+FunctionCheck gradientCheck(std::string name, std::vector<Size> sizes,
+                            std::function<void(const std::vector<Gradient>& textures, Judge& judge)> judge) {
+    std::vector<protocol::Call> calls;
+    for (const Size& s : sizes) calls.push_back({Probe::FillGradient, {double(s.width), double(s.height)}});
+    return {1, std::move(name), std::move(calls), [sizes, judge](const auto& out, Judge& j) {
+                std::vector<Gradient> textures;
+                for (std::size_t k = 0; k < sizes.size(); ++k) textures.push_back({sizes[k].width, sizes[k].height, out[k]});
+                judge(textures, j);
+            }};
 }
 
 } // namespace
@@ -46,49 +60,41 @@ protocol::Call gradient(int width, int height) {
 void addLab1Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     // Drawn sizes never equal the fixed ones: an answer learnt by heart for those fails these.
     const int width = random.integer(6, 40), height = random.integer(4, 30);
-    checks.push_back(
-        {1,
-         "fillGradient: the corners and the middle of a 5 x 3 image",
-         {gradient(5, 3), gradient(width, height)},
-         [width, height](const auto& out, Judge& judge) {
-             const Gradient fixed{5, 3, out[0]};
-             const std::string ramp = tr("hint.lab1.ramp");
-             auto pixel = [](int i, int j) { return tr("what.lab1.pixel", {{"i", std::to_string(i)}, {"j", std::to_string(j)}}); };
-             judge.expectNear(pixel(0, 0), fixed.pixel(0, 0), {0., 0., 0.}, 1e-6, ramp);
-             judge.expectNear(tr("what.lab1.top_right", {{"pixel", pixel(4, 0)}}), fixed.pixel(4, 0), {1., 0., 0.}, 1e-6, ramp);
-             judge.expectNear(tr("what.lab1.bottom_left", {{"pixel", pixel(0, 2)}}), fixed.pixel(0, 2), {0., 1., 0.}, 1e-6, ramp);
-             judge.expectNear(tr("what.lab1.bottom_right", {{"pixel", pixel(4, 2)}}), fixed.pixel(4, 2), {1., 1., 0.}, 1e-6, ramp);
-             judge.expectNear(pixel(1, 1), fixed.pixel(1, 1), {0.25, 0.5, 0.}, kLevel, tr("hint.lab1.float_division"));
-             const Gradient drawn{width, height, out[1]};
-             for (const auto& [i, j] :
-                  {std::pair{0, 0}, {width - 1, 0}, {0, height - 1}, {width - 1, height - 1}, {width / 2, height / 2}})
-                 drawn.expectPixel(judge, i, j, kLevel, ramp);
-         }});
+    checks.push_back(gradientCheck(
+        "fillGradient: the corners and the middle of a 5 x 3 image", {{5, 3}, {width, height}},
+        [](const std::vector<Gradient>& textures, Judge& judge) {
+            const Gradient& fixed = textures[0];
+            const std::string ramp = tr("hint.lab1.ramp");
+            auto pixel = [](int i, int j) { return tr("what.lab1.pixel", {{"i", std::to_string(i)}, {"j", std::to_string(j)}}); };
+            judge.expectNear(pixel(0, 0), fixed.pixel(0, 0), {0., 0., 0.}, 1e-6, ramp);
+            judge.expectNear(tr("what.lab1.top_right", {{"pixel", pixel(4, 0)}}), fixed.pixel(4, 0), {1., 0., 0.}, 1e-6, ramp);
+            judge.expectNear(tr("what.lab1.bottom_left", {{"pixel", pixel(0, 2)}}), fixed.pixel(0, 2), {0., 1., 0.}, 1e-6, ramp);
+            judge.expectNear(tr("what.lab1.bottom_right", {{"pixel", pixel(4, 2)}}), fixed.pixel(4, 2), {1., 1., 0.}, 1e-6, ramp);
+            judge.expectNear(pixel(1, 1), fixed.pixel(1, 1), {0.25, 0.5, 0.}, kLevel, tr("hint.lab1.float_division"));
+            const Gradient& drawn = textures[1];
+            const int w = drawn.width, h = drawn.height;
+            for (const auto& [i, j] : {std::pair{0, 0}, {w - 1, 0}, {0, h - 1}, {w - 1, h - 1}, {w / 2, h / 2}})
+                drawn.expectPixel(judge, i, j, kLevel, ramp);
+        }));
 
     const int otherWidth = random.integer(8, 40), otherHeight = random.integer(5, 30);
-    checks.push_back(
-        {1,
-         "fillGradient: every pixel is written",
-         {gradient(7, 4), gradient(otherWidth, otherHeight)},
-         [otherWidth, otherHeight](const auto& out, Judge& judge) {
-             for (const Gradient g : {Gradient{7, 4, out[0]}, Gradient{otherWidth, otherHeight, out[1]}})
-                 for (int j = 0; j < g.height; ++j)
-                     for (int i = 0; i < g.width; ++i)
-                         if (!g.expectPixel(judge, i, j, kLevel, tr("hint.lab1.every_pixel")))
-                             return;
-         }});
+    checks.push_back(gradientCheck("fillGradient: every pixel is written", {{7, 4}, {otherWidth, otherHeight}},
+                                   [](const std::vector<Gradient>& textures, Judge& judge) {
+                                       for (const Gradient& g : textures)
+                                           for (int j = 0; j < g.height; ++j)
+                                               for (int i = 0; i < g.width; ++i)
+                                                   if (!g.expectPixel(judge, i, j, kLevel, tr("hint.lab1.every_pixel")))
+                                                       return;
+                                   }));
 
     const int tall = random.integer(4, 20), wide = random.integer(5, 20);
-    checks.push_back({1,
-                      "fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN",
-                      {gradient(1, 3), gradient(4, 1), gradient(1, tall), gradient(wide, 1)},
-                      [tall, wide](const auto& out, Judge& judge) {
-                          const std::string hint = tr("hint.lab1.one_pixel");
-                          Gradient{1, 3, out[0]}.expectPixel(judge, 0, 2, 1e-6, hint);
-                          Gradient{4, 1, out[1]}.expectPixel(judge, 3, 0, 1e-6, hint);
-                          Gradient{1, tall, out[2]}.expectPixel(judge, 0, tall - 1, 1e-6, hint);
-                          Gradient{wide, 1, out[3]}.expectPixel(judge, wide - 1, 0, 1e-6, hint);
-                      }});
+    checks.push_back(gradientCheck("fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN",
+                                   {{1, 3}, {4, 1}, {1, tall}, {wide, 1}},
+                                   [](const std::vector<Gradient>& textures, Judge& judge) {
+                                       const std::string hint = tr("hint.lab1.one_pixel");
+                                       for (const Gradient& g : textures)
+                                           g.expectPixel(judge, g.width - 1, g.height - 1, 1e-6, hint);
+                                   }));
 }
 
 } // namespace raylab::grader

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 namespace raylab::grader {
@@ -87,6 +88,16 @@ protocol::Call refusedCall(const glm::dvec3& position, const glm::dvec3& target,
     return {Probe::LookAtRefused, in};
 }
 
+// A lookAt check, one call a camera: `expect` judges what each camera was built as.
+FunctionCheck lookAtCheck(std::string name, std::vector<LookAt> cameras,
+                          std::function<void(const LookAt& camera, const Built& built, Judge& judge)> expect) {
+    std::vector<protocol::Call> calls;
+    for (const LookAt& c : cameras) calls.push_back(c.call());
+    return {4, std::move(name), std::move(calls), [cameras, expect](const auto& out, Judge& judge) {
+                for (std::size_t k = 0; k < cameras.size(); ++k) expect(cameras[k], Built(out[k]), judge);
+            }};
+}
+
 } // namespace
 
 void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
@@ -95,39 +106,28 @@ void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     cameras.push_back({tr("what.lab4.oblique_camera", {{"up", show(obliqueUp)}}), {4., -1., 0.}, {-1., -1., 2.}, obliqueUp});
     cameras.push_back(drawnCamera(random));
     cameras.push_back(drawnCamera(random));
-    std::vector<protocol::Call> calls;
-    for (const LookAt& c : cameras)
-        calls.push_back(c.call());
-    checks.push_back(
-        {4, "lookAt: the basis of the handout's four cameras", calls, [cameras](const auto& out, Judge& judge) {
-             for (std::size_t k = 0; k < cameras.size(); ++k) {
-                 const LookAt& c = cameras[k];
-                 const Built b(out[k]);
-                 auto what = [&c](const char* part) { return tr("what.lab4.part", {{"camera", c.name}, {"part", part}}); };
-                 judge.expectNear(what("w"), b.w, c.w(), 1e-5, tr("hint.lab4.w"));
-                 judge.expectNear(what("u"), b.u, c.u(), 1e-5, tr("hint.lab4.u"));
-                 judge.expectNear(what("v"), b.v, c.v(), 1e-5, tr("hint.lab4.v"));
-                 judge.expectNear(what("position"), b.position, c.position, 1e-6, tr("hint.lab4.position"));
-             }
-         }});
+    checks.push_back(lookAtCheck("lookAt: the basis of the handout's four cameras", cameras,
+                                 [](const LookAt& c, const Built& b, Judge& judge) {
+                                     auto what = [&c](const char* part) {
+                                         return tr("what.lab4.part", {{"camera", c.name}, {"part", part}});
+                                     };
+                                     judge.expectNear(what("w"), b.w, c.w(), 1e-5, tr("hint.lab4.w"));
+                                     judge.expectNear(what("u"), b.u, c.u(), 1e-5, tr("hint.lab4.u"));
+                                     judge.expectNear(what("v"), b.v, c.v(), 1e-5, tr("hint.lab4.v"));
+                                     judge.expectNear(what("position"), b.position, c.position, 1e-6,
+                                                      tr("hint.lab4.position"));
+                                 }));
 
     const std::vector<LookAt> moved{handoutCameras()[3], drawnCamera(random)};
-    calls.clear();
-    for (const LookAt& c : moved)
-        calls.push_back(c.call());
-    checks.push_back(
-        {4, "lookAt: the viewport follows the new frame", calls, [moved](const auto& out, Judge& judge) {
-             for (std::size_t k = 0; k < moved.size(); ++k) {
-                 const LookAt& c = moved[k];
-                 const Built b(out[k]);
-                 const std::string hint = tr("hint.lab4.viewport");
-                 auto what = [&c](const std::string& part) { return tr("what.lab4.part", {{"camera", c.name}, {"part", part}}); };
-                 judge.expectNear(what(tr("what.lab4.viewport_height")), b.viewportHeight, c.viewportHeight(), 1e-5, hint);
-                 judge.expectNear(what(tr("what.lab4.viewport_width")), b.viewportWidth, c.viewportWidth(), 1e-5, hint);
-                 judge.expectNear(what(tr("what.lab4.top_left")), b.topLeft, c.topLeft(), 1e-4,
-                                  tr("hint.lab4.viewport_position", {{"hint", hint}}));
-             }
-         }});
+    checks.push_back(lookAtCheck(
+        "lookAt: the viewport follows the new frame", moved, [](const LookAt& c, const Built& b, Judge& judge) {
+            const std::string hint = tr("hint.lab4.viewport");
+            auto what = [&c](const std::string& part) { return tr("what.lab4.part", {{"camera", c.name}, {"part", part}}); };
+            judge.expectNear(what(tr("what.lab4.viewport_height")), b.viewportHeight, c.viewportHeight(), 1e-5, hint);
+            judge.expectNear(what(tr("what.lab4.viewport_width")), b.viewportWidth, c.viewportWidth(), 1e-5, hint);
+            judge.expectNear(what(tr("what.lab4.top_left")), b.topLeft, c.topLeft(), 1e-4,
+                             tr("hint.lab4.viewport_position", {{"hint", hint}}));
+        }));
 
     const LookAt origin{"", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}};
     checks.push_back(

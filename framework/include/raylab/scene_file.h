@@ -33,8 +33,7 @@ struct CameraDescription {
 
 struct SceneDescription {
     std::filesystem::path file;
-    std::string id; // the file name without .toml: the figure id
-    int lab = 0;    // the lab whose code the picture needs most; 0 when none
+    std::string id; // the file name without .toml: the figure id (its lab is the lab.toml that lists it)
     std::string title;
     int width = 600;
     int height = 400;
@@ -56,7 +55,7 @@ public:
 
 SceneDescription loadSceneFile(const std::filesystem::path& file);
 
-// Every *.toml of a folder, in the order of their lab, then of their id.
+// Every *.toml of a folder, in the order of their id.
 std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folder);
 
 std::string_view pictureName(Picture picture);
