@@ -5,7 +5,9 @@
 #include "raylab/messages.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <limits>
 #include <regex>
 #include <string>
 #include <string_view>
@@ -40,6 +42,9 @@ std::string sayParseError(const CLI::Error& error) {
     static const std::regex notConverted(R"(Could not convert: (\S+) = (.*))");
     if (std::regex_match(what, m, notExpected)) return tr("cli.not_expected", {{"args", m[1]}});
     if (std::regex_match(what, m, missingValue)) return tr("cli.missing_value", {{"option", m[1]}, {"type", m[2]}});
+    // CLI::PositiveNumber is a range up to the largest double.
+    if (std::regex_match(what, m, notInRange) && std::strtod(m[4].str().c_str(), nullptr) >= std::numeric_limits<double>::max())
+        return tr("cli.not_positive", {{"option", m[1]}, {"value", m[2]}});
     if (std::regex_match(what, m, notInRange))
         return tr("cli.not_in_range", {{"option", m[1]}, {"value", m[2]}, {"low", m[3]}, {"high", m[4]}});
     if (std::regex_match(what, m, notInSet))
@@ -73,8 +78,10 @@ void sayHelpInLanguage(CLI::App& app) {
 }
 
 // The options every render command shares are added by context.cpp with English help; say it in the
-// reader's language here, in every command.
+// reader's language here, in every command. A command's help flag is made before it inherits the
+// options' group: put it in that group.
 void sayRenderOptionsInLanguage(CLI::App& command) {
+    if (CLI::Option* help = command.get_help_ptr()) help->group(raylab::tr("cli.label_options"));
     for (CLI::Option* option : command.get_options([](const CLI::Option*) { return true; })) {
         if (option->check_lname("threads")) option->description(raylab::tr("cli.threads"));
         else if (option->check_lname("scenes")) option->description(raylab::tr("cli.scenes"));

@@ -80,21 +80,21 @@ TEST_CASE("argument errors in French keep the option's name and the value") {
         std::vector<std::string> args;
         std::string french;
     };
+    // --lang last (it may stand anywhere), but before an option left without its value.
     const std::vector<Case> cases{
-        {{"grade", "--bogus"}, "inattendu ici" + nbsp + ": --bogus"},
-        {{"grade", "--lab"}, "--lab attend une valeur"},
-        {{"grade", "--lab", "two"}, "«" + nbsp + "two" + nbsp + "» n'est pas une valeur valide"},
-        {{"lab", "9"}, "N" + nbsp + ": 9 n'est pas entre 1 et 5"},
-        {{"render"}, "FILE est obligatoire"},
-        {{"figures", "--impl", "mine"}, "--impl" + nbsp + ": mine n'est pas l'une des valeurs {student,reference}"},
-        {{"grade", "--labs", "/nonexistent/labs"}, "ce dossier n'existe pas" + nbsp + ": /nonexistent/labs"},
-        {{}, "il faut une commande"},
-        {{"frobnicate"}, "commande inconnue «" + nbsp + "frobnicate" + nbsp + "»"},
+        {{"grade", "--bogus", "--lang", "fr"}, "inattendu ici" + nbsp + ": --bogus"},
+        {{"--lang", "fr", "grade", "--lab"}, "--lab attend une valeur"},
+        {{"grade", "--lab", "two", "--lang", "fr"}, "--lab" + nbsp + ": two n'est pas un nombre positif"},
+        {{"report", "--pdf=maybe", "--lang", "fr"}, "--pdf" + nbsp + ": «" + nbsp + "maybe" + nbsp + "» n'est pas une valeur valide"},
+        {{"lab", "9", "--lang", "fr"}, "N" + nbsp + ": 9 n'est pas entre 1 et 5"},
+        {{"render", "--lang", "fr"}, "FILE est obligatoire"},
+        {{"figures", "--impl", "mine", "--lang", "fr"}, "--impl" + nbsp + ": mine n'est pas l'une des valeurs {student,reference}"},
+        {{"grade", "--labs", "/nonexistent/labs", "--lang", "fr"}, "ce dossier n'existe pas" + nbsp + ": /nonexistent/labs"},
+        {{"--lang", "fr"}, "il faut une commande"},
+        {{"frobnicate", "--lang", "fr"}, "commande inconnue «" + nbsp + "frobnicate" + nbsp + "»"},
     };
     for (const Case& c : cases) {
-        std::vector<std::string> args = c.args;
-        args.insert(args.end(), {"--lang", "fr"});
-        const std::string output = run(args, true);
+        const std::string output = run(c.args, true);
         CHECK_MESSAGE(has(output, c.french), output);
         CHECK_MESSAGE(has(output, "raylab" + nbsp + ": erreur" + nbsp + ": "), output);
         checkNoCli11English(output);
