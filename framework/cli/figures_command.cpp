@@ -132,24 +132,24 @@ void addFigureCommands(CLI::App& app, Context& context) {
         context.exitStatus = runFigures(*options);
     };
 
-    CLI::App* figures = app.add_subcommand("figures", "render every lab figure to DIR/<id>.png");
+    CLI::App* figures = app.add_subcommand("figures", tr("cli.figures"));
     context.addImplOption(figures);
-    figures->add_option("--out", options->out, "output folder (default: out/<impl>)");
-    figures->add_option("--only", options->only, "render only these figure ids");
+    figures->add_option("--out", options->out, tr("cli.figures_out"));
+    figures->add_option("--only", options->only, tr("cli.figures_only"));
     context.addRenderOptions(figures);
     figures->callback(renderFigures);
 
-    CLI::App* lab = app.add_subcommand("lab", "render lab N's figures from your code in labs/");
-    lab->add_option("N", options->lab, "the lab number, 1 to 5")->required()->check(CLI::Range(1, 5));
-    lab->add_option("--out", options->out, "output folder (default: out/student)");
+    CLI::App* lab = app.add_subcommand("lab", tr("cli.lab"));
+    lab->add_option("N", options->lab, tr("cli.lab_number"))->required()->check(CLI::Range(1, 5));
+    lab->add_option("--out", options->out, tr("cli.lab_out"));
     context.addRenderOptions(lab);
     lab->callback(renderFigures);
 
     auto scene = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
-    CLI::App* render = app.add_subcommand("render", "render one scene file (TOML) to a PNG");
-    render->add_option("FILE", *scene, "the scene file")->required();
-    render->add_option("--out", *out, "the PNG to write (default: out/<scene name>.png)");
+    CLI::App* render = app.add_subcommand("render", tr("cli.render"));
+    render->add_option("FILE", *scene, tr("cli.render_file"))->required();
+    render->add_option("--out", *out, tr("cli.render_out"));
     context.addImplOption(render);
     context.addRenderOptions(render);
     render->callback([&context, scene, out] {

@@ -178,22 +178,22 @@ int gradeClass(const ClassRunOptions& run, const GradeOptions& o, const Context&
 }
 
 void addCommonOptions(CLI::App* command, GradeOptions& o) {
-    command->add_option("--references", o.references, "the reference folder (default: framework/grader/data/references)");
-    command->add_option("--timeout", o.timeout, "seconds a check or figure may run before it is stopped")
+    command->add_option("--references", o.references, tr("cli.grade_references"));
+    command->add_option("--timeout", o.timeout, tr("cli.grade_timeout"))
         ->check(positiveSeconds());
-    command->add_option("--build-dir", o.buildDir, "where submissions are built (grade-class: a folder per student in it)");
+    command->add_option("--build-dir", o.buildDir, tr("cli.grade_build_dir"));
 }
 
 } // namespace
 
 void addGradeCommands(CLI::App& app, Context& context) {
     auto o = std::make_shared<GradeOptions>();
-    CLI::App* grade = app.add_subcommand("grade", "grade your labs (or a submission, or pictures) against the references");
-    grade->add_option("--labs", o->labs, "a submission: a copy of labs/ to build and grade")->check(CLI::ExistingDirectory);
-    grade->add_option("--images", o->images, "grade pictures DIR/<figure id>.png, no code");
-    grade->add_option("--report", o->report, "where the reports go (default: out/report)");
-    grade->add_option("--lab", o->lab, "grade this lab only (its number)")->check(CLI::PositiveNumber);
-    grade->add_option("--item", o->item, "grade one check (its name) or figure (its id) alone; 0 only when it passes");
+    CLI::App* grade = app.add_subcommand("grade", tr("cli.grade"));
+    grade->add_option("--labs", o->labs, tr("cli.grade_labs"))->check(CLI::ExistingDirectory);
+    grade->add_option("--images", o->images, tr("cli.grade_images"));
+    grade->add_option("--report", o->report, tr("cli.grade_report"));
+    grade->add_option("--lab", o->lab, tr("cli.grade_lab"))->check(CLI::PositiveNumber);
+    grade->add_option("--item", o->item, tr("cli.grade_item"));
     grade->add_option("--agent", o->agents, "expert: grade this agent program (all labs)")->group("");
     addCommonOptions(grade, *o);
     context.addRenderOptions(grade);

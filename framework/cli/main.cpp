@@ -5,7 +5,10 @@
 #include "raylab/messages.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <limits>
+#include <regex>
 #include <string>
 #include <string_view>
 
@@ -19,7 +22,73 @@ std::string unknownCommand(CLI::App& app, int argc, char** argv) {
         if (command->get_name() == argv[1]) return "";
         names += (names.empty() ? "" : ", ") + command->get_name();
     }
-    return "unknown command '" + std::string(argv[1]) + "'; commands are: " + names + " (raylab --help says more)";
+    return raylab::tr("cli.unknown_command", {{"command", argv[1]}, {"commands", names}});
+}
+
+// CLI11's errors are English sentences around an option's name and a value; the common ones are said
+// again in the reader's language with that name and value. Any other keeps CLI11's text.
+std::string sayParseError(const CLI::Error& error) {
+    using raylab::tr;
+    const std::string what = error.what();
+    std::smatch m;
+    static const std::regex notExpected("The following arguments? (?:was|were) not expected: (.*)");
+    static const std::regex missingValue(R"((\S+): \d+ required (\S+) missing)");
+    static const std::regex notInSet(R"((\S+): (.*) not in (\{.*\}))");
+    static const std::regex notInRange(R"((\S+): Value (.*) not in range (\S+) to (\S+))");
+    static const std::regex noDirectory(R"((\S+): Directory does not exist: (.*))");
+    static const std::regex noFile(R"((\S+): File does not exist: (.*))");
+    static const std::regex required(R"((\S+) is required)");
+    static const std::regex notAllowed(R"(The value (.*) is not an allowed value for (\S+))");
+    static const std::regex notConverted(R"(Could not convert: (\S+) = (.*))");
+    if (std::regex_match(what, m, notExpected)) return tr("cli.not_expected", {{"args", m[1]}});
+    if (std::regex_match(what, m, missingValue)) return tr("cli.missing_value", {{"option", m[1]}, {"type", m[2]}});
+    // CLI::PositiveNumber is a range up to the largest double.
+    if (std::regex_match(what, m, notInRange) && std::strtod(m[4].str().c_str(), nullptr) >= std::numeric_limits<double>::max())
+        return tr("cli.not_positive", {{"option", m[1]}, {"value", m[2]}});
+    if (std::regex_match(what, m, notInRange))
+        return tr("cli.not_in_range", {{"option", m[1]}, {"value", m[2]}, {"low", m[3]}, {"high", m[4]}});
+    if (std::regex_match(what, m, notInSet))
+        return tr("cli.not_in_set", {{"option", m[1]}, {"value", m[2]}, {"allowed", m[3]}});
+    if (std::regex_match(what, m, noDirectory)) return tr("cli.no_directory", {{"option", m[1]}, {"path", m[2]}});
+    if (std::regex_match(what, m, noFile)) return tr("cli.no_file", {{"option", m[1]}, {"path", m[2]}});
+    if (what == "A subcommand is required") return tr("cli.command_required");
+    if (std::regex_match(what, m, required)) return tr("cli.required", {{"option", m[1]}});
+    if (std::regex_match(what, m, notAllowed)) return tr("cli.not_a_value", {{"option", m[2]}, {"value", m[1]}});
+    if (std::regex_match(what, m, notConverted)) return tr("cli.not_a_value", {{"option", m[1]}, {"value", m[2]}});
+    return what;
+}
+
+// The help's headings in the reader's language, and the options' group, inherited by every command
+// added after this.
+void sayHelpInLanguage(CLI::App& app) {
+    using raylab::tr;
+    const auto formatter = app.get_formatter();
+    formatter->label("Usage", tr("cli.label_usage"));
+    formatter->label("OPTIONS", tr("cli.label_options_upper"));
+    formatter->label("Positionals", tr("cli.label_positionals"));
+    formatter->label("SUBCOMMAND", tr("cli.label_subcommand"));
+    formatter->label("SUBCOMMANDS", tr("cli.label_subcommand"));
+    formatter->label("REQUIRED", tr("cli.label_required"));
+    app.option_defaults()->group(tr("cli.label_options"));
+    app.group(tr("cli.label_subcommands"));
+    app.set_help_flag("-h,--help", tr("cli.help"));
+    app.failure_message([](const CLI::App*, const CLI::Error& error) {
+        return tr("cli.error", {{"what", sayParseError(error)}}) + "\n" + tr("cli.run_help") + "\n";
+    });
+}
+
+// The options every render command shares are added by context.cpp with English help; say it in the
+// reader's language here, in every command. A command's help flag is made before it inherits the
+// options' group: put it in that group.
+void sayRenderOptionsInLanguage(CLI::App& command) {
+    if (CLI::Option* help = command.get_help_ptr()) help->group(raylab::tr("cli.label_options"));
+    for (CLI::Option* option : command.get_options([](const CLI::Option*) { return true; })) {
+        if (option->check_lname("threads")) option->description(raylab::tr("cli.threads"));
+        else if (option->check_lname("scenes")) option->description(raylab::tr("cli.scenes"));
+        else if (option->check_lname("impl")) option->description(raylab::tr("cli.impl"));
+    }
+    for (CLI::App* subcommand : command.get_subcommands([](CLI::App*) { return true; }))
+        sayRenderOptionsInLanguage(*subcommand);
 }
 
 // --lang is read before the commands run, wherever it stands on the line (`raylab grade --lang fr`),
@@ -38,15 +107,17 @@ void chooseLanguage(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     using namespace raylab;
-    CLI::App app{"raylab: the ray-tracing labs of TP1 (premières images).\nThis program is the " +
-                 std::string(build::kImpl) + " build: " + build::kLabOrigins};
-    app.require_subcommand(1);
     chooseLanguage(argc, argv);
+    CLI::App app{tr("cli.program", {{"impl", tr(std::string("figures.impl_") + build::kImpl)}, {"origins", build::kLabOrigins}})};
+    sayHelpInLanguage(app);
+    app.require_subcommand(1);
     std::string lang = raylab::languageCode(raylab::language());
-    app.add_option("--lang", lang, "the language of the messages, en or fr (default: from LC_ALL, LC_MESSAGES, LANG)")
-        ->check(CLI::IsMember({"en", "fr"}));
+    app.add_option("--lang", lang, tr("cli.lang"))->check(CLI::IsMember({"en", "fr"}));
     app.fallthrough(); // --lang after the subcommand too
     cli::Context context{argc, argv, build::kImpl, 0, build::kScenesDir};
+    // The student commands (figures, lab, render, grade, report) describe themselves in the reader's
+    // language; the instructors' (references, distribute, autograder, study, numerics, bench,
+    // bench-effects, grade-class) stay English.
     cli::addFigureCommands(app, context);
     cli::addBenchCommand(app, context);
     cli::addGradeCommands(app, context);
@@ -57,8 +128,9 @@ int main(int argc, char** argv) {
     cli::addBenchEffectsCommand(app, context);
     cli::addNumericsCommands(app, context);
     cli::addReportCommand(app, context);
+    sayRenderOptionsInLanguage(app);
     if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
-        std::fprintf(stderr, "raylab: error: %s\n", unknown.c_str());
+        std::fprintf(stderr, "%s\n", raylab::tr("cli.error", {{"what", unknown}}).c_str());
         return 1;
     }
     try {

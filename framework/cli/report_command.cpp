@@ -16,10 +16,9 @@ void addReportCommand(CLI::App& app, Context& context) {
     auto request = std::make_shared<report::ReportRequest>();
     auto out = std::make_shared<std::string>("out/report-kit");
     CLI::App* command = app.add_subcommand(
-        "report", "your lab report: renders and grades your figures into DIR/report.md (yours to write in; a re-run "
-                  "keeps your text) and DIR/report.html");
-    command->add_option("--out", *out, "the report's folder (default: out/report-kit)");
-    command->add_flag("--pdf", request->pdf, "also print DIR/report.pdf (with chromium, when it is installed)");
+        "report", tr("cli.report"));
+    command->add_option("--out", *out, tr("cli.report_out"));
+    command->add_flag("--pdf", request->pdf, tr("cli.report_pdf"));
     context.addImplOption(command);
     context.addRenderOptions(command);
     command->callback([&context, request, out] {

@@ -1,0 +1,110 @@
+// The command line speaks the reader's language: `raylab --help`, the student commands' help and the
+// argument errors, CLI11's own included, are French with --lang fr and hold none of the English sentences.
+#include "raylab/messages.h"
+#include "support/run_program.h"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+using namespace raylab;
+
+namespace {
+
+// Runs raylab with `args`: its output; `fails` tells whether it must exit with an error.
+std::string run(std::vector<std::string> args, bool fails = false) {
+    args.insert(args.begin(), RAYLAB_PROGRAM);
+    const auto output = std::filesystem::temp_directory_path() / ("raylab-cli-language-" + std::to_string(getpid()) + ".txt");
+    const test::ProgramRun done = test::runProgram(args, output);
+    std::filesystem::remove(output);
+    CHECK_MESSAGE((done.status != 0) == fails, done.status << ": " << done.output);
+    CHECK_MESSAGE(done.status < 128, done.output); // not killed by a signal
+    return done.output;
+}
+
+bool has(const std::string& output, const std::string& text) { return output.find(text) != std::string::npos; }
+
+// Each description is in the output in French and not in English.
+void checkDescriptions(const std::string& output, const std::vector<std::string>& ids) {
+    for (const std::string& id : ids) {
+        CHECK_MESSAGE(has(output, tr(Language::Fr, id)), id << " in\n" << output);
+        CHECK_MESSAGE(!has(output, tr(Language::En, id)), id << " in\n" << output);
+    }
+}
+
+// CLI11's English, which a French reader must never see.
+const std::vector<std::string> kCli11English{"Usage:", "Print this help message", "Run with --help",
+                                             "not expected", "is required", "not in range", "Could not convert",
+                                             "Subcommands:", "Positionals:"};
+
+void checkNoCli11English(const std::string& output) {
+    for (const std::string& english : kCli11English) CHECK_MESSAGE(!has(output, english), english << " in\n" << output);
+}
+
+} // namespace
+
+TEST_SUITE("command line language") {
+
+TEST_CASE("raylab --help in French: the program, the student commands, the headings") {
+    const std::string help = run({"--lang", "fr", "--help"});
+    CHECK_MESSAGE(has(help, "Utilisation"), help);
+    CHECK_MESSAGE(has(help, "Affiche cette aide et quitte"), help);
+    CHECK_MESSAGE(has(help, "Commandes"), help);
+    checkDescriptions(help, {"cli.lang", "cli.figures", "cli.lab", "cli.render", "cli.grade", "cli.report"});
+    CHECK_MESSAGE(!has(help, "This program is the"), help);
+    checkNoCli11English(help);
+}
+
+TEST_CASE("raylab grade --help in French: every option's description") {
+    const std::string help = run({"grade", "--help", "--lang", "fr"});
+    checkDescriptions(help, {"cli.grade", "cli.grade_labs", "cli.grade_images", "cli.grade_report", "cli.grade_lab",
+                             "cli.grade_item", "cli.grade_references", "cli.grade_timeout", "cli.grade_build_dir",
+                             "cli.threads", "cli.scenes"});
+    checkNoCli11English(help);
+}
+
+TEST_CASE("the student commands' options are described in French") {
+    checkDescriptions(run({"--lang", "fr", "figures", "--help"}),
+                      {"cli.figures_out", "cli.figures_only", "cli.impl", "cli.threads"});
+    checkDescriptions(run({"--lang", "fr", "lab", "--help"}), {"cli.lab_number", "cli.lab_out"});
+    checkDescriptions(run({"--lang", "fr", "render", "--help"}), {"cli.render_file", "cli.render_out"});
+    checkDescriptions(run({"--lang", "fr", "report", "--help"}), {"cli.report_out", "cli.report_pdf"});
+}
+
+TEST_CASE("argument errors in French keep the option's name and the value") {
+    const std::string nbsp = "\u00A0";
+    struct Case {
+        std::vector<std::string> args;
+        std::string french;
+    };
+    // --lang last (it may stand anywhere), but before an option left without its value.
+    const std::vector<Case> cases{
+        {{"grade", "--bogus", "--lang", "fr"}, "inattendu ici" + nbsp + ": --bogus"},
+        {{"--lang", "fr", "grade", "--lab"}, "--lab attend une valeur"},
+        {{"grade", "--lab", "two", "--lang", "fr"}, "--lab" + nbsp + ": two n'est pas un nombre positif"},
+        {{"report", "--pdf=maybe", "--lang", "fr"}, "--pdf" + nbsp + ": «" + nbsp + "maybe" + nbsp + "» n'est pas une valeur valide"},
+        {{"lab", "9", "--lang", "fr"}, "N" + nbsp + ": 9 n'est pas entre 1 et 5"},
+        {{"render", "--lang", "fr"}, "FILE est obligatoire"},
+        {{"figures", "--impl", "mine", "--lang", "fr"}, "--impl" + nbsp + ": mine n'est pas l'une des valeurs {student,reference}"},
+        {{"grade", "--labs", "/nonexistent/labs", "--lang", "fr"}, "ce dossier n'existe pas" + nbsp + ": /nonexistent/labs"},
+        {{"--lang", "fr"}, "il faut une commande"},
+        {{"frobnicate", "--lang", "fr"}, "commande inconnue «" + nbsp + "frobnicate" + nbsp + "»"},
+    };
+    for (const Case& c : cases) {
+        const std::string output = run(c.args, true);
+        CHECK_MESSAGE(has(output, c.french), output);
+        CHECK_MESSAGE(has(output, "raylab" + nbsp + ": erreur" + nbsp + ": "), output);
+        checkNoCli11English(output);
+    }
+}
+
+TEST_CASE("in English, the same errors are English") {
+    const std::string output = run({"grade", "--bogus", "--lang", "en"}, true);
+    CHECK_MESSAGE(has(output, "raylab: error: not expected here: --bogus"), output);
+    CHECK_MESSAGE(has(output, "Run with --help for more information."), output);
+}
+
+}
