@@ -43,7 +43,8 @@ public:
     Ray generateRay(float sx, float sy) const {
         if (m_direct) [[likely]]
             return m_perspective->generateRay(sx, sy);
-        return m_camera.generateRay(sx, sy);
+        const Ray ray = m_camera.generateRay(sx, sy);
+        return Ray{ray.origin, ray.direction}; // a copy: see Li
     }
     int width() const { return m_camera.width(); }
     int height() const { return m_camera.height(); }
@@ -72,7 +73,12 @@ public:
     Color Li(const Scene& scene, const Ray& ray) const {
         if (m_direct) [[likely]]
             return m_rayCast->Li(scene, ray);
-        return m_integrator.Li(scene, ray);
+        // The virtual call gets a copy of the ray, so that the caller's ray never has its address
+        // taken: once the direct call is inlined, the compiler keeps that ray in registers. Without
+        // the copy Clang kept it on the stack, stored in pieces and read back whole, which the CPU
+        // cannot forward from its store buffer (docs/performance.md, "Clang").
+        const Ray copy = ray;
+        return m_integrator.Li(scene, copy);
     }
     operator const Integrator&() const { return m_integrator; }
     // Lab 3's integrator when it is the one, else null.
