@@ -12,6 +12,13 @@
 #include <stdexcept>
 #include <string>
 
+// Inline every call in a function, as deep as it goes (GCC, Clang).
+#if defined(__GNUC__)
+#define RAYLAB_FLATTEN [[gnu::flatten]]
+#else
+#define RAYLAB_FLATTEN
+#endif
+
 namespace raylab {
 
 namespace {
@@ -41,6 +48,15 @@ std::uint64_t forEachTile(const std::vector<Tile>& tiles, int threads, bool prog
 
 std::uint64_t pixelCount(int width, int height) { return std::uint64_t(width) * std::uint64_t(height); }
 
+// The sum of pixel(renderer, i, j) over the pixels [x0, x1) x [y0, y1).
+template <class Pixel>
+std::uint64_t sumOverPixels(const Renderer& renderer, int x0, int y0, int x1, int y1, const Pixel& pixel) {
+    std::uint64_t sum = 0;
+    for (int j = y0; j < y1; ++j)
+        for (int i = x0; i < x1; ++i) sum += pixel(renderer, i, j);
+    return sum;
+}
+
 // The integrator seen by adaptive sampling's first pass: passes every colour through and keeps the
 // range of the colours since the last reset. One per worker thread, so nothing is shared.
 class SpreadProbe final : public Integrator {
@@ -63,7 +79,7 @@ public:
     }
 
 private:
-    const Integrator& m_inner;
+    IntegratorHandle m_inner; // lab 3's integrator called directly
     mutable Color m_lo{INFINITY};
     mutable Color m_hi{-INFINITY};
 };
@@ -75,6 +91,27 @@ std::uint64_t secondPassSeed(std::uint64_t seed) { return seed ^ 0x9e3779b97f4a7
 
 Renderer::Renderer(const Scene& scene, const BaseCamera& camera, const Integrator& integrator)
     : m_scene(scene), m_camera(camera), m_integrator(integrator) {}
+
+Renderer::Renderer(const Renderer& settings, const PerspectiveCamera& camera, const RayCastIntegrator& integrator)
+    : m_scene(settings.m_scene), m_camera(camera), m_integrator(integrator), m_nbPixelSamples(settings.m_nbPixelSamples),
+      m_sampler(settings.m_sampler), m_seed(settings.m_seed), m_adaptive(settings.m_adaptive),
+      m_threads(settings.m_threads), m_progress(settings.m_progress) {}
+
+template <class Pixel>
+std::uint64_t Renderer::forEachPixel(int x0, int y0, int x1, int y1, const Pixel& pixel) const {
+    if (m_camera.perspective() != nullptr && m_integrator.rayCast() != nullptr)
+        return forEachPixelDirect(x0, y0, x1, y1, pixel);
+    return sumOverPixels(*this, x0, y0, x1, y1, pixel);
+}
+
+// Every call in it is inlined (flatten; across files by link-time optimisation), lab 5's renderPixel
+// too, and `direct` never leaves it: the compiler sees that its handles are direct, so lab 5's
+// sample loop keeps no test nor virtual call, and its sum and counter stay in registers.
+template <class Pixel>
+RAYLAB_FLATTEN std::uint64_t Renderer::forEachPixelDirect(int x0, int y0, int x1, int y1, const Pixel& pixel) const {
+    const Renderer direct(*this, *m_camera.perspective(), *m_integrator.rayCast());
+    return sumOverPixels(direct, x0, y0, x1, y1, pixel);
+}
 
 void Renderer::setThreads(int threads) {
     if (threads < 0) throw std::invalid_argument("Renderer: threads = " + std::to_string(threads) + " is negative");
@@ -121,9 +158,10 @@ std::vector<std::uint8_t> Renderer::pixelsToRefine(const std::vector<float>& spr
 
 void Renderer::renderCentres(Texture& image) {
     forEachTile(makeTiles(image.width(), image.height()), m_threads, m_progress, [&](const Tile& tile, unsigned) {
-        for (int j = tile.y0; j < tile.y1; ++j)
-            for (int i = tile.x0; i < tile.x1; ++i) image.setPixel(i, j, renderPixelCentre(i, j));
-        return std::uint64_t(0);
+        return forEachPixel(tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
+            image.setPixel(i, j, renderer.renderPixelCentre(i, j));
+            return std::uint64_t(0);
+        });
     });
     m_stats.primaryRays = pixelCount(image.width(), image.height());
 }
@@ -131,14 +169,11 @@ void Renderer::renderCentres(Texture& image) {
 void Renderer::renderSampled(Texture& image) {
     const int width = image.width();
     m_stats.randomNumbers = forEachTile(makeTiles(width, image.height()), m_threads, m_progress, [&](const Tile& tile, unsigned) {
-        std::uint64_t drawn = 0;
-        for (int j = tile.y0; j < tile.y1; ++j)
-            for (int i = tile.x0; i < tile.x1; ++i) {
-                PixelSampler sampler(m_sampler, m_nbPixelSamples, m_seed, i, j, width);
-                image.setPixel(i, j, renderPixel(i, j, sampler));
-                drawn += sampler.randomNumbersDrawn();
-            }
-        return drawn;
+        return forEachPixel(tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
+            PixelSampler sampler(m_sampler, m_nbPixelSamples, m_seed, i, j, width);
+            image.setPixel(i, j, renderer.renderPixel(i, j, sampler));
+            return sampler.randomNumbersDrawn();
+        });
     });
     m_stats.primaryRays = pixelCount(width, image.height()) * std::uint64_t(m_nbPixelSamples);
 }
@@ -173,15 +208,12 @@ void Renderer::renderAdaptive(Texture& image) {
     m_stats.refinedPixels = std::uint64_t(std::count(m_refined.begin(), m_refined.end(), std::uint8_t(1)));
     const Renderer more = passRenderer(m_integrator, m_adaptive.maxSamples);
     m_stats.randomNumbers += forEachTile(tiles, m_threads, m_progress, [&](const Tile& tile, unsigned) {
-        std::uint64_t drawn = 0;
-        for (int j = tile.y0; j < tile.y1; ++j)
-            for (int i = tile.x0; i < tile.x1; ++i) {
-                if (!m_refined[std::size_t(j) * width + i]) continue;
-                PixelSampler sampler(kind, m_adaptive.maxSamples, secondPassSeed(m_seed), i, j, width);
-                image.setPixel(i, j, more.renderPixel(i, j, sampler));
-                drawn += sampler.randomNumbersDrawn();
-            }
-        return drawn;
+        return more.forEachPixel(tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
+            if (!m_refined[std::size_t(j) * width + i]) return std::uint64_t(0);
+            PixelSampler sampler(kind, m_adaptive.maxSamples, secondPassSeed(m_seed), i, j, width);
+            image.setPixel(i, j, renderer.renderPixel(i, j, sampler));
+            return sampler.randomNumbersDrawn();
+        });
     });
     m_stats.primaryRays += m_stats.refinedPixels * std::uint64_t(m_adaptive.maxSamples);
 }
