@@ -6,6 +6,7 @@
 #include "grader/class_run.h"
 #include "grader/grade.h"
 #include "grader/report.h"
+#include "grader/sandbox.h"
 #include "grader/submission.h"
 #include "raylab/messages.h"
 
@@ -30,6 +31,7 @@ struct GradeOptions {
     double timeout = 180.;
     int lab = 0; // 0: every lab
     std::string item; // one check (its name) or figure (its id) alone
+    bool noSandbox = false; // grade-class: grade without bubblewrap, as asked
 };
 
 // A fresh folder of our own for the agents' files.
@@ -54,6 +56,7 @@ GradeSetup setupFor(const GradeOptions& o, const Context& context, const fs::pat
         throw std::invalid_argument(tr("grade.no_such_lab", {{"lab", std::to_string(o.lab)}, {"labs", labList(setup.labs)}}));
     }
     setup.limits.wallSeconds = o.timeout;
+    setup.limits.bubblewrap = !o.noSandbox;
     setup.threads = context.threads;
     return setup;
 }
@@ -155,7 +158,20 @@ StudentRecord classRecord(const std::string& name, const GradeResult& result) {
     return record;
 }
 
+// On Linux a class is graded under bubblewrap, or without it only when --no-sandbox says so: the
+// students' code could otherwise read the references and each other's folders.
+void requireBubblewrapForClass(const GradeOptions& o) {
+#ifdef __linux__
+    if (o.noSandbox) return;
+    if (const std::string missing = bubblewrapMissing(); !missing.empty())
+        throw std::runtime_error(tr("sandbox.class_needs_bubblewrap", {{"why", missing}}));
+#else
+    (void)o;
+#endif
+}
+
 int gradeClass(const ClassRunOptions& run, const GradeOptions& o, const Context& context) {
+    requireBubblewrapForClass(o);
     const fs::path scratch = scratchFolder("class");
     const GradeSetup setup = setupFor(o, context, scratch);
     const int status = runClass(run, [&](const StudentWork& work) {
@@ -209,6 +225,8 @@ void addGradeCommands(CLI::App& app, Context& context) {
     gradeClassCommand->add_option("DIR", run->classFolder, "one folder per student")->required()->check(CLI::ExistingDirectory);
     gradeClassCommand->add_option("--out", run->out, "grades.csv, and students/<name>/ for each (default: out/class)");
     gradeClassCommand->add_flag("--wait", run->wait, "another run is grading into --out: wait for it instead of stopping");
+    gradeClassCommand->add_flag("--no-sandbox", classOptions->noSandbox,
+                                "grade without bubblewrap (Linux), less confined: the students' code can read your files");
     gradeClassCommand->add_option("--lab", classOptions->lab, "grade this lab only (its number)")->check(CLI::PositiveNumber);
     gradeClassCommand->add_option("--agent", classOptions->agents, "expert: grade every student with this agent program")
         ->group("");

@@ -116,21 +116,32 @@ const char* const kBubblewrapIsolation[] = {"--unshare-pid", "--unshare-net", "-
                                             "--unshare-cgroup-try", "--die-with-parent", "--new-session",
                                             "--cap-drop", "ALL"};
 
-// bwrap, when it is installed and can make namespaces here (a container may forbid them).
-const fs::path& bubblewrap() {
-    static const fs::path found = [] {
+// bwrap in PATH, and whether it can make its namespaces here (a container may forbid them).
+struct BubblewrapProbe {
+    fs::path program; // empty: not installed
+    bool works = false;
+};
+
+const BubblewrapProbe& bubblewrapProbe() {
+    static const BubblewrapProbe found = [] {
+        BubblewrapProbe probe;
 #ifdef __linux__
-        const fs::path bwrap = findInPath("bwrap");
-        if (bwrap.empty()) return fs::path();
-        std::vector<std::string> probe{bwrap.string()};
-        probe.insert(probe.end(), std::begin(kBubblewrapIsolation), std::end(kBubblewrapIsolation));
-        probe.insert(probe.end(), {"--ro-bind", "/", "/", "--", "/bin/true"});
-        if (runProcess(probe, {{}, "/dev/null"}).succeeded()) return bwrap;
-        std::fprintf(stderr, "raylab: %s cannot make a sandbox here (user namespaces disabled?)\n", bwrap.c_str());
+        probe.program = findInPath("bwrap");
+        if (probe.program.empty()) return probe;
+        std::vector<std::string> argv{probe.program.string()};
+        argv.insert(argv.end(), std::begin(kBubblewrapIsolation), std::end(kBubblewrapIsolation));
+        argv.insert(argv.end(), {"--ro-bind", "/", "/", "--", "/bin/true"});
+        probe.works = runProcess(argv, {{}, "/dev/null"}).succeeded();
 #endif
-        return fs::path();
+        return probe;
     }();
     return found;
+}
+
+// bwrap, when it can confine agents here.
+fs::path bubblewrap() {
+    const BubblewrapProbe& probe = bubblewrapProbe();
+    return probe.works ? probe.program : fs::path();
 }
 
 // Said once a run: grading without bubblewrap is a choice the instructor must know about.
@@ -138,15 +149,11 @@ void sayOnceWithoutBubblewrap(bool turnedOff) {
     static std::once_flag once;
     std::call_once(once, [turnedOff] {
 #ifdef __linux__
-        std::fprintf(stderr,
-                     "raylab: grading WITHOUT bubblewrap (%s): the code graded can read your files, use the network "
-                     "and kill the grader with SIGKILL; it still runs in its own session with limits, and every "
-                     "process it starts is stopped\n",
-                     turnedOff ? "turned off" : "not installed: apt install bubblewrap");
+        const std::string why = turnedOff ? tr("sandbox.bubblewrap_turned_off") : bubblewrapMissing();
+        std::fprintf(stderr, "%s\n", tr("sandbox.without_bubblewrap", {{"why", why}}).c_str());
 #else
         (void)turnedOff;
-        std::fprintf(stderr, "raylab: grading without a sandbox for files and network (there is no bubblewrap on this "
-                             "system): the code graded runs in its own session, with limits\n");
+        std::fprintf(stderr, "%s\n", tr("sandbox.without_bubblewrap_here").c_str());
 #endif
     });
 }
@@ -595,7 +602,7 @@ private:
 };
 
 AgentRun runPosix(const AgentCommand& c, const SandboxLimits& limits) {
-    const fs::path& bwrap = limits.bubblewrap ? bubblewrap() : fs::path();
+    const fs::path bwrap = limits.bubblewrap ? bubblewrap() : fs::path();
     if (bwrap.empty()) sayOnceWithoutBubblewrap(!limits.bubblewrap);
     int report[2], request[2] = {-1, -1};
     if (!openPipe(report) || !openPipe(request))
@@ -641,6 +648,18 @@ std::string sandboxKind(const SandboxLimits& limits) {
     (void)limits;
     return "none";
 #endif
+}
+
+std::string bubblewrapMissing() {
+#ifdef RAYLAB_POSIX_SANDBOX
+    const BubblewrapProbe& probe = bubblewrapProbe();
+    if (probe.works) return {};
+    if (!probe.program.empty()) return tr("sandbox.bubblewrap_no_namespaces", {{"bwrap", probe.program.string()}});
+#ifdef __linux__
+    return tr("sandbox.bubblewrap_not_installed");
+#endif
+#endif
+    return tr("sandbox.bubblewrap_not_here");
 }
 
 AgentRun runAgent(const AgentCommand& command, const SandboxLimits& limits) {

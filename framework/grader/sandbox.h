@@ -26,7 +26,7 @@ struct SandboxLimits {
     double totalSeconds = 1800.; // wall-clock time of the whole run
     unsigned long long memoryBytes = 4ull << 30;
     unsigned long long fileBytes = 256ull << 20;
-    bool bubblewrap = true; // use it when it is installed (false: `grade-class --no-sandbox`)
+    bool bubblewrap = true; // use it when it is installed (false: `--no-sandbox`)
 };
 
 struct AgentCommand {
@@ -56,5 +56,9 @@ AgentRun runAgent(const AgentCommand& command, const SandboxLimits& limits);
 
 // How agents are confined with these limits: "bubblewrap", "process group" or "none".
 std::string sandboxKind(const SandboxLimits& limits);
+
+// Why bubblewrap cannot confine agents here, in the reader's language ("bubblewrap is not installed
+// (no bwrap in PATH)"); empty when it can. Looked up once: `bwrap` in PATH, able to make its namespaces.
+std::string bubblewrapMissing();
 
 } // namespace raylab::grader

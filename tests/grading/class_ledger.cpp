@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 #if defined(__unix__) || defined(__APPLE__)
 #include "program_process.h"
@@ -36,10 +37,14 @@ ProgramProcess startRaylab(const std::vector<std::string>& args, const fs::path&
     return startProgram(binDir() / "raylab", args, output);
 }
 
-// grade-class of `classDir` into `out`, every student graded by the reference agent on lab 1 (fast).
+// grade-class of `classDir` into `out`, every student graded by the reference agent on lab 1 (fast);
+// without bubblewrap where this system cannot run it (grade-class refuses otherwise, as tested below).
 std::vector<std::string> classArgs(const fs::path& classDir, const fs::path& out) {
-    return {"grade-class", classDir.string(), "--out", out.string(), "--agent", (binDir() / "raylab-agent-reference").string(),
-            "--lab", "1", "--threads", "2", "--timeout", "60"};
+    std::vector<std::string> args{"grade-class", classDir.string(), "--out", out.string(), "--agent",
+                                  (binDir() / "raylab-agent-reference").string(), "--lab", "1", "--threads", "2",
+                                  "--timeout", "60"};
+    if (!bubblewrapMissing().empty()) args.push_back("--no-sandbox");
+    return args;
 }
 
 fs::path freshFolder(const std::string& name) {
@@ -198,6 +203,66 @@ TEST_CASE("hostile folder names each get their own row with the real name and fu
     CHECK(results(root / "out").size() == names.size()); // a folder each
     for (const fs::path& folder : {root, classDir, root / "out", fs::current_path()}) CHECK_FALSE(fs::exists(folder / "PWNED"));
 }
+
+#ifdef __linux__
+TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap unless --no-sandbox; raylab grade warns once") {
+    const fs::path root = freshFolder("raylab-ledger-no-bubblewrap");
+    const fs::path classDir = makeClass(root, {"ann"});
+    // Two PATHs the grader looks bwrap up in: without it, and with one that cannot make its namespaces.
+    const fs::path withoutBwrap = root / "path-without-bwrap", brokenBwrap = root / "path-with-broken-bwrap";
+    fs::create_directories(withoutBwrap);
+    fs::create_directories(brokenBwrap);
+    fs::create_symlink("/bin/false", brokenBwrap / "bwrap");
+    const auto runWith = [&](const fs::path& path, const std::vector<std::string>& args) {
+        const ProgramProcess process = startProgram(binDir() / "raylab", args, root / "output.txt", 0, {"PATH=" + path.string()});
+        const int status = process.finish();
+        return std::pair(status, process.text());
+    };
+    const auto count = [](const std::string& text, const std::string& part) {
+        int found = 0;
+        for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++found;
+        return found;
+    };
+
+    const auto [missingStatus, missing] = runWith(withoutBwrap, classArgs(classDir, root / "out"));
+    CHECK(missingStatus == 1);
+    CHECK_MESSAGE(missing.find("grade-class needs bubblewrap on Linux") != std::string::npos, missing);
+    CHECK_MESSAGE(missing.find("apt install bubblewrap") != std::string::npos, missing);
+    CHECK_MESSAGE(missing.find("--no-sandbox") != std::string::npos, missing);
+    CHECK_FALSE(fs::exists(root / "out")); // refused before it took the lock or graded anyone
+
+    std::vector<std::string> french = classArgs(classDir, root / "out");
+    french.insert(french.end(), {"--lang", "fr"});
+    const auto [frenchStatus, frenchText] = runWith(withoutBwrap, french);
+    CHECK(frenchStatus == 1);
+    CHECK_MESSAGE(frenchText.find("grade-class a besoin de bubblewrap sous Linux") != std::string::npos, frenchText);
+    CHECK_MESSAGE(frenchText.find("apt install bubblewrap") != std::string::npos, frenchText);
+    CHECK_MESSAGE(frenchText.find("avec --no-sandbox") != std::string::npos, frenchText);
+
+    const auto [brokenStatus, broken] = runWith(brokenBwrap, classArgs(classDir, root / "out"));
+    CHECK(brokenStatus == 1);
+    CHECK_MESSAGE(broken.find((brokenBwrap / "bwrap").string() + " cannot create its namespaces here") != std::string::npos,
+                  broken);
+    CHECK_FALSE(fs::exists(root / "out"));
+
+    std::vector<std::string> noSandbox = classArgs(classDir, root / "out");
+    if (std::find(noSandbox.begin(), noSandbox.end(), "--no-sandbox") == noSandbox.end()) noSandbox.push_back("--no-sandbox");
+    const auto [gradedStatus, graded] = runWith(withoutBwrap, noSandbox);
+    CHECK_MESSAGE(gradedStatus == 0, graded);
+    CHECK_MESSAGE(count(graded, "grading WITHOUT bubblewrap (turned off by --no-sandbox)") == 1, graded);
+    const auto rows = readCsv(slurp(root / "out" / "grades.csv"));
+    REQUIRE(rows.size() == 2);
+    CHECK(rows[1][0] == "ann");
+
+    // A student grading their own code needs no bubblewrap: one line says it is missing, and why.
+    const auto [ownStatus, own] = runWith(withoutBwrap, {"grade", "--agent", (binDir() / "raylab-agent-reference").string(),
+                                                         "--lab", "1", "--threads", "2", "--report", (root / "report").string()});
+    CHECK_MESSAGE(ownStatus == 0, own);
+    CHECK_MESSAGE(count(own, "grading WITHOUT bubblewrap (bubblewrap is not installed (no bwrap in PATH; on Debian or "
+                             "Ubuntu: apt install bubblewrap))") == 1,
+                  own);
+}
+#endif
 
 } // TEST_SUITE
 

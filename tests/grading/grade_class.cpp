@@ -20,11 +20,12 @@ std::string slurp(const fs::path& file) {
 }
 
 // Runs grade-class from the class's parent folder (where a command run by mistake would write).
+// Without bubblewrap where this system cannot run it (grade-class refuses otherwise).
 int gradeClass(const fs::path& classDir, const fs::path& out, const fs::path& buildDir) {
-    return runProgram({(binDir() / "raylab").string(), "grade-class", classDir.string(), "--out", out.string(),
-                       "--build-dir", buildDir.string()},
-                      out.parent_path() / "class-output.txt", classDir.parent_path())
-        .status;
+    std::vector<std::string> argv{(binDir() / "raylab").string(), "grade-class", classDir.string(), "--out", out.string(),
+                                  "--build-dir", buildDir.string()};
+    if (!bubblewrapMissing().empty()) argv.push_back("--no-sandbox");
+    return runProgram(argv, out.parent_path() / "class-output.txt", classDir.parent_path()).status;
 }
 
 // The rows of a CSV file, quoting read as written (a field may hold a comma, a quote, a newline).

@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -22,6 +23,8 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+extern char** environ; // declared by unistd.h on Linux only
 
 namespace raylab::test {
 
@@ -61,12 +64,22 @@ struct ProgramProcess {
 };
 
 // Starts `program args...`. `fileSizeLimit` > 0: the files it writes stop at that many bytes and a
-// longer write fails (EFBIG) instead of killing it, as on a nearly full disk.
+// longer write fails (EFBIG) instead of killing it, as on a nearly full disk. `environment`: "NAME=value"
+// entries that replace the variables of those names in its environment (ours otherwise).
 inline ProgramProcess startProgram(const std::filesystem::path& program, const std::vector<std::string>& args,
-                                   const std::filesystem::path& output, long fileSizeLimit = 0) {
+                                   const std::filesystem::path& output, long fileSizeLimit = 0,
+                                   const std::vector<std::string>& environment = {}) {
     std::vector<std::string> argv{program.string()};
     argv.insert(argv.end(), args.begin(), args.end());
     const std::vector<char*> cargs = grader::argumentPointers(argv);
+    std::vector<std::string> env = environment;
+    const auto named = [](const std::string& entry) { return entry.substr(0, entry.find('=') + 1); };
+    for (char** e = environ; *e; ++e) {
+        const std::string entry = *e;
+        if (std::none_of(environment.begin(), environment.end(), [&](const std::string& given) { return named(given) == named(entry); }))
+            env.push_back(entry);
+    }
+    const std::vector<char*> cenv = grader::argumentPointers(env);
     std::fflush(nullptr);
     const pid_t pid = fork();
     REQUIRE(pid >= 0);
@@ -83,7 +96,7 @@ inline ProgramProcess startProgram(const std::filesystem::path& program, const s
             rlimit limit{rlim_t(fileSizeLimit), rlim_t(fileSizeLimit)};
             setrlimit(RLIMIT_FSIZE, &limit);
         }
-        execv(cargs[0], cargs.data());
+        execve(cargs[0], cargs.data(), cenv.data());
         _exit(127);
     }
     setpgid(pid, pid);

@@ -9,6 +9,8 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 #include <thread>
 
 using namespace raylab::grader;
@@ -63,6 +65,12 @@ bool hasLine(const AgentRun& run, const std::string& text) {
     return false;
 }
 
+// The timing bounds tell a grader that stops at once from one that waits for the item's limit: the
+// limit is kItemLimit and a run must end well before it, with room for a loaded machine (a sanitizer
+// build, other tests running) rather than a measure of speed.
+constexpr double kItemLimit = 120.;
+constexpr double kWellBefore = 20.;
+
 double secondsSince(std::chrono::steady_clock::time_point since) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
@@ -94,16 +102,18 @@ TEST_CASE("results come through the channel, never from stdout") {
     }
 }
 
-TEST_CASE("an endless loop is stopped at the wall-clock limit (within 4 s of a 1 s limit), its results kept") {
+TEST_CASE("an endless loop is stopped at the wall-clock limit, its results kept") {
     for (bool bwrap : sandboxes()) {
         CAPTURE(bwrap);
         SandboxLimits limits;
         limits.wallSeconds = 1.;
+        limits.totalSeconds = kItemLimit; // what would stop it if the item's limit did not
         const auto start = std::chrono::steady_clock::now();
         const AgentRun run = probe("loop", bwrap, limits);
         CHECK(run.timedOut);
         CHECK(hasLine(run, "hello"));
-        CHECK(secondsSince(start) < 5.);
+        CHECK(secondsSince(start) >= 1.);
+        CHECK(secondsSince(start) < kWellBefore);
         CHECK(run.describe().find("time limit") != std::string::npos);
     }
 }
@@ -113,51 +123,49 @@ TEST_CASE("the CPU limit stops a busy loop even without a wall-clock limit") {
         CAPTURE(bwrap);
         SandboxLimits limits;
         limits.cpuSeconds = 1;
-        limits.wallSeconds = 20.;
-        const auto start = std::chrono::steady_clock::now();
+        limits.wallSeconds = kItemLimit; // a CPU second may take several on a loaded machine
         const AgentRun run = probe("loop", bwrap, limits);
         CHECK_FALSE(run.timedOut);
         CHECK(run.signal == SIGXCPU);
-        CHECK(secondsSince(start) < 10.);
     }
 }
 
-TEST_CASE("a child that closes its channel and lives on is stopped within 4 s, whatever the item's limit") {
+TEST_CASE("a child that closes its channel and lives on is stopped long before the item's limit") {
     for (bool bwrap : sandboxes())
         for (const char* mode : {"silent", "close-and-loop"}) {
             CAPTURE(bwrap);
             CAPTURE(mode);
             SandboxLimits limits;
-            limits.wallSeconds = 60.;
+            limits.wallSeconds = kItemLimit;
             const auto start = std::chrono::steady_clock::now();
             const AgentRun run = probe(mode, bwrap, limits);
             CHECK(run.timedOut);
-            CHECK(secondsSince(start) < 4.);
+            CHECK(secondsSince(start) < kWellBefore);
         }
 }
 
-TEST_CASE("a grandchild holding the channel open does not hold the grader: the run ends within 2 s of the exit") {
+TEST_CASE("a grandchild holding the channel open does not hold the grader: the run ends with the child") {
     for (bool bwrap : sandboxes()) {
         CAPTURE(bwrap);
         SandboxLimits limits;
-        limits.wallSeconds = 60.;
+        limits.wallSeconds = kItemLimit;
         const auto start = std::chrono::steady_clock::now();
         const AgentRun run = probe("grandchild", bwrap, limits);
         CHECK(hasLine(run, "hello"));
         CHECK(run.exitCode == 0);
-        CHECK(secondsSince(start) < 2.);
+        CHECK(secondsSince(start) < kWellBefore);
     }
 }
 
-TEST_CASE("20 busy children are all stopped when their parent exits, within 2 s") {
+TEST_CASE("20 busy children are all stopped when their parent exits") {
     for (bool bwrap : sandboxes()) {
         CAPTURE(bwrap);
         SandboxLimits limits;
-        limits.wallSeconds = 60.;
+        limits.wallSeconds = kItemLimit;
         const auto start = std::chrono::steady_clock::now();
         const AgentRun run = probe("busy-children", bwrap, limits);
         CHECK(hasLine(run, "hello"));
-        CHECK(secondsSince(start) < 2.);
+        CHECK(secondsSince(start) < kWellBefore);
         CHECK(heartbeatStopped(scratchFor("busy-children", bwrap) / "heartbeat"));
     }
 }
@@ -166,11 +174,11 @@ TEST_CASE("a setsid daemon does not outlive the run") {
     for (bool bwrap : sandboxes()) {
         CAPTURE(bwrap);
         SandboxLimits limits;
-        limits.wallSeconds = 60.;
+        limits.wallSeconds = kItemLimit;
         const auto start = std::chrono::steady_clock::now();
         const AgentRun run = probe("daemon", bwrap, limits);
         CHECK(hasLine(run, "hello"));
-        CHECK(secondsSince(start) < 2.);
+        CHECK(secondsSince(start) < kWellBefore);
         const fs::path heartbeat = scratchFor("daemon", bwrap) / "heartbeat";
         CHECK(sizeOf(heartbeat) > 0); // it ran
         CHECK(heartbeatStopped(heartbeat));
@@ -311,8 +319,12 @@ TEST_CASE("memory beyond the limit is refused to the child") {
         limits.wallSeconds = 20.;
         const AgentRun run = probe("alloc", bwrap, limits);
 #ifdef RAYLAB_ASAN_TEST
-        // ASan's own guard (its RSS and allocation limits) stops the child with an error instead.
-        CHECK((hasLine(run, "refused") || run.exitCode != 0 || run.signal != 0));
+        // No address-space limit here: ASan's own RSS limit, set from memoryBytes, stops the child and
+        // says why (in stderr.txt, before the memory map it prints).
+        std::ifstream errors(scratchFor("alloc", bwrap) / "stderr.txt");
+        const std::string said{std::istreambuf_iterator<char>(errors), std::istreambuf_iterator<char>()};
+        CHECK(run.exitCode > 0);
+        CHECK_MESSAGE(said.find("hard rss limit exhausted (512Mb") != std::string::npos, run.describe());
         CHECK_FALSE(run.timedOut);
 #else
         CHECK(hasLine(run, "refused"));
