@@ -3,6 +3,7 @@
 
 #include "grader/lab_catalog.h"
 #include "grader/process.h"
+#include "raylab/messages.h"
 
 #include <charconv>
 #include <cmath>
@@ -26,10 +27,9 @@ CLI::Validator threadCount() {
             long long n = 0;
             const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
             if (error == std::errc::result_out_of_range || (error == std::errc() && n > kMaxThreads))
-                return text + " is more threads than raylab starts: at most " + std::to_string(kMaxThreads) +
-                       " (0: one per core)";
+                return tr("cli.too_many_threads", {{"value", text}, {"max", std::to_string(kMaxThreads)}});
             if (error != std::errc() || end != text.data() + text.size() || n < 0)
-                return "'" + text + "' is not a number of threads: 1 to " + std::to_string(kMaxThreads) + ", or 0 for one per core";
+                return tr("cli.not_threads", {{"value", text}, {"max", std::to_string(kMaxThreads)}});
             return "";
         },
         "0.." + std::to_string(kMaxThreads));
@@ -41,19 +41,19 @@ CLI::Validator positiveSeconds() {
             char* end = nullptr;
             const double seconds = std::strtod(text.c_str(), &end);
             if (text.empty() || *end != '\0' || !std::isfinite(seconds) || !(seconds > 0.))
-                return "'" + text + "' is not a time limit: give a positive number of seconds, such as 180";
+                return tr("cli.not_seconds", {{"value", text}});
             return "";
         },
         "SECONDS > 0");
 }
 
 void Context::addRenderOptions(CLI::App* command) {
-    command->add_option("--threads", threads, "render threads (0: one per core)")->check(threadCount());
-    command->add_option("--scenes", scenes, "the folder of figure scene files")->check(CLI::ExistingDirectory);
+    command->add_option("--threads", threads, tr("cli.threads"))->check(threadCount());
+    command->add_option("--scenes", scenes, tr("cli.scenes"))->check(CLI::ExistingDirectory);
 }
 
 void Context::addImplOption(CLI::App* command) {
-    command->add_option("--impl", impl, "whose lab code runs: student (labs/) or reference (solutions/)")
+    command->add_option("--impl", impl, tr("cli.impl"))
         ->check(CLI::IsMember({"student", "reference"}));
 }
 

@@ -77,18 +77,10 @@ void sayHelpInLanguage(CLI::App& app) {
     });
 }
 
-// The options every render command shares are added by context.cpp with English help; say it in the
-// reader's language here, in every command. A command's help flag is made before it inherits the
-// options' group: put it in that group.
-void sayRenderOptionsInLanguage(CLI::App& command) {
+// A command's help flag is made before it inherits the options' group: put it in that group.
+void groupHelpFlags(CLI::App& command) {
     if (CLI::Option* help = command.get_help_ptr()) help->group(raylab::tr("cli.label_options"));
-    for (CLI::Option* option : command.get_options([](const CLI::Option*) { return true; })) {
-        if (option->check_lname("threads")) option->description(raylab::tr("cli.threads"));
-        else if (option->check_lname("scenes")) option->description(raylab::tr("cli.scenes"));
-        else if (option->check_lname("impl")) option->description(raylab::tr("cli.impl"));
-    }
-    for (CLI::App* subcommand : command.get_subcommands([](CLI::App*) { return true; }))
-        sayRenderOptionsInLanguage(*subcommand);
+    for (CLI::App* subcommand : command.get_subcommands([](CLI::App*) { return true; })) groupHelpFlags(*subcommand);
 }
 
 // --lang is read before the commands run, wherever it stands on the line (`raylab grade --lang fr`),
@@ -128,7 +120,7 @@ int main(int argc, char** argv) {
     cli::addBenchEffectsCommand(app, context);
     cli::addNumericsCommands(app, context);
     cli::addReportCommand(app, context);
-    sayRenderOptionsInLanguage(app);
+    groupHelpFlags(app);
     if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
         std::fprintf(stderr, "%s\n", raylab::tr("cli.error", {{"what", unknown}}).c_str());
         return 1;

@@ -92,6 +92,8 @@ TEST_CASE("argument errors in French keep the option's name and the value") {
         {{"grade", "--labs", "/nonexistent/labs", "--lang", "fr"}, "ce dossier n'existe pas" + nbsp + ": /nonexistent/labs"},
         {{"--lang", "fr"}, "il faut une commande"},
         {{"frobnicate", "--lang", "fr"}, "commande inconnue «" + nbsp + "frobnicate" + nbsp + "»"},
+        {{"figures", "--threads", "5000", "--lang", "fr"}, "5000 fils, c'est plus que raylab n'en lance" + nbsp + ": au plus 1024"},
+        {{"grade", "--timeout", "nan", "--lang", "fr"}, "«" + nbsp + "nan" + nbsp + "» n'est pas une limite de temps"},
     };
     for (const Case& c : cases) {
         const std::string output = run(c.args, true);
