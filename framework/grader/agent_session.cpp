@@ -60,7 +60,7 @@ bool settleRun(const AgentPlan& plan, const AgentRun& run, const Batch& batch, c
                Ledger& ledger, Reported& reported) {
     const std::string program = plan.program.filename().string();
     if (!run.violations.empty()) { // a run that attacked the grader earns nothing
-        for (Item* item : batch.sent) ledger.fail(*item, "the code graded " + run.violations.front());
+        for (Item* item : batch.sent) ledger.fail(*item, tr("sandbox.attacked", {{"what", run.violations.front()}}));
         for (const std::string& v : run.violations) reported.problems.push_back(program + " " + v);
         return false;
     }

@@ -60,7 +60,7 @@ std::string AgentRun::describe() const {
             text = tr("sandbox.signal", {{"signal", std::to_string(signal)}});
     } else if (exitCode == 0) text = tr("sandbox.exited");
     else text = tr("sandbox.exit_status", {{"status", std::to_string(exitCode)}});
-    for (const std::string& v : violations) text += "; it " + v;
+    for (const std::string& v : violations) text += tr("sandbox.and_it", {{"what", v}});
     return text;
 }
 
@@ -434,8 +434,8 @@ public:
         for (Violation& v : g_violations) {
             const long from = v.agent.load();
             if (from == 0 || (from != m_agent && from != kStarting)) continue;
-            found.push_back("sent signal " + std::to_string(v.signal.load()) + " (" + strsignal(v.signal.load()) +
-                            ") to the grader");
+            found.push_back(tr("sandbox.signalled_grader", {{"signal", std::to_string(v.signal.load())},
+                                                            {"name", strsignal(v.signal.load())}}));
             v.agent.store(0);
         }
         return found;
