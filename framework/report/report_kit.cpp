@@ -188,7 +188,7 @@ int writeReportKit(const ReportRequest& request) {
     writePages(KitContent{words, title, result, setup.labs, std::move(figures), closeUp}, out);
 
     std::printf("%s", terminalSummary(result).c_str());
-    if (title.placeholders) std::printf("%s\n", fill(words.fillTitleBlock, {(out / "report.toml").string()}).c_str());
+    if (title.placeholders) std::printf("%s\n", words.text("fill_title_block", {{"file", (out / "report.toml").string()}}).c_str());
     std::printf("report: %s and %s (the grader's report: %s)\n", (out / "report.md").string().c_str(),
                 (out / "report.html").string().c_str(), (out / "grade" / "index.html").string().c_str());
     return request.pdf ? printPdf(out) : 0;

@@ -29,8 +29,10 @@ std::string markdownText(const std::string& text) {
     return out;
 }
 
-// "**Name**: " ("**Nom** : " in French): the colon outside, where CommonMark lets the bold close.
-std::string bold(const std::string& label, const Words& w) { return "**" + label + "**" + w.colon; }
+// "**Name**: value" ("**Nom** : valeur" in French): the colon outside, where CommonMark lets the bold close.
+std::string boldField(const std::string& label, const std::string& value, const Words& w) {
+    return w.text("labelled", {{"label", "**" + label + "**"}, {"value", value}});
+}
 
 // The points of the function checks and of the figures, of one lab (0: every lab).
 std::string pointsDetail(const grader::GradeResult& grade, int lab, const Words& w) {
@@ -45,29 +47,31 @@ std::string pointsDetail(const grader::GradeResult& grade, int lab, const Words&
             figures += f.points;
             figuresMax += f.maxPoints;
         }
-    return fill(w.totalDetail, {number(checks, -1, w), number(checksMax, -1, w), number(figures, -1, w), number(figuresMax, -1, w)});
+    return w.text("total_detail", {{"checks", number(checks, -1, w)}, {"checks_max", number(checksMax, -1, w)},
+                                   {"figures", number(figures, -1, w)}, {"figures_max", number(figuresMax, -1, w)}});
 }
 
 Segment titleSegment(const KitContent& c) {
     const Words& w = c.words;
     const TitleBlock& t = c.title;
-    std::string text = std::string("# ") + w.title + "\n\n";
-    text += "- " + bold(w.name, w) + markdownText(t.name) + "\n";
-    text += "- " + bold(w.group, w) + markdownText(t.group) + "\n";
-    text += "- " + bold(w.course, w) + markdownText(t.course) + "\n";
-    text += "- " + bold(w.date, w) + markdownText(t.date) + "\n";
-    text += "- " + bold(w.total, w) + "**" + number(c.grade.score(), -1, w) + " / " + number(c.grade.maxScore(), -1, w) +
-            "** (" + pointsDetail(c.grade, 0, w) + ")\n\n";
-    text += std::string(w.intro) + "\n\n[" + w.fullReport + "](grade/index.html)\n";
+    std::string text = std::string("# ") + w.text("title") + "\n\n";
+    text += "- " + boldField(w.text("name"), markdownText(t.name), w) + "\n";
+    text += "- " + boldField(w.text("group"), markdownText(t.group), w) + "\n";
+    text += "- " + boldField(w.text("course"), markdownText(t.course), w) + "\n";
+    text += "- " + boldField(w.text("date"), markdownText(t.date), w) + "\n";
+    const std::string total = "**" + number(c.grade.score(), -1, w) + " / " + number(c.grade.maxScore(), -1, w) + "** (" +
+                              pointsDetail(c.grade, 0, w) + ")";
+    text += "- " + boldField(w.text("total"), total, w) + "\n\n";
+    text += w.text("intro") + "\n\n[" + w.text("full_report") + "](grade/index.html)\n";
     return {Segment::Kind::Generated, "title", text};
 }
 
 // The one-line reading of a difference map, with its scale.
 std::string differenceReading(const KitFigure& f, const Words& w) {
-    std::string line = fill(w.scaleReading, {"![scale](diff/scale.png)", std::to_string(kScaleFullLsb)});
+    std::string line = w.text("scale_reading", {{"scale", "![scale](diff/scale.png)"}, {"lsb", std::to_string(kScaleFullLsb)}});
     if (f.statistical) {
         line += ' ';
-        line += fill(w.statisticalReading, {number(f.outlierZ, -1, w)});
+        line += w.text("statistical_reading", {{"z", number(f.outlierZ, -1, w)}});
     }
     return line + "\n\n";
 }
@@ -75,16 +79,17 @@ std::string differenceReading(const KitFigure& f, const Words& w) {
 std::string figureMarkdown(const KitFigure& f, const KitContent& c) {
     const Words& w = c.words;
     const grader::LabFigure* handout = c.labs.figure(f.id);
-    std::string text = std::string("### ") + w.figure + " " + (handout ? handout->handout : "-") + " (" + f.id + ")\n\n";
-    if (handout) text += handout->caption(w.lang) + "\n\n";
+    std::string text = std::string("### ") + w.text("figure") + " " + (handout ? handout->handout : "-") + " (" + f.id + ")\n\n";
+    if (handout) text += handout->caption(w.code()) + "\n\n";
     if (!f.rendered) text += "**" + f.message + "**\n\n";
-    text += std::string(w.picturesRow) + "\n\n";
+    text += w.text("pictures_row") + "\n\n";
     if (f.rendered) text += "![" + f.id + "](figures/" + f.id + ".png) ";
     if (f.hasReference) text += "![" + f.id + " reference](grade/images/" + f.id + ".reference.png) ";
     if (f.hasDifference) text += "![" + f.id + " difference](diff/" + f.id + ".png)";
     text += "\n\n";
-    text += f.hasDifference ? differenceReading(f, w) : std::string("*") + w.noDifference + "*\n\n";
-    if (f.rendered) text += std::string(w.renderTime) + w.colon + seconds(f.stats.seconds, w) + "\n\n";
+    text += f.hasDifference ? differenceReading(f, w) : std::string("*") + w.text("no_difference") + "*\n\n";
+    if (f.rendered)
+        text += w.text("labelled", {{"label", w.text("render_time")}, {"value", seconds(f.stats.seconds, w)}}) + "\n\n";
     return text;
 }
 
@@ -113,7 +118,7 @@ std::string gradeMarkdown(const LabOutcome& lab, const KitContent& c) {
     lines += "lab " + std::to_string(lab.lab) + ": " + number(lab.points, -1, w) + " / " + number(lab.maxPoints, -1, w) +
              " (" + pointsDetail(c.grade, lab.lab, w) + ")\n";
     for (const std::string& note : lab.notes) lines += "note: " + note + "\n";
-    return std::string("### ") + w.grade + "\n\n```text\n" + lines + "```\n\n";
+    return std::string("### ") + w.text("grade") + "\n\n```text\n" + lines + "```\n\n";
 }
 
 const KitFigure* findFigure(const KitContent& c, const std::string& id) {
@@ -122,32 +127,34 @@ const KitFigure* findFigure(const KitContent& c, const std::string& id) {
     return nullptr;
 }
 
-std::string costLine(const KitFigure& f, const char* label, const Words& w) {
+std::string costLine(const KitFigure& f, const std::string& label, const Words& w) {
     const double pixels = double(f.width) * double(f.height);
     const double samples = pixels > 0 ? double(f.stats.primaryRays) / pixels : 0.;
-    return "- " + fill(w.cost, {label, number(samples, -1, w), std::to_string(f.stats.primaryRays), seconds(f.stats.seconds, w)}) + "\n";
+    return std::string("- ") + w.text("cost", {{"label", label}, {"samples", number(samples, -1, w)},
+                                  {"rays", std::to_string(f.stats.primaryRays)}, {"time", seconds(f.stats.seconds, w)}}) + "\n";
 }
 
 std::string comparisonMarkdown(const KitContent& c) {
     const Words& w = c.words;
     const CloseUp& z = *c.closeUp;
-    std::string text = std::string("### ") + w.comparison + "\n\n" + w.comparisonIntro + "\n\n";
+    std::string text = std::string("### ") + w.text("comparison") + "\n\n" + w.text("comparison_intro") + "\n\n";
     std::string pictures, closeUps, costs;
-    for (const auto& [id, label] : {std::pair{kAliasedFigure, w.aliased}, std::pair{kAntialiasedFigure, w.antialiased}}) {
+    for (const auto& [id, label] : {std::pair{kAliasedFigure, w.text("aliased")}, std::pair{kAntialiasedFigure, w.text("antialiased")}}) {
         const KitFigure* f = findFigure(c, id);
         if (f == nullptr || !f->rendered) {
             pictures += std::string("**") + (f ? f->message : std::string("no figure ") + id) + "** ";
             continue;
         }
-        pictures += "![" + std::string(label) + "](figures/" + id + ".png) ";
+        pictures += "![" + label + "](figures/" + id + ".png) ";
         closeUps += "![" + std::string(id) + " close-up](zoom/" + id + ".png) ";
         costs += costLine(*f, label, w);
     }
     text += pictures + "\n\n" + costs + "\n" + closeUps + "\n\n";
     const KitFigure* aliased = findFigure(c, kAliasedFigure);
-    text += fill(w.closeUp, {std::to_string(z.x), std::to_string(z.x + z.width - 1), std::to_string(z.y),
-                             std::to_string(z.y + z.height - 1), std::to_string(aliased ? aliased->width : 0),
-                             std::to_string(aliased ? aliased->height : 0), std::to_string(z.zoom)}) +
+    text += w.text("close_up", {{"x_first", std::to_string(z.x)}, {"x_last", std::to_string(z.x + z.width - 1)},
+                                 {"y_first", std::to_string(z.y)}, {"y_last", std::to_string(z.y + z.height - 1)},
+                                 {"width", std::to_string(aliased ? aliased->width : 0)},
+                                 {"height", std::to_string(aliased ? aliased->height : 0)}, {"zoom", std::to_string(z.zoom)}}) +
             "\n";
     return text;
 }
@@ -160,16 +167,18 @@ bool drawsComparison(const KitContent& c, int lab) {
 void appendLab(std::vector<Segment>& document, const LabOutcome& lab, const KitContent& c) {
     const Words& w = c.words;
     const grader::LabDescription* description = c.labs.lab(lab.lab);
-    std::string text = std::string("## ") + w.lab + " " + std::to_string(lab.lab) +
-                       (description ? w.colon + description->title(w.lang) : "") + "\n\n";
+    const std::string heading = w.text("lab") + " " + std::to_string(lab.lab);
+    std::string text = std::string("## ") +
+                       (description ? w.text("labelled", {{"label", heading}, {"value", description->title(w.code())}}) : heading) +
+                       "\n\n";
     for (const KitFigure& f : c.figures)
         if (f.lab == lab.lab) text += figureMarkdown(f, c);
     if (drawsComparison(c, lab.lab)) text += comparisonMarkdown(c);
     text += gradeMarkdown(lab, c);
-    text += std::string("### ") + w.yourText + " (" + w.lab + " " + std::to_string(lab.lab) + ")\n";
+    text += std::string("### ") + w.text("your_text") + " (" + heading + ")\n";
     const std::string key = "lab" + std::to_string(lab.lab);
     document.push_back({Segment::Kind::Generated, key, text});
-    document.push_back({Segment::Kind::Student, key, std::string("*") + w.yourTextHint + "*\n"});
+    document.push_back({Segment::Kind::Student, key, std::string("*") + w.text("your_text_hint") + "*\n"});
 }
 
 // Markdown to HTML by cmark, safe: raw HTML and javascript: links are left out.
@@ -208,8 +217,8 @@ std::string reportHtml(const std::vector<Segment>& document, const Words& words)
         body += s.kind == Segment::Kind::Student
                     ? substitute(templates::kStudentTextHtml, {{"key", escapeMarkup(s.key)}, {"content", markdownToHtml(s.text)}})
                     : markdownToHtml(s.text);
-    return substitute(templates::kReportHtml, {{"lang", words.lang},
-                                               {"title", escapeMarkup(words.title)},
+    return substitute(templates::kReportHtml, {{"lang", words.code()},
+                                               {"title", escapeMarkup(words.text("title"))},
                                                {"style", templates::kReportCss},
                                                {"script", templates::kReportJs},
                                                {"body", body}});

@@ -46,7 +46,7 @@ struct Reader {
         const std::string body = trimmed(text);
         if (in == In::Student) found.student.push_back({Segment::Kind::Student, key, body});
         else if (in == In::Generated && !hash.empty() && fingerprint(body) != hash && !body.empty())
-            found.unplaced.push_back(fill(words.editedGenerated, {key}) + "\n\n" + body);
+            found.unplaced.push_back(words.text("edited_generated", {{"section", key}}) + "\n\n" + body);
         else if (in == In::Nothing && !body.empty()) found.unplaced.push_back(body);
         in = In::Nothing;
         key.clear();
@@ -96,7 +96,7 @@ std::vector<Segment> placeStudentText(std::vector<Segment> fresh, const Previous
     for (const Segment& old : previous.student) {
         if (old.key == kKeptKey) keep(old.text);
         else if (written.count(old.key) == 0 || placed.count(old.key) != 0) // gone, or a second copy
-            keep(fill(words.keptFrom, {old.key}) + "\n\n" + old.text);
+            keep(words.text("kept_from", {{"section", old.key}}) + "\n\n" + old.text);
         else {
             for (Segment& s : fresh)
                 if (s.kind == Segment::Kind::Student && s.key == old.key) s.text = old.text;
@@ -106,7 +106,7 @@ std::vector<Segment> placeStudentText(std::vector<Segment> fresh, const Previous
     for (const std::string& text : previous.unplaced) keep(text);
     if (!kept.empty()) {
         fresh.push_back({Segment::Kind::Generated, "kept-heading",
-                         std::string("## ") + words.kept + "\n\n" + words.keptIntro + "\n"});
+                         std::string("## ") + words.text("kept") + "\n\n" + words.text("kept_intro") + "\n"});
         fresh.push_back({Segment::Kind::Student, kKeptKey, kept});
     }
     return fresh;

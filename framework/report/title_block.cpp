@@ -1,6 +1,7 @@
 #include "report/title_block.h"
 
 #include "raylab/atomic_file.h"
+#include "report/templates.h"
 
 #include <toml++/toml.h>
 
@@ -28,10 +29,15 @@ std::string today() {
     return text;
 }
 
+// report.toml as the first run creates it, in the report's language.
+const char* createdFile(Language language) {
+    return language == Language::Fr ? templates::kReportFrToml : templates::kReportEnToml;
+}
+
 // A placeholder is the value the created file holds ("Your name", "Votre nom"...).
 bool isPlaceholder(const std::string& key, const std::string& value) {
-    for (const char* lang : {"en", "fr"}) {
-        const std::string created = wordsFor(lang).tomlTemplate;
+    for (Language language : {Language::En, Language::Fr}) {
+        const std::string created = createdFile(language);
         if (created.find(key + " = \"" + value + "\"") != std::string::npos && !value.empty()) return true;
     }
     return false;
@@ -48,7 +54,7 @@ toml::table parse(const std::filesystem::path& file) {
 } // namespace
 
 TitleBlock readTitleBlock(const std::filesystem::path& file, const Words& words) {
-    if (!std::filesystem::exists(file)) writeFileAtomically(file, words.tomlTemplate);
+    if (!std::filesystem::exists(file)) writeFileAtomically(file, createdFile(words.language));
     const toml::table table = parse(file);
     for (const auto& [key, node] : table) {
         const bool known = std::find(std::begin(kKeys), std::end(kKeys), key.str()) != std::end(kKeys);
