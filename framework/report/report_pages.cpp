@@ -3,7 +3,9 @@
 #include "report/difference_map.h"
 #include "report/templates.h"
 
+#include "grader/checks/checks.h"
 #include "raylab/markup.h"
+#include "raylab/messages.h"
 
 #include <cmark.h>
 
@@ -93,17 +95,20 @@ std::string figureMarkdown(const KitFigure& f, const KitContent& c) {
     return text;
 }
 
+// The grader's lines for a check and a figure, as `raylab grade` says them (grader/report.cpp).
+std::string verdictAndLab(bool passed, int lab) {
+    return tr(passed ? "report.pass" : "report.fail") + "  " + tr("report.lab_short", {{"lab", std::to_string(lab)}}) + "  ";
+}
+
 std::string checkLine(const CheckOutcome& k, const Words& w) {
-    std::string line = std::string(k.passed ? "PASS" : "FAIL") + "  lab" + std::to_string(k.lab) + "  check " + k.name +
-                       " (" + number(k.points, -1, w) + " / " + number(k.maxPoints, -1, w) + ")\n";
+    std::string line = verdictAndLab(k.passed, k.lab) + tr("report.check_line", {{"name", grader::checkTitle(k.name)}}) + " (" +
+                       number(k.points, -1, w) + " / " + number(k.maxPoints, -1, w) + ")\n";
     if (!k.passed && !k.message.empty()) line += "        " + k.message + "\n";
     return line;
 }
 
-// The grader's line for a figure, as `raylab grade` prints it.
 std::string figureLine(const FigureOutcome& f) {
-    std::string line = std::string(f.passed ? "PASS" : "FAIL") + "  lab" + std::to_string(f.lab) + "  figure " + f.id +
-                       ": " + f.reason + "\n";
+    std::string line = verdictAndLab(f.passed, f.lab) + tr("report.figure_line", {{"id", f.id}, {"reason", f.reason}}) + "\n";
     if (!f.diagnosis.empty()) line += "        " + f.diagnosis + "\n";
     return line;
 }
@@ -115,9 +120,11 @@ std::string gradeMarkdown(const LabOutcome& lab, const KitContent& c) {
         if (k.lab == lab.lab) lines += checkLine(k, w);
     for (const FigureOutcome& f : c.grade.figures)
         if (f.lab == lab.lab) lines += figureLine(f);
-    lines += "lab " + std::to_string(lab.lab) + ": " + number(lab.points, -1, w) + " / " + number(lab.maxPoints, -1, w) +
-             " (" + pointsDetail(c.grade, lab.lab, w) + ")\n";
-    for (const std::string& note : lab.notes) lines += "note: " + note + "\n";
+    lines += w.text("labelled", {{"label", tr("report.lab", {{"lab", std::to_string(lab.lab)}})},
+                                 {"value", number(lab.points, -1, w) + " / " + number(lab.maxPoints, -1, w) + " (" +
+                                               pointsDetail(c.grade, lab.lab, w) + ")"}}) +
+             "\n";
+    for (const std::string& note : lab.notes) lines += tr("grade.note", {{"note", note}}) + "\n";
     return std::string("### ") + w.text("grade") + "\n\n```text\n" + lines + "```\n\n";
 }
 

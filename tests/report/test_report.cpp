@@ -265,7 +265,7 @@ TEST_CASE("--pdf: a PDF with chromium, a clear message without") {
     CHECK(fs::file_size(dir / "report.pdf") > 10000);
 }
 
-TEST_CASE("--lang fr: French headings and typography") {
+TEST_CASE("--lang fr: French headings, grade lines and typography") {
     const fs::path dir = makeKit("raylab-reference", "french", {"--lang", "fr"});
     const std::string md = read(dir / "report.md");
     CHECK(md.find("# Compte rendu de TP") != std::string::npos);
@@ -275,6 +275,10 @@ TEST_CASE("--lang fr: French headings and typography") {
     CHECK(std::regex_search(md, std::regex("temps de rendu\u00A0: [0-9]+,[0-9]{3} s")));
     CHECK(md.find("- **Nom**\u00A0: Votre nom") != std::string::npos);
     CHECK(md.find("sombre\u00A0: dans la tolérance") != std::string::npos);
+    // The grade block says the grader's lines in French too.
+    CHECK(md.find("RÉUSSI  TP 1  test fillGradient\u00A0: les coins et le milieu") != std::string::npos);
+    CHECK(md.find("TP 1\u00A0: 10 / 10 (") != std::string::npos);
+    CHECK(md.find("PASS  lab") == std::string::npos);
 }
 
 }
