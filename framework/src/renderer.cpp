@@ -99,7 +99,7 @@ Renderer::Renderer(const Renderer& settings, const PerspectiveCamera& camera, co
 
 template <class Pixel>
 std::uint64_t Renderer::forEachPixel(int x0, int y0, int x1, int y1, const Pixel& pixel) const {
-    if (m_camera.perspective() != nullptr && m_integrator.rayCast() != nullptr)
+    if (m_camera.lab() != nullptr && m_integrator.lab() != nullptr)
         return forEachPixelDirect(x0, y0, x1, y1, pixel);
     return sumOverPixels(*this, x0, y0, x1, y1, pixel);
 }
@@ -109,7 +109,7 @@ std::uint64_t Renderer::forEachPixel(int x0, int y0, int x1, int y1, const Pixel
 // sample loop keeps no test nor virtual call, and its sum and counter stay in registers.
 template <class Pixel>
 RAYLAB_FLATTEN std::uint64_t Renderer::forEachPixelDirect(int x0, int y0, int x1, int y1, const Pixel& pixel) const {
-    const Renderer direct(*this, *m_camera.perspective(), *m_integrator.rayCast());
+    const Renderer direct(*this, *m_camera.lab(), *m_integrator.lab());
     return sumOverPixels(direct, x0, y0, x1, y1, pixel);
 }
 

@@ -34,60 +34,53 @@ struct AdaptiveSettings {
 // tests one flag. Any other camera or integrator (the grader's probes, tests) is called through
 // its virtual function. A handle made from the final class itself is direct by construction: in a
 // loop where the compiler sees it made, the test and the virtual call disappear (renderer.cpp).
-class CameraHandle {
+// LabHandle is what both handles share: the object as its base class, and as the lab's final class
+// when it is one (`lab()`, null otherwise).
+template <class Base, class Lab> class LabHandle {
 public:
-    explicit CameraHandle(const BaseCamera& camera)
-        : m_camera(camera), m_perspective(dynamic_cast<const PerspectiveCamera*>(&camera)),
-          m_direct(m_perspective != nullptr) {}
-    explicit CameraHandle(const PerspectiveCamera& camera) : m_camera(camera), m_perspective(&camera), m_direct(true) {}
-    Ray generateRay(float sx, float sy) const {
-        if (m_direct) [[likely]]
-            return m_perspective->generateRay(sx, sy);
-        const Ray ray = m_camera.generateRay(sx, sy);
-        return Ray{ray.origin, ray.direction}; // a copy: see Li
-    }
-    int width() const { return m_camera.width(); }
-    int height() const { return m_camera.height(); }
-    float aspect() const { return m_camera.aspect(); }
-    const glm::vec3& position() const { return m_camera.position(); }
-    const glm::vec3& u() const { return m_camera.u(); }
-    const glm::vec3& v() const { return m_camera.v(); }
-    const glm::vec3& w() const { return m_camera.w(); }
-    operator const BaseCamera&() const { return m_camera; }
-    // Lab 2's camera when it is the one, else null.
-    const PerspectiveCamera* perspective() const { return m_perspective; }
+    explicit LabHandle(const Base& object)
+        : m_object(object), m_lab(dynamic_cast<const Lab*>(&object)), m_direct(m_lab != nullptr) {}
+    explicit LabHandle(const Lab& object) : m_object(object), m_lab(&object), m_direct(true) {}
+    operator const Base&() const { return m_object; }
+    const Lab* lab() const { return m_lab; }
 
-private:
-    const BaseCamera& m_camera;
-    const PerspectiveCamera* m_perspective; // null for any other camera
-    bool m_direct;                          // m_perspective != nullptr, known to the compiler when it can be
+protected:
+    const Base& m_object;
+    const Lab* m_lab; // null for any other class
+    bool m_direct;    // m_lab != nullptr, known to the compiler when it can be
 };
 
-class IntegratorHandle {
+class CameraHandle : public LabHandle<BaseCamera, PerspectiveCamera> {
 public:
-    explicit IntegratorHandle(const Integrator& integrator)
-        : m_integrator(integrator), m_rayCast(dynamic_cast<const RayCastIntegrator*>(&integrator)),
-          m_direct(m_rayCast != nullptr) {}
-    explicit IntegratorHandle(const RayCastIntegrator& integrator)
-        : m_integrator(integrator), m_rayCast(&integrator), m_direct(true) {}
+    using LabHandle::LabHandle;
+    Ray generateRay(float sx, float sy) const {
+        if (m_direct) [[likely]]
+            return m_lab->generateRay(sx, sy);
+        const Ray ray = m_object.generateRay(sx, sy);
+        return Ray{ray.origin, ray.direction}; // a copy: see Li
+    }
+    int width() const { return m_object.width(); }
+    int height() const { return m_object.height(); }
+    float aspect() const { return m_object.aspect(); }
+    const glm::vec3& position() const { return m_object.position(); }
+    const glm::vec3& u() const { return m_object.u(); }
+    const glm::vec3& v() const { return m_object.v(); }
+    const glm::vec3& w() const { return m_object.w(); }
+};
+
+class IntegratorHandle : public LabHandle<Integrator, RayCastIntegrator> {
+public:
+    using LabHandle::LabHandle;
     Color Li(const Scene& scene, const Ray& ray) const {
         if (m_direct) [[likely]]
-            return m_rayCast->Li(scene, ray);
+            return m_lab->Li(scene, ray);
         // The virtual call gets a copy of the ray, so that the caller's ray never has its address
         // taken: once the direct call is inlined, the compiler keeps that ray in registers. Without
         // the copy Clang kept it on the stack, stored in pieces and read back whole, which the CPU
         // cannot forward from its store buffer (docs/performance.md, "Clang").
         const Ray copy = ray;
-        return m_integrator.Li(scene, copy);
+        return m_object.Li(scene, copy);
     }
-    operator const Integrator&() const { return m_integrator; }
-    // Lab 3's integrator when it is the one, else null.
-    const RayCastIntegrator* rayCast() const { return m_rayCast; }
-
-private:
-    const Integrator& m_integrator;
-    const RayCastIntegrator* m_rayCast; // null for any other integrator
-    bool m_direct;                      // m_rayCast != nullptr, known to the compiler when it can be
 };
 
 class Renderer {
