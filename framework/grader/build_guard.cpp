@@ -144,6 +144,11 @@ fs::path resolved(const fs::path& path) {
 
 // Runs the compiler under the limits; its exit status, or -1 when it was stopped.
 int compile(const std::vector<std::string>& argv, unsigned wallSeconds) {
+    // Made before fork: the child allocates nothing under its address-space limit (an ASan build's
+    // allocator would fail there).
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
     const pid_t pid = fork();
     if (pid < 0) return 127;
     if (pid == 0) {
@@ -155,9 +160,6 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds) {
         setrlimit(RLIMIT_CPU, &cpu);
         setrlimit(RLIMIT_AS, &memory);
         setrlimit(RLIMIT_FSIZE, &file);
-        std::vector<char*> args;
-        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
         execvp(args[0], args.data());
         std::fprintf(stderr, "error: raylab-build-guard cannot run %s: %s\n", args[0], std::strerror(errno));
         _exit(127);
