@@ -5,10 +5,12 @@
 #include "grader/process.h"
 #include "raylab/messages.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -97,9 +99,9 @@ bool Context::ranInOtherImpl() {
 #endif
     std::error_code error;
     if (!fs::exists(program, error)) {
-        std::fprintf(stderr, "raylab: error: there is no %s build here (%s not found)%s\n", impl.c_str(),
-                     program.string().c_str(),
-                     impl == "reference" ? "; the reference build needs the solutions/ folder" : "");
+        const std::string why = tr("cli.no_build", {{"impl", tr("figures.impl_" + impl)}, {"program", program.string()}}) +
+                                (impl == "reference" ? tr("cli.no_build_reference") : "");
+        std::fprintf(stderr, "%s\n", tr("cli.error", {{"what", why}}).c_str());
         exitStatus = 1;
         return true;
     }
@@ -112,7 +114,8 @@ bool Context::ranInOtherImpl() {
     exitStatus = status < 0 ? 1 : int(status);
 #else
     execv(program.c_str(), cargs.data());
-    std::perror(("raylab: cannot run " + program.string()).c_str());
+    const std::string why = tr("cli.cannot_run", {{"program", program.string()}, {"why", std::strerror(errno)}});
+    std::fprintf(stderr, "%s\n", tr("cli.error", {{"what", why}}).c_str());
     exitStatus = 1;
 #endif
     return true;

@@ -148,7 +148,7 @@ void addFigureCommands(CLI::App& app, Context& context) {
     auto scene = std::make_shared<std::string>();
     auto out = std::make_shared<std::string>();
     CLI::App* render = app.add_subcommand("render", tr("cli.render"));
-    render->add_option("FILE", *scene, tr("cli.render_file"))->required();
+    render->add_option(tr("cli.type.FILE"), *scene, tr("cli.render_file"))->required();
     render->add_option("--out", *out, tr("cli.render_out"));
     context.addImplOption(render);
     context.addRenderOptions(render);

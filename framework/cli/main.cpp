@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <regex>
 #include <string>
 #include <string_view>
@@ -25,6 +26,30 @@ std::string unknownCommand(CLI::App& app, int argc, char** argv) {
     return raylab::tr("cli.unknown_command", {{"command", argv[1]}, {"commands", names}});
 }
 
+// CLI11 names an option's value with English words (TEXT:DIR, INT in [1 - 100]): each word the
+// catalogue knows ([cli.type]) is said in the reader's language.
+std::string typeNameInLanguage(const std::string& typeName) {
+    static const std::regex word("[A-Za-z]+");
+    const auto& catalogue = raylab::messageCatalogue(raylab::language());
+    std::string said;
+    auto from = typeName.cbegin();
+    for (std::sregex_iterator it(typeName.begin(), typeName.end(), word), end; it != end; ++it) {
+        said.append(from, (*it)[0].first);
+        const auto known = catalogue.find("cli.type." + it->str());
+        said += known != catalogue.end() ? known->second : it->str();
+        from = (*it)[0].second;
+    }
+    return said.append(from, typeName.cend());
+}
+
+// The help's option column (" TEXT:DIR REQUIRED") with the value types' words in the reader's language.
+class LanguageFormatter : public CLI::Formatter {
+  public:
+    std::string make_option_opts(const CLI::Option* option) const override {
+        return typeNameInLanguage(CLI::Formatter::make_option_opts(option));
+    }
+};
+
 // CLI11's errors are English sentences around an option's name and a value; the common ones are said
 // again in the reader's language with that name and value. Any other keeps CLI11's text.
 std::string sayParseError(const CLI::Error& error) {
@@ -40,8 +65,11 @@ std::string sayParseError(const CLI::Error& error) {
     static const std::regex required(R"((\S+) is required)");
     static const std::regex notAllowed(R"(The value (.*) is not an allowed value for (\S+))");
     static const std::regex notConverted(R"(Could not convert: (\S+) = (.*))");
+    static const std::regex atMost(R"((\S+): At Most (\d+) required but received (\d+))");
     if (std::regex_match(what, m, notExpected)) return tr("cli.not_expected", {{"args", m[1]}});
-    if (std::regex_match(what, m, missingValue)) return tr("cli.missing_value", {{"option", m[1]}, {"type", m[2]}});
+    if (std::regex_match(what, m, missingValue))
+        return tr("cli.missing_value", {{"option", m[1]}, {"type", typeNameInLanguage(m[2])}});
+    if (std::regex_match(what, m, atMost)) return tr("cli.at_most", {{"option", m[1]}, {"max", m[2]}, {"count", m[3]}});
     // CLI::PositiveNumber is a range up to the largest double.
     if (std::regex_match(what, m, notInRange) && std::strtod(m[4].str().c_str(), nullptr) >= std::numeric_limits<double>::max())
         return tr("cli.not_positive", {{"option", m[1]}, {"value", m[2]}});
@@ -62,7 +90,8 @@ std::string sayParseError(const CLI::Error& error) {
 // added after this.
 void sayHelpInLanguage(CLI::App& app) {
     using raylab::tr;
-    const auto formatter = app.get_formatter();
+    const auto formatter = std::make_shared<LanguageFormatter>();
+    app.formatter(formatter);
     formatter->label("Usage", tr("cli.label_usage"));
     formatter->label("OPTIONS", tr("cli.label_options_upper"));
     formatter->label("Positionals", tr("cli.label_positionals"));

@@ -15,8 +15,7 @@ namespace raylab::cli {
 void addReportCommand(CLI::App& app, Context& context) {
     auto request = std::make_shared<report::ReportRequest>();
     auto out = std::make_shared<std::string>("out/report-kit");
-    CLI::App* command = app.add_subcommand(
-        "report", tr("cli.report"));
+    CLI::App* command = app.add_subcommand("report", tr("cli.report"));
     command->add_option("--out", *out, tr("cli.report_out"));
     command->add_flag("--pdf", request->pdf, tr("cli.report_pdf"));
     context.addImplOption(command);
@@ -32,7 +31,9 @@ void addReportCommand(CLI::App& app, Context& context) {
         request->references = referencesFolder();
         request->labs = labsFolder();
         request->programs = build::kBinaryDir;
-        std::printf("raylab report, %s build (%s) -> %s\n", build::kImpl, build::kLabOrigins, out->c_str());
+        std::printf("%s\n", tr("report.banner", {{"impl", tr(std::string("figures.impl_") + build::kImpl)},
+                                                  {"origins", build::kLabOrigins}, {"folder", *out}})
+                                .c_str());
         context.exitStatus = report::writeReportKit(*request);
     });
 }

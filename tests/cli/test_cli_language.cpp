@@ -38,7 +38,9 @@ void checkDescriptions(const std::string& output, const std::vector<std::string>
 // CLI11's English, which a French reader must never see.
 const std::vector<std::string> kCli11English{"Usage:", "Print this help message", "Run with --help",
                                              "not expected", "is required", "not in range", "Could not convert",
-                                             "Subcommands:", "Positionals:"};
+                                             "Subcommands:", "Positionals:", "At Most", "required but received",
+                                             // its value types (TEXT:DIR, INT in [1 - 100]), the words alone
+                                             " TEXT", "INT:", "INT ", ":DIR", "DIR/", "FILE"};
 
 void checkNoCli11English(const std::string& output) {
     for (const std::string& english : kCli11English) CHECK_MESSAGE(!has(output, english), english << " in\n" << output);
@@ -74,6 +76,18 @@ TEST_CASE("the student commands' options are described in French") {
     checkDescriptions(run({"--lang", "fr", "report", "--help"}), {"cli.report_out", "cli.report_pdf"});
 }
 
+TEST_CASE("the options' value types are named in French") {
+    const std::string help = run({"--lang", "fr", "grade", "--help"});
+    CHECK_MESSAGE(has(help, "TEXTE:DOSSIER"), help);  // --labs
+    CHECK_MESSAGE(has(help, "ENTIER:0..1024"), help); // --threads
+    CHECK_MESSAGE(has(help, "ENTIER:POSITIF"), help); // --lab
+    checkNoCli11English(help);
+    checkNoCli11English(run({"--lang", "fr", "report", "--help"}));
+    checkNoCli11English(run({"--lang", "fr", "render", "--help"}));
+    const std::string english = run({"--lang", "en", "grade", "--help"});
+    CHECK_MESSAGE(has(english, "TEXT:DIR"), english);
+}
+
 TEST_CASE("argument errors in French keep the option's name and the value") {
     const std::string nbsp = "\u00A0";
     struct Case {
@@ -87,7 +101,8 @@ TEST_CASE("argument errors in French keep the option's name and the value") {
         {{"grade", "--lab", "two", "--lang", "fr"}, "--lab" + nbsp + ": two n'est pas un nombre positif"},
         {{"report", "--pdf=maybe", "--lang", "fr"}, "--pdf" + nbsp + ": «" + nbsp + "maybe" + nbsp + "» n'est pas une valeur valide"},
         {{"lab", "9", "--lang", "fr"}, "N" + nbsp + ": 9 n'est pas entre 1 et 5"},
-        {{"render", "--lang", "fr"}, "FILE est obligatoire"},
+        {{"render", "--lang", "fr"}, "FICHIER est obligatoire"},
+        {{"report", "--out", "a", "--out", "b", "--lang", "fr"}, "--out apparaît 2 fois" + nbsp + "; le maximum est 1"},
         {{"figures", "--impl", "mine", "--lang", "fr"}, "--impl" + nbsp + ": mine n'est pas l'une des valeurs {student,reference}"},
         {{"grade", "--labs", "/nonexistent/labs", "--lang", "fr"}, "ce dossier n'existe pas" + nbsp + ": /nonexistent/labs"},
         {{"--lang", "fr"}, "il faut une commande"},

@@ -2,6 +2,7 @@
 // number, its pictures and maps with their scale, the grade of the code (the same total as `raylab
 // grade`); the student build (stubs) reports each lab as not done yet; a re-run keeps the student's
 // text; the title block comes from report.toml; --pdf prints a PDF with chromium.
+#include "support/files.h"
 #include <doctest/doctest.h>
 
 #include "raylab/image_io.h"
@@ -12,7 +13,6 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -27,12 +27,7 @@ const char* const kFigures[][2] = {
     {"lab5_antialiased", "Figure 6 "},
 };
 
-std::string read(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using raylab::test::readFile;
 
 void write(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
@@ -55,7 +50,7 @@ fs::path runKit(const char* name, const fs::path& dir, const std::vector<std::st
     std::vector<std::string> argv{program(name), "report", "--threads", "2", "--out", dir.string()};
     argv.insert(argv.end(), args.begin(), args.end());
     const int status = run(argv, dir);
-    REQUIRE_MESSAGE(status == 0, read(dir / "output.txt"));
+    REQUIRE_MESSAGE(status == 0, readFile(dir / "output.txt"));
     REQUIRE(fs::exists(dir / "report.md"));
     REQUIRE(fs::exists(dir / "report.html"));
     return dir;
@@ -106,7 +101,7 @@ TEST_SUITE("report") {
 
 TEST_CASE("the reference build's kit: every figure, its number, its pictures and maps, a section per lab") {
     const fs::path dir = makeKit("raylab-reference", "reference");
-    const std::string md = read(dir / "report.md"), html = read(dir / "report.html");
+    const std::string md = readFile(dir / "report.md"), html = readFile(dir / "report.html");
     for (const auto& [id, number] : kFigures) {
         CHECK_MESSAGE(html.find(id) != std::string::npos, id);
         CHECK_MESSAGE(md.find(std::string(number) + (number[std::strlen(number) - 1] == ' ' ? "(" : " (") + id + ")") !=
@@ -161,20 +156,20 @@ TEST_CASE("the grade block's total is `raylab grade`'s: the reference agent, and
     REQUIRE(run({program("raylab"), "grade", "--threads", "2", "--agent", program("raylab-agent-reference"), "--report",
                  (graded / "report").string()},
                 graded) == 0);
-    const std::string total = gradeTotal(read(graded / "output.txt"));
-    CHECK(read(reference / "report.md").find("**Total grade**: **" + total + "** (") != std::string::npos);
-    CHECK(gradeTotal(read(reference / "output.txt")) == total);
+    const std::string total = gradeTotal(readFile(graded / "output.txt"));
+    CHECK(readFile(reference / "report.md").find("**Total grade**: **" + total + "** (") != std::string::npos);
+    CHECK(gradeTotal(readFile(reference / "output.txt")) == total);
 
     const fs::path student = makeKit("raylab", "student");
     const fs::path stubs = kitFolder("grade-student");
     run({program("raylab"), "grade", "--threads", "2", "--report", (stubs / "report").string()}, stubs);
-    const std::string stubTotal = gradeTotal(read(stubs / "output.txt"));
-    CHECK(read(student / "report.md").find("**Total grade**: **" + stubTotal + "** (") != std::string::npos);
+    const std::string stubTotal = gradeTotal(readFile(stubs / "output.txt"));
+    CHECK(readFile(student / "report.md").find("**Total grade**: **" + stubTotal + "** (") != std::string::npos);
 }
 
 TEST_CASE("the student build's kit (stubs): each lab not done yet, the references still shown") {
     const fs::path dir = makeKit("raylab", "student");
-    const std::string md = read(dir / "report.md"), html = read(dir / "report.html");
+    const std::string md = readFile(dir / "report.md"), html = readFile(dir / "report.html");
     for (const auto& [id, number] : kFigures) {
         CHECK_MESSAGE(md.find(id) != std::string::npos, id);
         CHECK_MESSAGE(!fs::exists(dir / "figures" / (std::string(id) + ".png")), id);
@@ -193,7 +188,7 @@ TEST_CASE("the student build's kit (stubs): each lab not done yet, the reference
 
 TEST_CASE("a re-run keeps the student's text: in place, rendered in the HTML, escaped; what it cannot place is kept") {
     const fs::path dir = makeKit("raylab", "rerun");
-    std::string md = read(dir / "report.md");
+    std::string md = readFile(dir / "report.md");
     const std::string placeholder = "*Write here what you did, what the figures show and what went wrong.*\n";
     const auto writeIn = [&](int lab, const std::string& text) {
         const std::string marker = "<!-- raylab:student lab" + std::to_string(lab) + " -->\n";
@@ -213,14 +208,14 @@ TEST_CASE("a re-run keeps the student's text: in place, rendered in the HTML, es
     write(dir / "report.md", md);
 
     runKit("raylab", dir);
-    const std::string again = read(dir / "report.md"), html = read(dir / "report.html");
+    const std::string again = readFile(dir / "report.md"), html = readFile(dir / "report.html");
     CHECK(again.find("<!-- raylab:student lab2 -->\nLab 2: the camera *looks* down **-z**") != std::string::npos);
     CHECK(again.find("&amp; the sphere.") == std::string::npos);
     CHECK(again.find("the sphere.") > again.find("## Lab 3: ")); // back under lab 3
     CHECK(again.find("the sphere.") < again.find("## Lab 4: "));
     CHECK(again.find("## Kept from the previous version") != std::string::npos);
     CHECK(again.find("A conclusion written after every marker.") > again.find("<!-- raylab:student kept -->"));
-    CHECK(read(dir / "report.previous.md") == md);
+    CHECK(readFile(dir / "report.previous.md") == md);
     // The HTML shows the student's Markdown, as HTML, and their markup as text.
     CHECK(html.find("the camera <em>looks</em> down <strong>-z</strong>; see <code>generateRay</code>") != std::string::npos);
     CHECK(html.find("<li>one</li>") != std::string::npos);
@@ -230,19 +225,19 @@ TEST_CASE("a re-run keeps the student's text: in place, rendered in the HTML, es
 
 TEST_CASE("the title block comes from report.toml: created with placeholders, then the student's; errors name the line and key") {
     const fs::path dir = makeKit("raylab", "title");
-    CHECK(read(dir / "report.toml").find("name = \"Your name\"") != std::string::npos);
-    CHECK(read(dir / "output.txt").find("note: fill in") != std::string::npos);
+    CHECK(readFile(dir / "report.toml").find("name = \"Your name\"") != std::string::npos);
+    CHECK(readFile(dir / "output.txt").find("note: fill in") != std::string::npos);
     write(dir / "report.toml", "name = \"Ada Lovelace\"\ngroup = \"B2\"\ncourse = \"Rendering 101\"\ndate = \"2026-11-23\"\n");
     runKit("raylab", dir);
-    const std::string md = read(dir / "report.md");
+    const std::string md = readFile(dir / "report.md");
     CHECK(md.find("- **Name**: Ada Lovelace\n- **Group**: B2\n- **Course**: Rendering 101\n- **Date**: 2026\\-11\\-23\n") !=
           std::string::npos);
-    CHECK(read(dir / "report.html").find("Ada Lovelace") != std::string::npos);
-    CHECK(read(dir / "output.txt").find("note: fill in") == std::string::npos);
+    CHECK(readFile(dir / "report.html").find("Ada Lovelace") != std::string::npos);
+    CHECK(readFile(dir / "output.txt").find("note: fill in") == std::string::npos);
 
     write(dir / "report.toml", "name = \"Ada Lovelace\"\ngroup = 2\n");
     CHECK(run({program("raylab"), "report", "--out", dir.string()}, dir) != 0);
-    const std::string error = read(dir / "output.txt");
+    const std::string error = readFile(dir / "output.txt");
     CHECK_MESSAGE(error.find("report.toml:2: group: must be a string") != std::string::npos, error);
 }
 
@@ -254,20 +249,20 @@ TEST_CASE("--pdf: a PDF with chromium, a clear message without") {
     const int status = run({program("raylab"), "report", "--threads", "2", "--pdf", "--out", dir.string()}, dir);
     setenv("PATH", ourPath.c_str(), 1);
     CHECK(status == 1);
-    CHECK(read(dir / "output.txt").find("--pdf prints with chromium, which is not installed") != std::string::npos);
+    CHECK(readFile(dir / "output.txt").find("--pdf prints with chromium, which is not installed") != std::string::npos);
     CHECK(!fs::exists(dir / "report.pdf"));
     if (!fs::exists("/usr/bin/chromium") && !fs::exists("/usr/bin/chromium-browser")) {
         MESSAGE("skipped: chromium is not installed, so no PDF is printed (Debian: apt-get install chromium)");
         return;
     }
     runKit("raylab", dir, {"--pdf"});
-    CHECK(read(dir / "report.pdf").rfind("%PDF", 0) == 0);
+    CHECK(readFile(dir / "report.pdf").rfind("%PDF", 0) == 0);
     CHECK(fs::file_size(dir / "report.pdf") > 10000);
 }
 
 TEST_CASE("--lang fr: French headings, grade lines and typography") {
     const fs::path dir = makeKit("raylab-reference", "french", {"--lang", "fr"});
-    const std::string md = read(dir / "report.md");
+    const std::string md = readFile(dir / "report.md");
     CHECK(md.find("# Compte rendu de TP") != std::string::npos);
     CHECK(md.find("## TP 3\u00A0: Une sphère") != std::string::npos);
     CHECK(md.find("### Votre texte (TP 2)") != std::string::npos);
@@ -279,6 +274,10 @@ TEST_CASE("--lang fr: French headings, grade lines and typography") {
     CHECK(md.find("RÉUSSI  TP 1  test fillGradient\u00A0: les coins et le milieu") != std::string::npos);
     CHECK(md.find("TP 1\u00A0: 10 / 10 (") != std::string::npos);
     CHECK(md.find("PASS  lab") == std::string::npos);
+    // What the command prints is French too.
+    const std::string output = readFile(dir / "output.txt");
+    CHECK_MESSAGE(output.find("raylab report, version de référence (") != std::string::npos, output);
+    CHECK_MESSAGE(output.find(" build (") == std::string::npos, output);
 }
 
 }
