@@ -3,6 +3,7 @@
 // run_autograder on the reference, the stubs, a catalogued mistake, a crash and an empty hand-in,
 // each results.json checked against Gradescope's format and against `raylab grade` on the same code;
 // GitHub Classroom's workflow parsed, its item steps' commands run in the built tree.
+#include "support/files.h"
 #include "grader/autograder.h"
 #include "grader/report.h"
 #include "grading_support.h"
@@ -16,7 +17,6 @@
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <sys/wait.h>
 
 using namespace raylab::test;
@@ -27,12 +27,7 @@ const fs::path kRoot = RAYLAB_AUTOGRADER_TEST_ROOT; // autograder.zip, autograde
 fs::path autograder() { return kRoot / "autograder"; }
 fs::path tree() { return autograder() / "source" / "raylab"; }
 
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using raylab::test::readFile;
 
 // A shell command's exit status, its output in `log`.
 int run(const std::string& command, const fs::path& log) {
@@ -73,7 +68,7 @@ bool isVisibility(const nlohmann::json& v) {
 // no leaderboard.
 nlohmann::json validResults(const fs::path& file) {
     REQUIRE_MESSAGE(fs::exists(file), file << " was not written");
-    const nlohmann::json j = nlohmann::json::parse(slurp(file));
+    const nlohmann::json j = nlohmann::json::parse(readFile(file));
     REQUIRE(j.is_object());
     REQUIRE(j["score"].is_number());
     CHECK(j["output"].is_string());
@@ -112,7 +107,7 @@ nlohmann::json gradeOnGradescope(const fs::path& folder) {
     const fs::path log = kRoot / "run_autograder.log";
     CHECK_MESSAGE(run("cd \"" + autograder().string() + "\" && \"" + (autograder() / "run_autograder").string() + "\"",
                       log) == 0,
-                  slurp(log));
+                  readFile(log));
     return validResults(autograder() / "results" / "results.json");
 }
 
@@ -137,7 +132,7 @@ std::map<std::string, double> pointsByItem(const nlohmann::json& results) {
 std::map<std::string, double> pointsOfAgent(const std::string& agent) {
     const fs::path file = kRoot / (agent + ".results.json");
     writeGradescopeJson(gradeAgent(courseSetup(), agent), file);
-    return pointsByItem(nlohmann::json::parse(slurp(file)));
+    return pointsByItem(nlohmann::json::parse(readFile(file)));
 }
 
 YAML::Node workflowSteps() {
@@ -165,7 +160,7 @@ TEST_CASE("the Gradescope zip unpacks into source/ and its setup.sh builds the t
         const fs::path file = autograder() / "source" / script;
         REQUIRE(fs::exists(file));
         CHECK((fs::status(file).permissions() & fs::perms::owner_exec) != fs::perms::none);
-        CHECK(slurp(file).find("set -euo pipefail") != std::string::npos);
+        CHECK(readFile(file).find("set -euo pipefail") != std::string::npos);
     }
     CHECK_FALSE(fs::exists(tree() / "solutions"));
     CHECK_FALSE(fs::exists(tree() / "tests" / "mistakes"));
@@ -174,7 +169,7 @@ TEST_CASE("the Gradescope zip unpacks into source/ and its setup.sh builds the t
     // Gradescope copies run_autograder to /autograder and runs it from there.
     fs::copy_file(autograder() / "source" / "run_autograder", autograder() / "run_autograder");
     const fs::path log = kRoot / "setup.log";
-    REQUIRE_MESSAGE(run("bash \"" + (autograder() / "source" / "setup.sh").string() + "\"", log) == 0, slurp(log));
+    REQUIRE_MESSAGE(run("bash \"" + (autograder() / "source" / "setup.sh").string() + "\"", log) == 0, readFile(log));
     CHECK(fs::exists(tree() / "build" / "bin" / "raylab"));
     CHECK(fs::exists(tree() / "build" / "bin" / "raylab-agent"));
 }
@@ -225,10 +220,10 @@ TEST_CASE("run_autograder: a catalogued mistake in a wrapping folder loses its p
     // The tree's agent now holds this submission: GitHub Classroom's step commands, run there.
     const fs::path log = kRoot / "item.log";
     const std::string cd = "cd \"" + tree().string() + "\" && ";
-    CHECK_MESSAGE(run(cd + stepCommand("lab1_gradient"), log) == 0, slurp(log));
-    CHECK(slurp(log).find("PASS  lab1  figure lab1_gradient") != std::string::npos);
-    CHECK_MESSAGE(run(cd + stepCommand(check), log) == 1, slurp(log));
-    const std::string output = slurp(log);
+    CHECK_MESSAGE(run(cd + stepCommand("lab1_gradient"), log) == 0, readFile(log));
+    CHECK(readFile(log).find("PASS  lab1  figure lab1_gradient") != std::string::npos);
+    CHECK_MESSAGE(run(cd + stepCommand(check), log) == 1, readFile(log));
+    const std::string output = readFile(log);
     CHECK(output.find("FAIL  lab2  " + check) != std::string::npos);
     CHECK(output.find("Hint:") != std::string::npos);
     CHECK(output.find("generateRay") == std::string::npos); // that item alone
@@ -336,7 +331,7 @@ TEST_CASE("a submission's labs are found at its top, in labs/, or in one wrappin
     fs::create_symlink(sourceDir() / "framework/grader/data/references/mistakes.toml",
                        root / "top" / "lab2_primary_rays" / "stolen.toml");
     copySubmittedLabs(root / "top", catalog, root / "copied");
-    CHECK(slurp(root / "copied" / "lab2_primary_rays" / "perspective_camera.cpp") == "// mine\n");
+    CHECK(readFile(root / "copied" / "lab2_primary_rays" / "perspective_camera.cpp") == "// mine\n");
     CHECK_FALSE(fs::exists(root / "copied" / "lab2_primary_rays" / "stolen.toml"));
     CHECK_FALSE(fs::exists(root / "copied" / "lab1_first_image"));
 }

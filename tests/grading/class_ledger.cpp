@@ -1,6 +1,7 @@
 // raylab grade-class as a ledger: interrupted at random points it resumes to the CSV of a quiet run;
 // a second run on the same --out refuses (or waits); hostile folder names each get their own row.
 // The students are graded by a prebuilt agent (--agent), so no test here runs CMake.
+#include "support/files.h"
 #include "grading_support.h"
 #include "support/read_csv.h"
 
@@ -10,7 +11,6 @@
 #include <fstream>
 #include <map>
 #include <random>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <utility>
@@ -26,12 +26,7 @@ using namespace raylab::test;
 
 namespace {
 
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using raylab::test::readFile;
 
 ProgramProcess startRaylab(const std::vector<std::string>& args, const fs::path& output) {
     return startProgram(binDir() / "raylab", args, output);
@@ -47,12 +42,7 @@ std::vector<std::string> classArgs(const fs::path& classDir, const fs::path& out
     return args;
 }
 
-fs::path freshFolder(const std::string& name) {
-    const fs::path folder = fs::temp_directory_path() / name;
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    return folder;
-}
+using raylab::test::freshFolder;
 
 // A class of small submissions (the agent grades, so their content does not matter; they are not empty).
 fs::path makeClass(const fs::path& root, const std::vector<std::string>& names) {
@@ -67,7 +57,7 @@ fs::path makeClass(const fs::path& root, const std::vector<std::string>& names) 
 std::map<std::string, std::string> results(const fs::path& out) {
     std::map<std::string, std::string> found;
     for (const auto& entry : fs::directory_iterator(out / "students"))
-        if (fs::exists(entry.path() / "result.json")) found[entry.path().filename().string()] = slurp(entry.path() / "result.json");
+        if (fs::exists(entry.path() / "result.json")) found[entry.path().filename().string()] = readFile(entry.path() / "result.json");
     return found;
 }
 
@@ -85,7 +75,7 @@ TEST_CASE("grade-class interrupted 5 times at random points (SIGINT, SIGTERM) re
     ProgramProcess quiet = startRaylab(classArgs(classDir, root / "quiet"), root / "quiet.txt");
     REQUIRE_MESSAGE(quiet.finish() == 0, quiet.text());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::string expected = slurp(root / "quiet" / "grades.csv");
+    const std::string expected = readFile(root / "quiet" / "grades.csv");
     REQUIRE(readCsv(expected).size() == kSix.size() + 1);
     const auto expectedResults = results(root / "quiet");
 
@@ -113,13 +103,13 @@ TEST_CASE("grade-class interrupted 5 times at random points (SIGINT, SIGTERM) re
         if (output.find("interrupted: not graded") != std::string::npos) ++stoppedWhileGrading;
         // Every result written so far is the one an uninterrupted run writes: none is partial.
         for (const auto& [student, result] : results(root / "stopped")) CHECK(result == expectedResults.at(student));
-        const auto rows = readCsv(slurp(root / "stopped" / "grades.csv"));
+        const auto rows = readCsv(readFile(root / "stopped" / "grades.csv"));
         CHECK(rows.size() == results(root / "stopped").size() + 1);
     }
     MESSAGE(stoppedWhileGrading << " of 5 stops fell on a student being graded (seed " << seed << ")");
     ProgramProcess last = startRaylab(classArgs(classDir, root / "stopped"), root / "stopped.txt");
     REQUIRE_MESSAGE(last.finish() == 0, last.text());
-    CHECK(slurp(root / "stopped" / "grades.csv") == expected);
+    CHECK(readFile(root / "stopped" / "grades.csv") == expected);
 }
 
 TEST_CASE("a second grade-class on the same --out refuses, naming the lock and the first run's pid; --wait waits") {
@@ -128,9 +118,9 @@ TEST_CASE("a second grade-class on the same --out refuses, naming the lock and t
     ProgramProcess first = startRaylab(classArgs(classDir, root / "out"), root / "first.txt");
     // The lock holds the first run's pid once it has taken it.
     const fs::path lock = root / "out" / "grade-class.lock";
-    for (int k = 0; k < 500 && slurp(lock) != std::to_string(first.pid) + "\n"; ++k)
+    for (int k = 0; k < 500 && readFile(lock) != std::to_string(first.pid) + "\n"; ++k)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    REQUIRE(slurp(lock) == std::to_string(first.pid) + "\n");
+    REQUIRE(readFile(lock) == std::to_string(first.pid) + "\n");
 
     ProgramProcess second = startRaylab(classArgs(classDir, root / "out"), root / "second.txt");
     const int secondStatus = second.finish();
@@ -150,7 +140,7 @@ TEST_CASE("a second grade-class on the same --out refuses, naming the lock and t
                   waited);
     for (const std::string& name : kSix) CHECK_MESSAGE(waited.find(name) != std::string::npos, waited);
     CHECK(waited.find("already graded") != std::string::npos);
-    CHECK(readCsv(slurp(root / "out" / "grades.csv")).size() == kSix.size() + 1);
+    CHECK(readCsv(readFile(root / "out" / "grades.csv")).size() == kSix.size() + 1);
 
     // The lock of a run that died (its pid still in the file) is simply taken.
     std::ofstream(lock) << "999999999\n";
@@ -180,7 +170,7 @@ TEST_CASE("hostile folder names each get their own row with the real name and fu
     CHECK_MESSAGE(lines.find("\nskipped 'loop': a symbolic link") != std::string::npos, output);
     CHECK_MESSAGE(output.find("new\\nline") != std::string::npos, output); // one line in the terminal
 
-    const auto rows = readCsv(slurp(root / "out" / "grades.csv"));
+    const auto rows = readCsv(readFile(root / "out" / "grades.csv"));
     REQUIRE(!rows.empty());
     const std::vector<std::string>& header = rows[0];
     REQUIRE(header.size() >= 4);
@@ -250,7 +240,7 @@ TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap un
     const auto [gradedStatus, graded] = runWith(withoutBwrap, noSandbox);
     CHECK_MESSAGE(gradedStatus == 0, graded);
     CHECK_MESSAGE(count(graded, "grading WITHOUT bubblewrap (turned off by --no-sandbox)") == 1, graded);
-    const auto rows = readCsv(slurp(root / "out" / "grades.csv"));
+    const auto rows = readCsv(readFile(root / "out" / "grades.csv"));
     REQUIRE(rows.size() == 2);
     CHECK(rows[1][0] == "ann");
 

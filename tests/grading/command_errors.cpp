@@ -1,9 +1,9 @@
 // The commands as a user mistypes them and as a full disk answers them: a clear error that names
 // what is wrong, a non-zero exit status, never a hang, an abort or an old file destroyed.
+#include "support/files.h"
 #include "grading_support.h"
 
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 #if defined(__unix__) || defined(__APPLE__)
@@ -34,19 +34,8 @@ Finished run(const std::string& program, const std::vector<std::string>& args, l
     return done;
 }
 
-fs::path freshFolder(const std::string& name) {
-    const fs::path folder = fs::temp_directory_path() / name;
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    return folder;
-}
-
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using raylab::test::freshFolder;
+using raylab::test::readFile;
 
 bool has(const Finished& f, const std::string& text) { return f.output.find(text) != std::string::npos; }
 
@@ -125,14 +114,14 @@ TEST_CASE("a write cut short (a nearly full disk) fails with the file named and 
     const Finished f = run("raylab-reference", {"render", kGradientScene, "--out", png.string()}, 4096);
     CHECK(f.status == 1);
     CHECK_MESSAGE(has(f, "cannot write " + png.string() + ": File too large"), f.output);
-    CHECK(slurp(png) == "the old picture");
+    CHECK(readFile(png) == "the old picture");
     std::vector<std::string> left;
     for (const auto& entry : fs::directory_iterator(dir)) left.push_back(entry.path().filename().string());
     CHECK(left == std::vector<std::string>{"gradient.png"}); // no temporary file left behind
 
     const Finished whole = run("raylab-reference", {"render", kGradientScene, "--out", png.string()});
     CHECK_MESSAGE(whole.status == 0, whole.output);
-    CHECK(slurp(png).rfind("\x89PNG", 0) == 0);
+    CHECK(readFile(png).rfind("\x89PNG", 0) == 0);
 }
 
 TEST_CASE("report into an unwritable place: an error naming the file, a non-zero status") {

@@ -1,10 +1,10 @@
 // raylab grade-class: a row per student, resumable; a submission that does not build gets zero
 // for the labs that do not build, with the compiler's message.
+#include "support/files.h"
 #include "grading_support.h"
 #include "support/run_program.h"
 
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -12,12 +12,7 @@ using namespace raylab::test;
 
 namespace {
 
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using raylab::test::readFile;
 
 // Runs grade-class from the class's parent folder (where a command run by mistake would write).
 // Without bubblewrap where this system cannot run it (grade-class refuses otherwise).
@@ -73,8 +68,8 @@ TEST_CASE("grade-class resumes: students with a result are not graded again, the
             << R"({"student": ")" << name << R"(", "cells": [{"column": "lab1", "value": "1"}, {"column": "total", "value": "1"}]})";
     }
     CHECK(gradeClass(root / "class", root / "out", root / "build") == 0);
-    CHECK(slurp(root / "out" / "grades.csv") == "student,lab1,total\nalice,1,1\nbob,1,1\n");
-    CHECK(slurp(root / "class-output.txt").find("bob                  already graded") != std::string::npos);
+    CHECK(readFile(root / "out" / "grades.csv") == "student,lab1,total\nalice,1,1\nbob,1,1\n");
+    CHECK(readFile(root / "class-output.txt").find("bob                  already graded") != std::string::npos);
     CHECK_FALSE(fs::exists(root / "build")); // nothing was built
 }
 
@@ -92,10 +87,10 @@ void gradeCorrectClass(const std::string& test, const std::vector<std::string>& 
         fs::copy(sourceDir() / "solutions", root / "class" / name, fs::copy_options::recursive);
     const fs::path build = fs::path(RAYLAB_GRADING_BIN).parent_path() / "grading-class-build"; // kept: faster next time
     const int status = gradeClass(root / "class", root / "out", build);
-    const std::string output = slurp(root / "class-output.txt");
+    const std::string output = readFile(root / "class-output.txt");
     REQUIRE_MESSAGE(status == 0, output);
     for (const fs::path& folder : {root, root / "class", root / "out"}) CHECK_FALSE(fs::exists(folder / "PWNED"));
-    const auto rows = readCsv(slurp(root / "out" / "grades.csv"));
+    const auto rows = readCsv(readFile(root / "out" / "grades.csv"));
     for (const std::string& name : names) {
         CAPTURE(name);
         int found = 0;
@@ -123,7 +118,7 @@ TEST_CASE("grade-class builds and grades each student; a compile error costs onl
     const fs::path root = makeClass("raylab-class-full");
     const fs::path build = fs::path(RAYLAB_GRADING_BIN).parent_path() / "grading-class-build"; // kept: faster next time
     REQUIRE(gradeClass(root / "class", root / "out", build) == 0);
-    const std::string csv = slurp(root / "out" / "grades.csv");
+    const std::string csv = readFile(root / "out" / "grades.csv");
     CHECK_MESSAGE(csv.find("\nalice,10,16,24,12,13,75,75,\n") != std::string::npos, csv);
     // Lab 4 read the reference (raylab-build-guard): it does not build either, and the grade says why.
     CHECK_MESSAGE(csv.find("\nbob,10,16,0,0,13,39,75,") != std::string::npos, csv);

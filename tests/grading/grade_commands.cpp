@@ -1,4 +1,5 @@
 // The commands as a user runs them: raylab grade --images, raylab grade (reports), raylab distribute.
+#include "support/files.h"
 #include "grading_support.h"
 
 #include "raylab/image_io.h"
@@ -38,12 +39,7 @@ ProgramRun runRaylab(std::vector<std::string> args, const fs::path& cwd = fs::te
     return runProgram(args, cwd / "raylab-output.txt", cwd);
 }
 
-fs::path freshFolder(const std::string& name) {
-    const fs::path folder = fs::temp_directory_path() / name;
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    return folder;
-}
+using raylab::test::freshFolder;
 
 bool hasLine(const std::string& output, const std::string& start, const std::string& contains) {
     std::istringstream lines(output);

@@ -1,11 +1,11 @@
 // The reports say the same as the grade: Gradescope's JSON, JUnit XML and the HTML page.
+#include "support/files.h"
 #include "grader/report.h"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
 #include <fstream>
-#include <sstream>
 
 using namespace raylab;
 using namespace raylab::grader;
@@ -13,12 +13,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using raylab::test::readFile;
 
 GradeResult sampleResult() {
     GradeResult r;
@@ -50,7 +45,7 @@ TEST_CASE("results.json is Gradescope's format, item by item") {
     fs::remove_all(folder);
     const ReferenceSet references;
     writeReports(sampleResult(), references, folder);
-    const nlohmann::json j = nlohmann::json::parse(slurp(folder / "results.json"));
+    const nlohmann::json j = nlohmann::json::parse(readFile(folder / "results.json"));
     CHECK(j["score"] == 2.);
     CHECK(j["extra_data"]["max_score"] == 9.);
     CHECK(j["tests"][0]["visibility"] == "visible");
@@ -68,7 +63,7 @@ TEST_CASE("junit.xml has a test case per item and escapes the text") {
     const fs::path folder = fs::temp_directory_path() / "raylab-report-test-junit";
     fs::remove_all(folder);
     writeReports(sampleResult(), ReferenceSet{}, folder);
-    const std::string xml = slurp(folder / "junit.xml");
+    const std::string xml = readFile(folder / "junit.xml");
     CHECK(xml.find("<testsuite name=\"lab2\" tests=\"3\" failures=\"2\">") != std::string::npos);
     CHECK(xml.find("Hint: v &amp; u") != std::string::npos);
     CHECK(xml.find("sample &lt;grade&gt;") != std::string::npos);
@@ -78,7 +73,7 @@ TEST_CASE("index.html shows the score, the verdicts, the hints and the heat map"
     const fs::path folder = fs::temp_directory_path() / "raylab-report-test-html";
     fs::remove_all(folder);
     writeReports(sampleResult(), ReferenceSet{}, folder);
-    const std::string html = slurp(folder / "index.html");
+    const std::string html = readFile(folder / "index.html");
     CHECK(html.find("2 / 9") != std::string::npos);
     CHECK(html.find("your image matches &apos;v flipped&apos;") != std::string::npos);
     CHECK(html.find("images/lab2_directions.diff.png") != std::string::npos);

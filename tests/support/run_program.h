@@ -3,10 +3,9 @@
 // so a path with spaces or quotes is one argument).
 
 #include "grader/process.h"
+#include "support/files.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -25,10 +24,7 @@ inline ProgramRun runProgram(const std::vector<std::string>& argv, const std::fi
     const grader::ProcessResult result = grader::runProcess(argv, {cwd, outputFile});
     ProgramRun run;
     if (result.started) run.status = result.signal ? 128 + result.signal : result.exitCode;
-    std::ifstream in(outputFile, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    run.output = result.started ? text.str() : result.error;
+    run.output = result.started ? readFile(outputFile) : result.error;
     return run;
 }
 

@@ -1,13 +1,12 @@
 // Files written whole or not at all (raylab/atomic_file.h): a failed write names the file and the
 // reason, leaves the old file as it was and no temporary file behind.
+#include "support/files.h"
 #include "raylab/atomic_file.h"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <fstream>
-#include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 #if defined(__unix__) || defined(__APPLE__)
@@ -21,19 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path freshFolder(const std::string& name) {
-    std::random_device random;
-    const fs::path folder = fs::temp_directory_path() / (name + "-" + std::to_string(random()));
-    fs::create_directories(folder);
-    return folder;
-}
-
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using raylab::test::freshFolder;
+using raylab::test::readFile;
 
 std::vector<std::string> entries(const fs::path& folder) {
     std::vector<std::string> names;
@@ -60,10 +48,10 @@ TEST_SUITE("atomic files") {
 TEST_CASE("a file is written whole, replaces the old one, and leaves nothing else in its folder") {
     const fs::path folder = freshFolder("raylab-atomic");
     raylab::writeFileAtomically(folder / "sub" / "a.txt", "first");
-    CHECK(slurp(folder / "sub" / "a.txt") == "first");
+    CHECK(readFile(folder / "sub" / "a.txt") == "first");
     const std::string big(3 << 20, 'x'); // more than one write() may take
     raylab::writeFileAtomically(folder / "sub" / "a.txt", big);
-    CHECK(slurp(folder / "sub" / "a.txt") == big);
+    CHECK(readFile(folder / "sub" / "a.txt") == big);
     CHECK(entries(folder / "sub") == std::vector<std::string>{"a.txt"});
     fs::remove_all(folder);
 }
@@ -73,7 +61,7 @@ TEST_CASE("a folder in the way, or a file where a folder should be, is an error 
     std::ofstream(folder / "a_regular_file") << "old";
     const std::string below = writeError([&] { raylab::writeFileAtomically(folder / "a_regular_file" / "x.png", "new"); });
     CHECK_MESSAGE(below.find((folder / "a_regular_file" / "x.png").string()) != std::string::npos, below);
-    CHECK(slurp(folder / "a_regular_file") == "old");
+    CHECK(readFile(folder / "a_regular_file") == "old");
     fs::create_directories(folder / "dir");
     const std::string onFolder = writeError([&] { raylab::writeFileAtomically(folder / "dir", "new"); });
     CHECK_MESSAGE(onFolder.find("is a folder") != std::string::npos, onFolder);
@@ -86,7 +74,7 @@ TEST_CASE("a symbolic link is followed: the file it names is replaced, the link 
     fs::create_symlink("real.txt", folder / "link.txt");
     raylab::writeFileAtomically(folder / "link.txt", "new");
     CHECK(fs::is_symlink(folder / "link.txt"));
-    CHECK(slurp(folder / "real.txt") == "new");
+    CHECK(readFile(folder / "real.txt") == "new");
     fs::remove_all(folder);
 }
 
@@ -115,7 +103,7 @@ TEST_CASE("a pipe nobody reads is refused at once instead of blocking, as a copy
                       doctest::Contains("lab4_d.png: not a regular file"));
     raylab::writeFileAtomically(folder / "a.png", "picture");
     raylab::copyFileAtomically(folder / "a.png", folder / "report" / "a.png");
-    CHECK(slurp(folder / "report" / "a.png") == "picture");
+    CHECK(readFile(folder / "report" / "a.png") == "picture");
     fs::remove_all(folder);
 }
 
@@ -138,7 +126,7 @@ TEST_CASE("a write cut short (the file size limit) leaves the old file whole and
     std::signal(SIGXFSZ, oldHandler);
     CHECK_MESSAGE(message.find((folder / "report.md").string()) != std::string::npos, message);
     CHECK_MESSAGE(message.find("File too large") != std::string::npos, message);
-    CHECK(slurp(folder / "report.md") == "the old report");
+    CHECK(readFile(folder / "report.md") == "the old report");
     CHECK(entries(folder) == std::vector<std::string>{"report.md"});
     fs::remove_all(folder);
 }
@@ -154,7 +142,7 @@ TEST_CASE("a read-only folder: an error naming the file, the old file intact") {
     const std::string message = writeError([&] { raylab::writeFileAtomically(folder / "report.md", "new"); });
     fs::permissions(folder, fs::perms::owner_all);
     CHECK_MESSAGE(message.find("Permission denied") != std::string::npos, message);
-    CHECK(slurp(folder / "report.md") == "the old report");
+    CHECK(readFile(folder / "report.md") == "the old report");
     fs::remove_all(folder);
 }
 
