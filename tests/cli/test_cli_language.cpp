@@ -40,7 +40,7 @@ const std::vector<std::string> kCli11English{"Usage:", "Print this help message"
                                              "not expected", "is required", "not in range", "Could not convert",
                                              "Subcommands:", "Positionals:", "At Most", "required but received",
                                              // its value types (TEXT:DIR, INT in [1 - 100]), the words alone
-                                             " TEXT", "INT:", "INT ", ":DIR", "DIR/", "FILE"};
+                                             "TEXT:", "TEXT ", "INT:", "INT ", ":DIR", "DIR/", "FILE"};
 
 void checkNoCli11English(const std::string& output) {
     for (const std::string& english : kCli11English) CHECK_MESSAGE(!has(output, english), english << " in\n" << output);
