@@ -114,8 +114,10 @@ int runFigures(const FiguresOptions& o) {
 int runRender(const std::filesystem::path& scene, std::filesystem::path out, int threads) {
     const SceneDescription d = loadSceneFile(scene);
     if (out.empty()) out = std::filesystem::path("out") / (d.id + ".png");
-    std::printf("%s: %d x %d, %s, %d samples per pixel (%s sampler)\n", scene.string().c_str(), d.width, d.height,
-                std::string(pictureName(d.picture)).c_str(), d.samples, std::string(samplerName(d.sampler)).c_str());
+    std::printf("%s\n", tr("figures.render_header", {{"scene", scene.string()}, {"width", std::to_string(d.width)},
+                                                   {"height", std::to_string(d.height)}, {"picture", std::string(pictureName(d.picture))},
+                                                   {"samples", std::to_string(d.samples)}, {"sampler", std::string(samplerName(d.sampler))}})
+                            .c_str());
     const FigureResult r = renderScene(d, RenderOptions{threads, stderrIsInteractive()});
     return report(d, r, out) && r.status == FigureResult::Status::Rendered ? 0 : 1;
 }

@@ -99,7 +99,7 @@ void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, 
         << tr("report.html.verdict") << "</th></tr>\n";
     for (const CheckOutcome& c : result.checks)
         out << "<tr><td>" << tr("report.lab", {{"lab", std::to_string(c.lab)}}) << "</td><td>"
-            << escapeMarkup(checkTitle(c.name)) << "</td><td>" << number(c.points) << " / " << number(c.maxPoints)
+            << escapeMarkup(titleInLanguage(c.name)) << "</td><td>" << number(c.points) << " / " << number(c.maxPoints)
             << "</td><td><b class=\"" << (c.passed ? "pass" : "fail") << "\">" << verdict(c.passed) << "</b><pre>"
             << escapeMarkup(c.message) << "</pre></td></tr>\n";
     out << "</table>\n</body></html>\n";
@@ -182,7 +182,7 @@ std::string terminalSummary(const GradeResult& result) {
             if (c.lab == lab) {
                 any = true;
                 out << "  " << verdict(c.passed) << "  " << tr("report.lab_short", {{"lab", std::to_string(lab)}}) << "  "
-                    << checkTitle(c.name) << "\n";
+                    << titleInLanguage(c.name) << "\n";
                 if (!c.passed) {
                     std::istringstream lines(c.message);
                     for (std::string line; std::getline(lines, line);) out << "        " << line << "\n";

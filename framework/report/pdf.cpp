@@ -39,7 +39,7 @@ std::optional<fs::path> findChromium() {
     return std::nullopt;
 }
 
-void printToPdf(const fs::path& chromium, const fs::path& html, const fs::path& pdf) {
+void printToPdf(const fs::path& chromium, const fs::path& html, const fs::path& pdf, const Words& words) {
     std::random_device random;
     const fs::path profile = fs::temp_directory_path() / ("raylab-chromium-" + std::to_string(random()));
     const fs::path partial = pdf.string() + ".partial";
@@ -56,8 +56,8 @@ void printToPdf(const fs::path& chromium, const fs::path& html, const fs::path& 
     const int status = printed.signal != 0 ? 128 + printed.signal : printed.exitCode;
     if (status != 0 || !isPdf(partial)) {
         fs::remove(partial, ignored);
-        throw std::runtime_error(chromium.string() + " did not print " + html.string() + " (exit status " +
-                                 std::to_string(status) + ")");
+        throw std::runtime_error(words.text("pdf_failed", {{"program", chromium.string()}, {"file", html.string()},
+                                                           {"status", std::to_string(status)}}));
     }
     fs::rename(partial, pdf); // whole or nothing
 }

@@ -1,6 +1,8 @@
 #pragma once
 // raylab report --pdf: the HTML printed by a headless chromium, when one is installed.
 
+#include "words.h"
+
 #include <filesystem>
 #include <optional>
 
@@ -10,6 +12,7 @@ namespace raylab::report {
 std::optional<std::filesystem::path> findChromium();
 
 // Prints `html` to `pdf`; throws std::runtime_error when chromium fails or writes no PDF.
-void printToPdf(const std::filesystem::path& chromium, const std::filesystem::path& html, const std::filesystem::path& pdf);
+void printToPdf(const std::filesystem::path& chromium, const std::filesystem::path& html, const std::filesystem::path& pdf,
+                const Words& words);
 
 } // namespace raylab::report

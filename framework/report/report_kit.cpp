@@ -68,14 +68,14 @@ std::vector<KitFigure> renderFigures(const ReportRequest& request, const LabCata
 }
 
 // The code graded as `raylab grade` grades it: this build's agents (the reference's for raylab-reference).
-GradeResult gradeCodeOfThisBuild(const ReportRequest& request, const GradeSetup& setup) {
+GradeResult gradeCodeOfThisBuild(const ReportRequest& request, const GradeSetup& setup, const Words& words) {
     bool isolated = false;
     std::vector<AgentPlan> agents;
     if (request.referenceBuild) agents.push_back({request.programs / "raylab-agent-reference", 0});
     else agents = findAgents(request.programs, setup.labs.numbers(), isolated);
-    if (agents.empty()) throw std::runtime_error("no grading agent in " + request.programs.string() + "; build first: cmake --build build");
+    if (agents.empty()) throw std::runtime_error(tr("grade.no_agent", {{"folder", request.programs.string()}}));
     GradeResult result = gradeCode(setup, agents, isolated);
-    result.title = "raylab report: the grade of your code";
+    result.title = words.text("grade_title");
     return result;
 }
 
@@ -151,16 +151,14 @@ void writePages(const KitContent& content, const fs::path& out) {
     writeFileAtomically(out / "report.html", reportHtml(document, content.words));
 }
 
-int printPdf(const fs::path& out) {
+int printPdf(const fs::path& out, const Words& words) {
     const std::optional<fs::path> chromium = findChromium();
     if (!chromium) {
-        std::printf("report.pdf: not made: --pdf prints with chromium, which is not installed (Debian/Ubuntu: "
-                    "sudo apt-get install chromium; macOS: brew install --cask chromium); or open report.html in a "
-                    "browser and print it to PDF\n");
+        std::printf("%s\n", words.text("no_chromium").c_str());
         return 1;
     }
-    printToPdf(*chromium, out / "report.html", out / "report.pdf");
-    std::printf("report: %s\n", (out / "report.pdf").string().c_str());
+    printToPdf(*chromium, out / "report.html", out / "report.pdf", words);
+    std::printf("%s\n", words.text("pdf_written", {{"file", (out / "report.pdf").string()}}).c_str());
     return 0;
 }
 
@@ -180,7 +178,7 @@ int writeReportKit(const ReportRequest& request) {
     setup.threads = request.threads;
     std::map<std::string, Image8> images;
     std::vector<KitFigure> figures = renderFigures(request, setup.labs, images, words);
-    const GradeResult result = gradeCodeOfThisBuild(request, setup);
+    const GradeResult result = gradeCodeOfThisBuild(request, setup, words);
     writeReports(result, setup.references, out / "grade");
     fs::remove_all(scratch);
     compareFigures(figures, images, result, setup.references, out);
@@ -189,9 +187,11 @@ int writeReportKit(const ReportRequest& request) {
 
     std::printf("%s", terminalSummary(result).c_str());
     if (title.placeholders) std::printf("%s\n", words.text("fill_title_block", {{"file", (out / "report.toml").string()}}).c_str());
-    std::printf("report: %s and %s (the grader's report: %s)\n", (out / "report.md").string().c_str(),
-                (out / "report.html").string().c_str(), (out / "grade" / "index.html").string().c_str());
-    return request.pdf ? printPdf(out) : 0;
+    std::printf("%s\n", words.text("written", {{"markdown", (out / "report.md").string()},
+                                              {"html", (out / "report.html").string()},
+                                              {"grade", (out / "grade" / "index.html").string()}})
+                            .c_str());
+    return request.pdf ? printPdf(out, words) : 0;
 }
 
 } // namespace raylab::report

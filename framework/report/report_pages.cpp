@@ -101,7 +101,7 @@ std::string verdictAndLab(bool passed, int lab) {
 }
 
 std::string checkLine(const CheckOutcome& k, const Words& w) {
-    std::string line = verdictAndLab(k.passed, k.lab) + tr("report.check_line", {{"name", grader::checkTitle(k.name)}}) + " (" +
+    std::string line = verdictAndLab(k.passed, k.lab) + tr("report.check_line", {{"name", titleInLanguage(k.name)}}) + " (" +
                        number(k.points, -1, w) + " / " + number(k.maxPoints, -1, w) + ")\n";
     if (!k.passed && !k.message.empty()) line += "        " + k.message + "\n";
     return line;

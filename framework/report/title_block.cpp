@@ -59,11 +59,11 @@ TitleBlock readTitleBlock(const std::filesystem::path& file, const Words& words)
     for (const auto& [key, node] : table) {
         const bool known = std::find(std::begin(kKeys), std::end(kKeys), key.str()) != std::end(kKeys);
         if (!known)
-            throw std::runtime_error(where(file, node.source()) + ": " + std::string(key.str()) +
-                                     ": unknown key (the keys are name, group, course and date)");
+            throw std::runtime_error(where(file, node.source()) + ": " +
+                                     words.text("title_unknown_key", {{"key", std::string(key.str())}}));
         if (!node.is_string())
-            throw std::runtime_error(where(file, node.source()) + ": " + std::string(key.str()) +
-                                     ": must be a string in quotes");
+            throw std::runtime_error(where(file, node.source()) + ": " +
+                                     words.text("title_not_string", {{"key", std::string(key.str())}}));
     }
     TitleBlock block;
     std::string* fields[] = {&block.name, &block.group, &block.course, &block.date};

@@ -68,6 +68,12 @@ const std::map<std::string, std::string>& messageCatalogue(Language language) {
     return language == Language::Fr ? fr : en;
 }
 
+std::string titleInLanguage(const std::string& name) {
+    const auto& catalogue = messageCatalogue(language());
+    const auto found = catalogue.find("check_title." + name);
+    return found != catalogue.end() ? found->second : name;
+}
+
 std::string tr(Language language, std::string_view id, MessageArgs args) {
     const auto& catalogue = messageCatalogue(language);
     const auto found = catalogue.find(std::string(id));

@@ -13,7 +13,7 @@ std::string labNumber(const std::string& lab) { return lab.substr(lab.find_last_
 
 NotDoneYet::NotDoneYet(std::string lab, std::string function, std::string file, int line)
     : std::logic_error(tr("todo.message", {{"lab", labNumber(lab)},
-                                          {"function", function},
+                                          {"function", titleInLanguage(function)},
                                           {"where", file + ":" + std::to_string(line)}})),
       m_lab(std::move(lab)), m_function(std::move(function)), m_file(std::move(file)), m_line(line) {}
 

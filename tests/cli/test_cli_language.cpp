@@ -118,6 +118,15 @@ TEST_CASE("argument errors in French keep the option's name and the value") {
     }
 }
 
+TEST_CASE("raylab render says what it renders in French") {
+    const auto out = std::filesystem::temp_directory_path() / ("raylab-cli-render-" + std::to_string(getpid()) + ".png");
+    // The student build's lab 1 is a stub: the render fails, after its first line.
+    const std::string output = run({"render", std::string(RAYLAB_SCENES_DIR) + "/lab1_gradient.toml", "--out", out.string(), "--lang", "fr"}, true);
+    CHECK_MESSAGE(has(output, "lab1_gradient.toml\u00A0: 600 x 400, "), output);
+    CHECK_MESSAGE(has(output, " échantillons par pixel (échantillonneur "), output);
+    CHECK_MESSAGE(!has(output, "samples per pixel"), output);
+}
+
 TEST_CASE("in English, the same errors are English") {
     const std::string output = run({"grade", "--bogus", "--lang", "en"}, true);
     CHECK_MESSAGE(has(output, "raylab: error: not expected here: --bogus"), output);

@@ -239,6 +239,9 @@ TEST_CASE("the title block comes from report.toml: created with placeholders, th
     CHECK(run({program("raylab"), "report", "--out", dir.string()}, dir) != 0);
     const std::string error = readFile(dir / "output.txt");
     CHECK_MESSAGE(error.find("report.toml:2: group: must be a string") != std::string::npos, error);
+    CHECK(run({program("raylab"), "report", "--lang", "fr", "--out", dir.string()}, dir) != 0);
+    const std::string french = readFile(dir / "output.txt");
+    CHECK_MESSAGE(french.find("report.toml:2: group\u00A0: doit être une chaîne entre guillemets") != std::string::npos, french);
 }
 
 TEST_CASE("--pdf: a PDF with chromium, a clear message without") {
@@ -278,6 +281,8 @@ TEST_CASE("--lang fr: French headings, grade lines and typography") {
     const std::string output = readFile(dir / "output.txt");
     CHECK_MESSAGE(output.find("raylab report, version de référence (") != std::string::npos, output);
     CHECK_MESSAGE(output.find(" build (") == std::string::npos, output);
+    CHECK_MESSAGE(output.find("compte rendu\u00A0: " + (dir / "report.md").string() + " et ") != std::string::npos, output);
+    CHECK_MESSAGE(output.find("report: ") == std::string::npos, output);
 }
 
 }

@@ -2,11 +2,14 @@
 // both languages, French typography, numbers written each language's way, the language chosen from
 // the environment.
 #include "grader/checks/checks.h"
+#include "grader/lab_catalog.h"
 #include "raylab/messages.h"
+#include "raylab/todo.h"
 
 #include <doctest/doctest.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
@@ -78,8 +81,29 @@ TEST_SUITE("messages") {
         for (const grader::FunctionCheck& check : grader::functionChecks(1)) {
             CHECK(messageCatalogue(Language::Fr).count(std::string(kCheckTitles) + check.name) == 1);
             const LanguageScope english(Language::En);
-            CHECK(grader::checkTitle(check.name) == check.name);
+            CHECK(titleInLanguage(check.name) == check.name);
         }
+    }
+
+    TEST_CASE("a lab function named in words has a French title, and not-done-yet says it in French") {
+        const std::filesystem::path scenes = RAYLAB_SCENES_DIR;
+        const grader::LabCatalog labs = grader::loadLabCatalog(scenes.parent_path().parent_path() / "labs", scenes);
+        int named = 0;
+        for (const grader::LabDescription& lab : labs.labs)
+            for (const grader::LabFunction& function : lab.functions) {
+                if (function.name.find(' ') == std::string::npos) continue; // a C++ name, the same in French
+                ++named;
+                CHECK_MESSAGE(messageCatalogue(Language::Fr).count(std::string(kCheckTitles) + function.name) == 1,
+                              function.name);
+            }
+        CHECK(named >= 1); // lab 4's lookAt constructor
+        const LanguageScope french(Language::Fr);
+        const std::string said =
+            NotDoneYet("lab 4", "the lookAt constructor PerspectiveCamera(width, height, position, target, up, fovy)",
+                       "look_at.cpp", 18)
+                .what();
+        CHECK_MESSAGE(said.find("écrivez le constructeur lookAt PerspectiveCamera(") != std::string::npos, said);
+        CHECK_MESSAGE(said.find("the lookAt") == std::string::npos, said);
     }
 
     TEST_CASE("French typography: a no-break space before : ; ? ! and %, and « » with no-break spaces") {

@@ -60,13 +60,6 @@ void appendInputs(std::vector<double>& inputs, const glm::dvec3& v) {
     inputs.insert(inputs.end(), {v.x, v.y, v.z});
 }
 
-std::string checkTitle(const std::string& name) {
-    if (language() == Language::En) return name;
-    const auto& catalogue = messageCatalogue(language());
-    const auto found = catalogue.find("check_title." + name);
-    return found != catalogue.end() ? found->second : name;
-}
-
 std::vector<FunctionCheck> functionChecks(std::uint64_t seed) {
     CaseRandom random(seed);
     std::vector<FunctionCheck> checks;

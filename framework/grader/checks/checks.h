@@ -68,10 +68,6 @@ void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
 void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
 void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
 
-// A check's name as the reader sees it: `name` itself in English, its French title
-// (framework/messages/fr.toml, [check_title]) in French.
-std::string checkTitle(const std::string& name);
-
 // Every lab's checks in order, their drawn cases from `seed`.
 std::vector<FunctionCheck> functionChecks(std::uint64_t seed);
 

@@ -30,6 +30,10 @@ using MessageArgs = std::vector<std::pair<std::string_view, std::string>>;
 std::string tr(std::string_view id, MessageArgs args = {});
 std::string tr(Language language, std::string_view id, MessageArgs args = {});
 
+// A check's or a lab function's name (as lab.toml writes it) as the reader sees it: the name itself
+// in English, its title in [check_title] of the language's catalogue otherwise, when it has one.
+std::string titleInLanguage(const std::string& name);
+
 // A language's whole catalogue: id -> text (for the tests).
 const std::map<std::string, std::string>& messageCatalogue(Language language);
 
