@@ -1,5 +1,6 @@
 #include "antialiasing_study.h"
 
+#include "culled_render.h"
 #include "svg_plot.h"
 
 #include "raylab/atomic_file.h"
@@ -222,10 +223,14 @@ int objectsMissed(const Texture& t, const Color& background, const std::vector<s
 // Adaptive sampling on objects smaller than a pixel, against a stratified render with many samples.
 std::vector<FailureRow> measureFailure(const AntialiasingOptions& o) {
     const SceneDescription d = loadSceneFile(o.thinObjects);
-    const Rendered reference = render(d, Job{SamplerKind::Stratified, o.quick ? 1024 : 4096, {}}, 1, o.threads);
+    SceneDescription stratified = d;
+    stratified.sampler = SamplerKind::Stratified;
+    stratified.samples = o.quick ? 1024 : 4096;
+    // 24 spheres, most pixels near none of them: each tile asks only the spheres it can see.
+    const Texture reference = renderCulled(stratified, o.threads);
     const Color bg = d.scene.background;
     const std::vector<std::pair<int, int>> centres = projectedCentres(d);
-    const double referenceInk = totalInk(reference.image, bg);
+    const double referenceInk = totalInk(reference, bg);
 
     std::vector<FailureRow> rows;
     for (int base : {16, 4})

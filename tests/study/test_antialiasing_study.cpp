@@ -1,5 +1,8 @@
 // `raylab study antialiasing --quick`'s code path: the files it writes and what its numbers must show.
 #include "antialiasing_study.h"
+#include "culled_render.h"
+
+#include "raylab/figure.h"
 
 #include <doctest/doctest.h>
 
@@ -137,6 +140,38 @@ TEST_CASE("adaptive sampling reaches stratified 256's error with fewer samples; 
     CHECK(f[0].inkFound > f[1].inkFound);
     CHECK(f[2].objectsMissed > f[0].objectsMissed + 3);
     CHECK(f[3].inkFound < 0.75);
+}
+
+// The study's thin-objects reference is rendered tile by tile, each tile asking only the spheres
+// its rays can meet: the image must be the renderer's, bit for bit, spheres across tile borders included.
+TEST_CASE("a culled render draws the renderer's image, bit for bit") {
+    SceneDescription d = loadSceneFile(std::filesystem::path(RAYLAB_SOURCE_DIR) / "scenes/study/adaptive_thin_objects.toml");
+    d.samples = 16;
+    {
+        // Spheres a few pixels across, centred on corners and edges of the 16-pixel tiles.
+        const SceneRender probe(d);
+        const float w = float(d.width), h = float(d.height);
+        for (const auto& [x, y] : std::vector<std::pair<float, float>>{{16.f, 16.f}, {32.f, 40.f}, {48.f, 16.f}, {100.f, 64.f}}) {
+            const Ray ray = probe.camera().generateRay(x / w, y / h);
+            d.scene.spheres.emplace_back(ray.origin + 3.f * ray.direction, 0.1f, Color(1.f, 0.2f, 0.2f));
+        }
+    }
+    for (SamplerKind kind : {SamplerKind::Stratified, SamplerKind::Random}) {
+        d.sampler = kind;
+        const Texture culled = renderCulled(d, 2);
+        const FigureResult whole = renderScene(d);
+        REQUIRE(whole.status == FigureResult::Status::Rendered);
+        int differing = 0, inked = 0;
+        for (int j = 0; j < d.height; ++j)
+            for (int i = 0; i < d.width; ++i) {
+                differing += culled.getPixel(i, j) != whole.image.getPixel(i, j);
+                inked += whole.image.getPixel(i, j) != d.scene.background;
+            }
+        CHECK(differing == 0);
+        CHECK(inked > 40); // the spheres are there, to be culled wrongly
+    }
+    d.sampler = SamplerKind::Adaptive;
+    CHECK_THROWS_AS(renderCulled(d, 2), std::invalid_argument);
 }
 
 }
