@@ -1,6 +1,8 @@
 #include "raylab/sampler.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 
 namespace raylab {
@@ -50,16 +52,20 @@ std::uint32_t sobol(std::uint32_t index, int dimension) {
     return x;
 }
 
-std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed) {
-    // Owen scrambling flips each bit by a hash of the bits above it. Reversed, "the bits above"
-    // become the lower bits, which is what a multiply-xorshift hash mixes upwards.
-    x = reverseBits(x);
-    x += seed;
+// owenScramble of the fraction whose bits, reversed, are `reversed`.
+std::uint32_t owenScrambleReversed(std::uint32_t reversed, std::uint32_t seed) {
+    std::uint32_t x = reversed + seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
     return reverseBits(x);
+}
+
+std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed) {
+    // Owen scrambling flips each bit by a hash of the bits above it. Reversed, "the bits above"
+    // become the lower bits, which is what a multiply-xorshift hash mixes upwards.
+    return owenScrambleReversed(reverseBits(x), seed);
 }
 
 glm::dvec2 r2(std::uint32_t index) {
@@ -73,6 +79,23 @@ glm::dvec2 r2(std::uint32_t index) {
 } // namespace lowdiscrepancy
 
 namespace {
+
+// Sobol' dimension 1 from one index to the next: k - 1 -> k clears bits 0 ... c - 1 of the index
+// and sets bit c (c = the trailing zeros of k), so the point changes by v_0 ^ ... ^ v_c; here
+// that change with its bits reversed, as owenScrambleReversed takes it.
+constexpr std::array<std::uint32_t, 32> sobol1ReversedSteps() {
+    std::array<std::uint32_t, 32> steps{};
+    std::uint32_t v = 0x80000000u, sum = 0;
+    for (int c = 0; c < 32; ++c, v ^= v >> 1) {
+        sum ^= v;
+        std::uint32_t reversed = 0;
+        for (int bit = 0; bit < 32; ++bit)
+            if (sum & (1u << bit)) reversed |= 1u << (31 - bit);
+        steps[std::size_t(c)] = reversed;
+    }
+    return steps;
+}
+constexpr std::array<std::uint32_t, 32> kSobol1ReversedSteps = sobol1ReversedSteps();
 
 // A grid of about n cells, as square as n allows: the largest divisor of n not above sqrt(n) rows.
 void gridFor(int n, int& columns, int& rows) {
@@ -132,9 +155,12 @@ glm::vec2 PixelSampler::next2DOther() {
         return {std::min(x, kBelowOne), std::min(y, kBelowOne)};
     }
     case SamplerKind::Sobol: {
+        // The points of lowdiscrepancy::sobol and owenScramble, one index after the other: the
+        // first dimension reversed is the index itself, the second changes by a step of the table.
         const std::uint32_t k = m_index++;
-        return {toUnitFloat(lowdiscrepancy::owenScramble(lowdiscrepancy::sobol(k, 0), m_scramble[0])),
-                toUnitFloat(lowdiscrepancy::owenScramble(lowdiscrepancy::sobol(k, 1), m_scramble[1]))};
+        if (k != 0) m_sobol1Reversed ^= kSobol1ReversedSteps[std::size_t(std::countr_zero(k))];
+        return {toUnitFloat(lowdiscrepancy::owenScrambleReversed(k, m_scramble[0])),
+                toUnitFloat(lowdiscrepancy::owenScrambleReversed(m_sobol1Reversed, m_scramble[1]))};
     }
     case SamplerKind::R2: {
         const glm::dvec2 p = lowdiscrepancy::r2(m_index++);

@@ -141,6 +141,23 @@ TEST_CASE("scrambled Sobol' points are a (0, m, 2)-net: one point in every eleme
         }
 }
 
+TEST_CASE("the sobol sampler serves owenScramble(sobol(k, d), seed_d) for k = 0, 1, 2 ..., its seeds the pixel's first draws") {
+    using lowdiscrepancy::owenScramble;
+    using lowdiscrepancy::sobol;
+    const std::uint64_t seed = 5;
+    const int i = 3, j = 2, width = 10;
+    PixelSampler sampler(SamplerKind::Sobol, 4096, seed, i, j, width);
+    Pcg32 rng(seed, std::uint64_t(j) * width + i);
+    const std::uint32_t scramble[2] = {rng.nextUInt(), rng.nextUInt()};
+    int differing = 0;
+    for (std::uint32_t k = 0; k < 5000; ++k) { // past the 4096 it was made for: the sequence goes on
+        const glm::vec2 p = sampler.next2D();
+        differing += p.x != float(owenScramble(sobol(k, 0), scramble[0]) >> 8) * 0x1p-24f;
+        differing += p.y != float(owenScramble(sobol(k, 1), scramble[1]) >> 8) * 0x1p-24f;
+    }
+    CHECK(differing == 0);
+}
+
 TEST_CASE("Owen scrambling permutes: distinct inputs stay distinct, and it depends on the seed") {
     using lowdiscrepancy::owenScramble;
     std::set<std::uint32_t> seen;

@@ -67,6 +67,7 @@ private:
     std::optional<Pcg32> m_rng; // random: seeded in the constructor; the others on their first draw
     std::uint64_t m_drawn = 0;
     std::uint32_t m_scramble[2] = {0, 0}; // sobol: per-pixel Owen scrambling seeds
+    std::uint32_t m_sobol1Reversed = 0;   // sobol: the last point's second dimension, bits reversed
     double m_shift[2] = {0., 0.};         // r2: per-pixel offset
 };
 
@@ -76,6 +77,8 @@ namespace lowdiscrepancy {
 std::uint32_t sobol(std::uint32_t index, int dimension);
 // Nested uniform (Owen) scrambling of a 32-bit fraction with a hash (Burley 2020, after Laine and Karras).
 std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed);
+// The same, of the fraction whose bits reversed are `reversed` (the sampler keeps them so).
+std::uint32_t owenScrambleReversed(std::uint32_t reversed, std::uint32_t seed);
 // The n-th point of R2: frac(n / g), frac(n / g^2), g the plastic number.
 glm::dvec2 r2(std::uint32_t index);
 } // namespace lowdiscrepancy
