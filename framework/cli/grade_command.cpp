@@ -6,6 +6,7 @@
 #include "grader/class_run.h"
 #include "grader/grade.h"
 #include "grader/report.h"
+#include "grader/process.h"
 #include "grader/sandbox.h"
 #include "grader/submission.h"
 #include "raylab/messages.h"
@@ -61,7 +62,12 @@ GradeSetup setupFor(const GradeOptions& o, const Context& context, const fs::pat
     return setup;
 }
 
-Toolchain toolchain() { return Toolchain{RAYLAB_CMAKE_COMMAND, RAYLAB_CMAKE_GENERATOR}; }
+// The students of a class build the same framework files: through ccache when it is installed
+// (CCACHE_DISABLE=1 turns it off). A student's own build is incremental already, and keeps the
+// compiler's paths as they are.
+Toolchain toolchain(bool forClass) {
+    return Toolchain{RAYLAB_CMAKE_COMMAND, RAYLAB_CMAKE_GENERATOR, forClass ? findProgram("ccache") : fs::path()};
+}
 
 // --images: a line per figure; 0 only when every figure found passes.
 int gradeImageFolder(const GradeOptions& o, const Context& context) {
@@ -87,7 +93,8 @@ int gradeImageFolder(const GradeOptions& o, const Context& context) {
 }
 
 // Grades one body of code (this build's labs, a submission, or given agents) into a report.
-GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const fs::path& buildDir, std::string title) {
+GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const Toolchain& tools, const fs::path& buildDir,
+                          std::string title) {
     std::vector<AgentPlan> agents;
     bool isolated = false;
     std::vector<int> unbuilt;
@@ -98,7 +105,7 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
         std::printf("%s\n", tr("grade.building", {{"labs", o.labs}, {"folder", buildDir.string()}}).c_str());
         std::fflush(stdout);
         const SubmissionBuild b =
-            buildSubmission(toolchain(), build::kSourceDir, submissionLabsFolder(o.labs), buildDir, setup.labs.numbers());
+            buildSubmission(tools, build::kSourceDir, submissionLabsFolder(o.labs), buildDir, setup.labs.numbers());
         agents = b.agents;
         isolated = b.isolated;
         unbuilt = b.brokenLabs;
@@ -129,13 +136,32 @@ int gradeLabs(GradeOptions o, const Context& context) {
         }
     const fs::path buildDir = o.buildDir.empty() ? fs::path("out/grade-build") : fs::path(o.buildDir);
     GradeResult result =
-        gradeCodeOnce(o, setup, buildDir, "raylab grade " + (o.labs.empty() ? std::string("(labs/)") : o.labs));
+        gradeCodeOnce(o, setup, toolchain(false), buildDir, "raylab grade " + (o.labs.empty() ? std::string("(labs/)") : o.labs));
     if (!o.item.empty()) result = onlyItem(result, o.item);
     std::printf("%s", terminalSummary(result).c_str());
     writeReports(result, setup.references, o.report);
     std::printf("%s\n", tr("grade.report_written", {{"report", o.report + "/index.html"}}).c_str());
     fs::remove_all(scratch);
     return result.allPassed() ? 0 : 1;
+}
+
+// A problem as a cell of grades.csv: what it is and its first few error lines (a build problem may
+// have a cause per lab), each cut at a word past 200 characters.
+std::string problemSummary(const std::string& problem) {
+    constexpr int kLines = 4;
+    constexpr std::size_t kWidth = 200;
+    std::istringstream lines(problem);
+    std::string summary;
+    int count = 0;
+    for (std::string line; count < kLines && std::getline(lines, line);) {
+        if (line.empty()) continue;
+        if (line.size() > kWidth) {
+            const std::size_t space = line.rfind(' ', kWidth);
+            line = line.substr(0, space == std::string::npos || space < kWidth / 2 ? kWidth : space) + " …";
+        }
+        summary += (count++ ? "\n" : "") + line;
+    }
+    return summary;
 }
 
 // A student's row of grades.csv: points per lab, the total, and the first lines of the problems.
@@ -148,10 +174,7 @@ StudentRecord classRecord(const std::string& name, const GradeResult& result) {
     };
     for (const LabOutcome& lab : result.labs) record.cells.emplace_back("lab" + std::to_string(lab.lab), number(lab.points));
     std::string problems;
-    for (const std::string& p : result.problems) { // its first two lines: what, and the first error
-        const std::size_t second = p.find('\n', p.find('\n') + 1);
-        problems += (problems.empty() ? "" : " | ") + p.substr(0, std::min<std::size_t>(second, 300));
-    }
+    for (const std::string& p : result.problems) problems += (problems.empty() ? "" : " | ") + problemSummary(p);
     record.cells.emplace_back("total", number(result.score()));
     record.cells.emplace_back("max", number(result.maxScore()));
     record.cells.emplace_back("problems", problems);
@@ -180,7 +203,7 @@ int gradeClass(const ClassRunOptions& run, const GradeOptions& o, const Context&
         const fs::path buildDir = o.buildDir.empty() ? work.folder / "build" : fs::path(o.buildDir) / work.folder.filename();
         GradeResult result;
         try {
-            result = gradeCodeOnce(student, setup, buildDir, "raylab grade " + work.name);
+            result = gradeCodeOnce(student, setup, toolchain(true), buildDir, "raylab grade " + work.name);
         } catch (const std::exception& e) { // one student's trouble never stops the class
             result = gradeBuildFailure(setup, e.what());
             result.title = "raylab grade " + work.name;

@@ -3,7 +3,9 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
+#include <sstream>
 
 #ifdef _WIN32
 #include <windows.h>
@@ -43,6 +45,28 @@ struct RunningProcess {
 };
 
 } // namespace
+
+std::filesystem::path findProgram(const std::string& name) {
+#ifdef _WIN32
+    const char separator = ';';
+    const std::string file = name + ".exe";
+#else
+    const char separator = ':';
+    const std::string& file = name;
+#endif
+    const char* path = std::getenv("PATH");
+    std::istringstream folders(path ? path : "");
+    for (std::string folder; std::getline(folders, folder, separator);) {
+        std::error_code error;
+        const std::filesystem::path candidate = std::filesystem::path(folder) / file;
+        if (folder.empty() || !std::filesystem::is_regular_file(candidate, error)) continue;
+#ifndef _WIN32
+        if (access(candidate.c_str(), X_OK) != 0) continue;
+#endif
+        return candidate;
+    }
+    return {};
+}
 
 std::vector<char*> argumentPointers(std::vector<std::string>& args) {
     std::vector<char*> pointers;

@@ -27,6 +27,9 @@ struct ProcessResult {
 // device, and waits for it.
 ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOptions& options = {});
 
+// The program `name` as the PATH search finds it (`name.exe` on Windows); empty when it is not there.
+std::filesystem::path findProgram(const std::string& name);
+
 // `args` as exec and spawn take them: a pointer to each argument's characters, then a null pointer
 // (valid while `args` lives unchanged).
 std::vector<char*> argumentPointers(std::vector<std::string>& args);

@@ -99,18 +99,6 @@ constexpr int kRequestFd = 4;
 
 // ---- bubblewrap ---------------------------------------------------------------------------
 
-#ifdef __linux__
-fs::path findInPath(const std::string& name) {
-    const char* path = std::getenv("PATH");
-    std::istringstream folders(path ? path : "/usr/bin:/bin");
-    for (std::string folder; std::getline(folders, folder, ':');) {
-        const fs::path candidate = fs::path(folder) / name;
-        if (!folder.empty() && access(candidate.c_str(), X_OK) == 0) return candidate;
-    }
-    return {};
-}
-#endif
-
 // The namespaces and limits of every bubblewrap run (the probe below tries them all).
 const char* const kBubblewrapIsolation[] = {"--unshare-pid", "--unshare-net", "--unshare-ipc", "--unshare-uts",
                                             "--unshare-cgroup-try", "--die-with-parent", "--new-session",
@@ -126,7 +114,7 @@ const BubblewrapProbe& bubblewrapProbe() {
     static const BubblewrapProbe found = [] {
         BubblewrapProbe probe;
 #ifdef __linux__
-        probe.program = findInPath("bwrap");
+        probe.program = findProgram("bwrap");
         if (probe.program.empty()) return probe;
         std::vector<std::string> argv{probe.program.string()};
         argv.insert(argv.end(), std::begin(kBubblewrapIsolation), std::end(kBubblewrapIsolation));

@@ -13,6 +13,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// What a CMake cache value or list item cannot hold as it is.
+constexpr const char* kCmakeUnsafe = "\n\r;\"\\$#[]";
+
 fs::path agentFile(const fs::path& binDir, const std::string& name) {
 #ifdef _WIN32
     return binDir / (name + ".exe");
@@ -27,7 +30,7 @@ fs::path agentFile(const fs::path& binDir, const std::string& name) {
 // one student's objects, built from the same paths, for another's.
 fs::path cmakeSafe(const fs::path& labs, const fs::path& buildDir) {
     const std::string path = fs::absolute(labs).generic_string();
-    if (path.find_first_of("\n\r;\"\\$#[]") == std::string::npos) return fs::absolute(labs);
+    if (path.find_first_of(kCmakeUnsafe) == std::string::npos) return fs::absolute(labs);
     std::ostringstream name;
     name << "submission-" << std::hex << std::hash<std::string>{}(path);
     const fs::path link = fs::absolute(buildDir) / name.str();
@@ -35,6 +38,21 @@ fs::path cmakeSafe(const fs::path& labs, const fs::path& buildDir) {
     fs::remove(link, ignored);
     fs::create_directory_symlink(fs::absolute(labs), link);
     return link;
+}
+
+// The compiler launcher that runs each compiler through ccache, with paths rewritten relative to the
+// folder the sources and the build share: the students of a class build the same framework files in
+// folders of the same depth, so every student after the first compiles only their labs (about 12 s
+// rather than 90 on 2 cores). Empty when ccache is not there or the folder cannot be a CMake list item.
+std::string ccacheLauncher(const Toolchain& tools, const fs::path& sourceDir, const fs::path& buildDir) {
+    if (tools.ccache.empty()) return "";
+    const fs::path source = fs::absolute(sourceDir).lexically_normal(), build = fs::absolute(buildDir).lexically_normal();
+    fs::path shared;
+    for (auto s = source.begin(), b = build.begin(); s != source.end() && b != build.end() && *s == *b; ++s, ++b)
+        shared /= *s;
+    const std::string base = shared.generic_string();
+    if (base.find_first_of(kCmakeUnsafe) != std::string::npos) return "";
+    return tools.cmake + ";-E;env;CCACHE_BASEDIR=" + base + ";" + tools.ccache.generic_string();
 }
 
 // A refusal of raylab-build-guard (build_guard.cpp), in the reader's language; empty for another line.
@@ -51,6 +69,14 @@ std::string guardRefusal(const std::string& line) {
     return tr("build.guard_unchecked", {{"source", source}});
 }
 
+// make's and ninja's own lines ("gmake[2]: *** [...] Error 1", "FAILED: ..."): they repeat the
+// compiler's errors without their cause.
+bool buildToolLine(const std::string& line) {
+    for (const char* tool : {"make", "gmake", "mingw32-make", "ninja: ", "FAILED: "})
+        if (line.rfind(tool, 0) == 0) return true;
+    return false;
+}
+
 // The lines that say what went wrong, not the whole log.
 std::string errorLines(const fs::path& log) {
     std::ifstream in(log);
@@ -59,8 +85,8 @@ std::string errorLines(const fs::path& log) {
     for (std::string line; std::getline(in, line);) {
         if (const std::string refusal = guardRefusal(line); !refusal.empty()) line = "error: " + refusal;
         all += line + "\n";
-        const bool error = line.find("error") != std::string::npos || line.find("Error") != std::string::npos ||
-                           line.find("out of memory") != std::string::npos; // cc1plus past the guard's limit
+        const bool error = !buildToolLine(line) && (line.find("error") != std::string::npos || line.find("Error") != std::string::npos ||
+                                                    line.find("out of memory") != std::string::npos); // cc1plus past the guard's limit
         if (error && errors.find(line + "\n") == std::string::npos && count++ < 40) errors += line + "\n"; // once each
     }
     if (!errors.empty()) return errors;
@@ -102,6 +128,7 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     std::vector<std::string> configure{tools.cmake, "-S", fs::absolute(sourceDir).string(), "-B",
                                        fs::absolute(buildDir).string(), "-DCMAKE_BUILD_TYPE=Release",
                                        "-DBUILD_TESTING=OFF", "-DRAYLAB_SUBMISSION_DIR=" + cmakeSafe(labs, buildDir).generic_string()};
+    configure.push_back("-DCMAKE_CXX_COMPILER_LAUNCHER=" + ccacheLauncher(tools, sourceDir, buildDir));
     if (!tools.generator.empty() && !fs::exists(buildDir / "CMakeCache.txt", error))
         configure.insert(configure.end(), {"-G", tools.generator});
     std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--target", "raylab-agents", "-j", "2"};

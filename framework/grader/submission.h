@@ -13,6 +13,7 @@ namespace raylab::grader {
 struct Toolchain {
     std::string cmake = "cmake";
     std::string generator; // empty: CMake's default
+    std::filesystem::path ccache; // empty: none; else each compiler runs through it
 };
 
 struct SubmissionBuild {

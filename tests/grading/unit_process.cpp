@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -53,6 +54,24 @@ TEST_CASE("argumentPointers: each argument's characters, then a null pointer") {
     REQUIRE(pointers.size() == 4);
     for (std::size_t k = 0; k < args.size(); ++k) CHECK(pointers[k] == args[k].data());
     CHECK(pointers[3] == nullptr);
+}
+
+TEST_CASE("findProgram: the first executable file of that name in PATH, else nothing") {
+    const fs::path folder = fs::temp_directory_path() / "raylab-find-program";
+    fs::remove_all(folder);
+    fs::create_directories(folder / "a");
+    fs::create_directories(folder / "b");
+    std::ofstream(folder / "a" / "tool") << "not executable";
+    std::ofstream(folder / "b" / "tool") << "#!/bin/sh\n";
+    fs::permissions(folder / "b" / "tool", fs::perms::owner_exec, fs::perm_options::add);
+    fs::create_directories(folder / "c" / "tool"); // a folder is not a program
+    const char* saved = std::getenv("PATH");
+    const std::string path = saved ? saved : "";
+    setenv("PATH", ((folder / "c").string() + ":" + (folder / "a").string() + "::" + (folder / "b").string()).c_str(), 1);
+    const fs::path found = findProgram("tool"), missing = findProgram("no-such-tool");
+    setenv("PATH", path.c_str(), 1);
+    CHECK(found == folder / "b" / "tool");
+    CHECK(missing.empty());
 }
 
 } // TEST_SUITE
