@@ -145,25 +145,6 @@ int gradeLabs(GradeOptions o, const Context& context) {
     return result.allPassed() ? 0 : 1;
 }
 
-// A problem as a cell of grades.csv: what it is and its first few error lines (a build problem may
-// have a cause per lab), each cut at a word past 200 characters.
-std::string problemSummary(const std::string& problem) {
-    constexpr int kLines = 4;
-    constexpr std::size_t kWidth = 200;
-    std::istringstream lines(problem);
-    std::string summary;
-    int count = 0;
-    for (std::string line; count < kLines && std::getline(lines, line);) {
-        if (line.empty()) continue;
-        if (line.size() > kWidth) {
-            const std::size_t space = line.rfind(' ', kWidth);
-            line = line.substr(0, space == std::string::npos || space < kWidth / 2 ? kWidth : space) + " …";
-        }
-        summary += (count++ ? "\n" : "") + line;
-    }
-    return summary;
-}
-
 // A student's row of grades.csv: points per lab, the total, and the first lines of the problems.
 StudentRecord classRecord(const std::string& name, const GradeResult& result) {
     StudentRecord record{name, {}};

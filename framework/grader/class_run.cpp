@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <sstream>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -427,6 +428,25 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
         return 1;
     }
     return 0;
+}
+
+std::string problemSummary(const std::string& problem) {
+    constexpr int kLines = 4;
+    constexpr std::size_t kWidth = 200;
+    std::istringstream lines(problem);
+    std::string summary;
+    int count = 0;
+    for (std::string line; count < kLines && std::getline(lines, line);) {
+        if (line.empty()) continue;
+        if (line.size() > kWidth) {
+            const std::size_t space = line.rfind(' ', kWidth);
+            std::size_t cut = space == std::string::npos || space < kWidth / 2 ? kWidth : space;
+            while (cut > 0 && (static_cast<unsigned char>(line[cut]) & 0xC0) == 0x80) --cut; // not inside a UTF-8 character
+            line = line.substr(0, cut) + " …";
+        }
+        summary += (count++ ? "\n" : "") + line;
+    }
+    return summary;
 }
 
 } // namespace raylab::grader

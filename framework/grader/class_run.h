@@ -49,4 +49,8 @@ std::string safeStudentName(const std::string& folderName);
 // The name as one line of a terminal: control characters as \n, \t or \xHH.
 std::string printableName(const std::string& folderName);
 
+// A problem as a cell of grades.csv: its first line and its first three error lines (a build
+// problem may have a cause per lab), each cut at a word past 200 characters.
+std::string problemSummary(const std::string& problem);
+
 } // namespace raylab::grader

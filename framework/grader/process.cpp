@@ -48,14 +48,14 @@ struct RunningProcess {
 
 std::filesystem::path findProgram(const std::string& name) {
 #ifdef _WIN32
-    const char separator = ';';
+    const char separator = ';', *const fallback = "";
     const std::string file = name + ".exe";
 #else
-    const char separator = ':';
+    const char separator = ':', *const fallback = "/usr/bin:/bin"; // execvp's search without PATH
     const std::string& file = name;
 #endif
     const char* path = std::getenv("PATH");
-    std::istringstream folders(path ? path : "");
+    std::istringstream folders(path ? path : fallback);
     for (std::string folder; std::getline(folders, folder, separator);) {
         std::error_code error;
         const std::filesystem::path candidate = std::filesystem::path(folder) / file;

@@ -1,5 +1,5 @@
 // The class ledger's pieces: a safe folder name for any student name, one to one; CSV cells that a
-// real CSV reader reads back as they were.
+// real CSV reader reads back as they were; the problems cell, short and whole characters.
 #include "grader/class_run.h"
 #include "raylab/csv.h"
 #include "support/read_csv.h"
@@ -11,6 +11,7 @@
 #include <vector>
 
 using raylab::grader::printableName;
+using raylab::grader::problemSummary;
 using raylab::grader::safeStudentName;
 
 namespace {
@@ -57,6 +58,21 @@ TEST_CASE("CSV lines read back by a CSV reader as the cells they were written fr
     CHECK(rows[0] == cells);
     CHECK(rows[1] == std::vector<std::string>{"1", "2"});
     CHECK(raylab::csvLine({"a", "b"}) == "a,b\n");
+}
+
+TEST_CASE("problem summaries: the first line and three error lines, cut at a word, never inside a character") {
+    CHECK(problemSummary("labs 3 4 do not build:\n\na.cpp:1: error: x\nb.cpp:2: error: y\nc.cpp:3: error: z\nd.cpp:4: error: w") ==
+          "labs 3 4 do not build:\na.cpp:1: error: x\nb.cpp:2: error: y\nc.cpp:3: error: z");
+    const std::string words = std::string(150, 'a') + " " + std::string(100, 'b');
+    CHECK(problemSummary(words) == std::string(150, 'a') + " …");
+    std::string accents; // 2 bytes a character, no space: cut at 200 bytes, between two characters
+    for (int k = 0; k < 150; ++k) accents += "é";
+    CHECK(problemSummary(accents) == accents.substr(0, 200) + " …");
+    std::string shifted(1, 'x'), cut(1, 'x'); // byte 200 is inside an é: cut before it
+    shifted += accents;
+    cut += accents.substr(0, 198) + " …";
+    CHECK(problemSummary(shifted) == cut);
+    CHECK(problemSummary("") == "");
 }
 
 } // TEST_SUITE
