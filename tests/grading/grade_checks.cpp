@@ -42,6 +42,20 @@ TEST_SUITE("checks") {
             CHECK(findFigure(r, id)->passed);
     }
 
+    TEST_CASE("an inward normal: computeNormal is told to point outwards, Li is sent to computeNormal, not told its own formula") {
+        const GradeResult r = gradeAgent(courseSetup(), "raylab-bad-normal_inwards");
+        const CheckOutcome& normal = check(r, "computeNormal: unit and pointing outwards");
+        CHECK_FALSE(normal.passed);
+        CHECK_MESSAGE(normal.message.find("from the centre outwards") != std::string::npos, normal.message);
+        CHECK_MESSAGE(normal.message.find("divide by the radius") == std::string::npos, normal.message);
+        const CheckOutcome& cosine = check(r, "Li: cosine shading is colour times the cosine -d.n");
+        CHECK_FALSE(cosine.passed);
+        CHECK_MESSAGE(cosine.message.find("fix computeNormal") != std::string::npos, cosine.message);
+        CHECK_MESSAGE(cosine.message.find("with the true normal") == std::string::npos, cosine.message);
+        CHECK_MESSAGE(cosine.message.find("head on") == std::string::npos, cosine.message);
+        CHECK(check(r, "Li: flat shading sees the sphere's colour or the background").passed);
+    }
+
     TEST_CASE("lab 2's checks need no lab 4: with lab 4 a stub, lab 2 keeps every point") {
         GradeSetup setup = courseSetup();
         // raylab-agent-lab4: lab 4 from labs/ (the stub), every other lab from the reference; all labs graded.

@@ -107,6 +107,14 @@ TEST_CASE("statistical: a bias of a quarter LSB fails") {
     CHECK(v.reason.find("biased") != std::string::npos);
 }
 
+TEST_CASE("statistical: a biased render is said biased, not noisy, though its RMSE is over the limit too") {
+    const ImageVerdict v = compareStatistical(statistical(200, 100), noisyRender(200, 100, 16, 6., 4));
+    CHECK_FALSE(v.passed);
+    CHECK(metric(v, "RMSE (LSB)") > metric(v, "allowed RMSE (LSB)"));
+    CHECK_MESSAGE(v.reason.find("biased") != std::string::npos, v.reason);
+    CHECK_MESSAGE(v.reason.find("noisy") == std::string::npos, v.reason);
+}
+
 TEST_CASE("statistical: far fewer samples fail on noise") {
     const ImageVerdict v = compareStatistical(statistical(200, 100), noisyRender(200, 100, 4, 0., 5));
     CHECK_FALSE(v.passed);

@@ -191,14 +191,41 @@ glm::dvec3 expectedLi(const LiCase& c) {
     return c.colour * std::max(-glm::dot(d, n), 0.);
 }
 
+protocol::Call normalCall(const Sphere& s, const glm::dvec3& point) {
+    std::vector<double> in;
+    appendInputs(in, s.centre);
+    in.push_back(s.radius);
+    appendInputs(in, point);
+    return {Probe::ComputeNormal, in};
+}
+
+// Cosine shading reads the normal from the student's computeNormal: the check also asks that
+// function at the true hit, so that a Li right for a wrong normal is sent to computeNormal, not
+// told to fix its own formula.
 void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<LiCase> cases) {
     std::vector<protocol::Call> calls;
     for (const LiCase& c : cases)
         calls.push_back(liCall(c.shading, c.sphere, c.colour, c.background, c.ray));
-    checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
-                          for (std::size_t k = 0; k < cases.size(); ++k)
-                              judge.expectNear(cases[k].what, Outputs(out[k]).vec3(), expectedLi(cases[k]),
-                                               cases[k].tolerance, cases[k].hint);
+    std::vector<std::size_t> normalAt(cases.size(), 0); // the normal call of a cosine hit, else 0
+    for (std::size_t k = 0; k < cases.size(); ++k)
+        if (const std::optional<double> t = nearestHit(cases[k].sphere, cases[k].ray); t && cases[k].shading == kCosine) {
+            normalAt[k] = calls.size();
+            calls.push_back(normalCall(cases[k].sphere, CaseRandom::asFloat(cases[k].ray.at(*t))));
+        }
+    checks.push_back({3, name, calls, [cases, normalAt](const auto& out, Judge& judge) {
+                          for (std::size_t k = 0; k < cases.size(); ++k) {
+                              const LiCase& c = cases[k];
+                              const glm::dvec3 got = Outputs(out[k]).vec3();
+                              std::string hint = c.hint;
+                              if (normalAt[k] != 0) {
+                                  const glm::dvec3 n = Outputs(out[normalAt[k]]).vec3(),
+                                                   d = glm::normalize(c.ray.direction);
+                                  const glm::dvec3 forTheirNormal = c.colour * std::max(-glm::dot(d, n), 0.);
+                                  const glm::dvec3 off = glm::abs(got - forTheirNormal);
+                                  if (std::max({off.x, off.y, off.z}) <= c.tolerance) hint = tr("hint.lab3.cosine_own_normal");
+                              }
+                              judge.expectNear(c.what, got, expectedLi(c), c.tolerance, hint);
+                          }
                       }});
 }
 
@@ -345,22 +372,23 @@ void addNormalCheck(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const std::vector<std::pair<Sphere, glm::dvec3>> cases{
         {kSphere, {0., 0., 2.}}, {big, {1., 2., 5.}}, {drawn, point}};
     std::vector<protocol::Call> calls;
-    for (const auto& [s, p] : cases) {
-        std::vector<double> in;
-        appendInputs(in, s.centre);
-        in.push_back(s.radius);
-        appendInputs(in, p);
-        calls.push_back({Probe::ComputeNormal, in});
-    }
+    for (const auto& [s, p] : cases) calls.push_back(normalCall(s, p));
+    // The hint names what the answer shows: a length other than 1, or the inward direction.
+    auto hint = [](const glm::dvec3& got, const glm::dvec3& expected) {
+        if (!(std::abs(glm::length(got) - 1.) <= 1e-3)) return tr("hint.lab3.normal_unit");
+        if (glm::dot(got, expected) < 0.) return tr("hint.lab3.normal_outwards");
+        return tr("hint.lab3.normal");
+    };
     checks.push_back(
-        {3, "computeNormal: unit and pointing outwards", calls, [cases](const auto& out, Judge& judge) {
-             judge.expectNear(tr("what.lab3.normal_at", {{"point", show(glm::dvec3(0., 0., 2.))}}),
-                              Outputs(out[0]).vec3(), {0., 0., -1.}, 1e-6, tr("hint.lab3.normal_outwards"));
-             judge.expectNear(tr("what.lab3.normal_radius_2", {{"point", show(glm::dvec3(1., 2., 5.))}}),
-                              Outputs(out[1]).vec3(), {0., 0., 1.}, 1e-6, tr("hint.lab3.normal_unit"));
-             const auto& [s, p] = cases[2];
-             judge.expectNear(tr("what.lab3.normal_of", {{"point", show(p)}, {"sphere", describe(s)}}),
-                              Outputs(out[2]).vec3(), (p - s.centre) / s.radius, 1e-5, tr("hint.lab3.normal"));
+        {3, "computeNormal: unit and pointing outwards", calls, [cases, hint](const auto& out, Judge& judge) {
+             const std::string what[] = {tr("what.lab3.normal_at", {{"point", show(glm::dvec3(0., 0., 2.))}}),
+                                         tr("what.lab3.normal_radius_2", {{"point", show(glm::dvec3(1., 2., 5.))}}),
+                                         tr("what.lab3.normal_of", {{"point", show(cases[2].second)}, {"sphere", describe(cases[2].first)}})};
+             for (std::size_t k = 0; k < cases.size(); ++k) {
+                 const auto& [s, p] = cases[k];
+                 const glm::dvec3 got = Outputs(out[k]).vec3(), expected = (p - s.centre) / s.radius;
+                 judge.expectNear(what[k], got, expected, k < 2 ? 1e-6 : 1e-5, hint(got, expected));
+             }
          }});
 }
 
