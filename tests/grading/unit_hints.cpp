@@ -3,6 +3,10 @@
 #include "grader/checks/checks.h"
 
 #include <doctest/doctest.h>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
 
 #include <functional>
 #include <string>
@@ -107,6 +111,34 @@ TEST_CASE("lab 3: an inward normal is told to point outwards, a normal of length
         CHECK_FALSE(message.empty());
         CHECK_MESSAGE(says(message, "it points from the centre outwards") == inward, message);
         CHECK_MESSAGE(says(message, "divide by the radius") == !inward, message);
+    }
+}
+
+TEST_CASE("lab 4: u and v made rightly from an unnormalized w are sent to w, and so is the screen") {
+    // The lookAt constructor with w = position - target, the rest as the handout says.
+    auto unnormalizedW = [](const protocol::Call& call) {
+        if (call.probe != protocol::Probe::LookAt) return std::vector<double>{1.};
+        const double width = call.inputs[0], height = call.inputs[1];
+        const glm::dvec3 position(call.inputs[2], call.inputs[3], call.inputs[4]),
+            target(call.inputs[5], call.inputs[6], call.inputs[7]), up(call.inputs[8], call.inputs[9], call.inputs[10]);
+        const glm::dvec3 w = position - target, u = glm::normalize(glm::cross(up, w)), v = glm::cross(w, u);
+        const double h = 2. * std::tan(glm::radians(call.inputs[11]) / 2.), wide = h * width / height;
+        const glm::dvec3 topLeft = position - w + v * (h / 2.) - u * (wide / 2.);
+        std::vector<double> out;
+        for (const glm::dvec3& x : {u, v, w, position}) out.insert(out.end(), {x.x, x.y, x.z});
+        out.insert(out.end(), {h, wide, topLeft.x, topLeft.y, topLeft.z});
+        return out;
+    };
+    for (const char* name : {"lookAt: the basis of the handout's four cameras", "lookAt: the viewport follows the new frame"}) {
+        const auto messages = judge(addLab4Checks, unnormalizedW, name);
+        REQUIRE(messages.size() == 1);
+        const std::string& message = messages[0].second;
+        CAPTURE(name);
+        CHECK_FALSE(message.empty());
+        CHECK_MESSAGE(!says(message, "v = cross(w, u), up in the image"), message);
+        CHECK_MESSAGE(!says(message, "call updateViewport()"), message);
+        const bool sentToTheFrame = says(message, "fix w first") || says(message, "that frame is wrong");
+        CHECK_MESSAGE(sentToTheFrame, message);
     }
 }
 
