@@ -23,6 +23,10 @@ const std::map<std::string, std::vector<WrongCause>> kWrongCauses{
     {"degrees_as_radians", {{"generateRay", "sy goes down against v"}, {"generateRay", "topLeft includes"}}},
     {"fovy_not_halved", {{"generateRay", "sy goes down against v"}, {"generateRay", "topLeft includes"}}},
     {"aspect_inverted", {{"generateRay", "sy goes down against v"}, {"generateRay", "topLeft includes"}}},
+    // A direction as wrong at the origin: the camera's position is not the cause.
+    {"plus_sy", {{"generateRay: a camera away", "topLeft includes"}}},
+    {"v_flipped", {{"generateRay: a camera away", "topLeft includes"}}},
+    {"direction_not_normalized", {{"generateRay: a camera away", "topLeft includes"}}},
 };
 
 TEST_CASE("each catalogued mistake is caught and named") {

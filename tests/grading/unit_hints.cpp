@@ -142,4 +142,26 @@ TEST_CASE("lab 4: u and v made rightly from an unnormalized w are sent to w, and
     }
 }
 
+TEST_CASE("lab 2: sx and sy swapped is not blamed on the position of a camera away from the origin") {
+    // generateRay with sx and sy swapped, the viewport right (docs/conventions.md's default frame).
+    auto swapped = [](const protocol::Call& call) {
+        const double width = call.inputs[0], height = call.inputs[1];
+        const double h = 2. * std::tan(glm::radians(call.inputs[2]) / 2.), wide = h * width / height;
+        if (call.probe == protocol::Probe::Viewport) {
+            const glm::dvec3 topLeft(wide / 2., h / 2., 1.);
+            return std::vector<double>{h, wide, topLeft.x, topLeft.y, topLeft.z};
+        }
+        const glm::dvec3 position(call.inputs[3], call.inputs[4], call.inputs[5]);
+        const double sx = call.inputs[7], sy = call.inputs[6]; // the mistake
+        const glm::dvec3 d = glm::normalize(glm::dvec3(wide / 2. - sx * wide, h / 2. - sy * h, 1.));
+        return std::vector<double>{position.x, position.y, position.z, d.x, d.y, d.z};
+    };
+    const auto messages = judge(addLab2Checks, swapped, "generateRay: a camera away from the origin starts its rays at its position");
+    REQUIRE(messages.size() == 1);
+    const std::string& message = messages[0].second;
+    CHECK_FALSE(message.empty());
+    CHECK_MESSAGE(!says(message, "topLeft includes the position"), message);
+    CHECK_MESSAGE(says(message, "the position is not the cause"), message);
+}
+
 }

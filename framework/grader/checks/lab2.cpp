@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -174,16 +175,28 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     Camera drawnAway = drawnCamera(random);
     drawnAway.position = CaseRandom::asFloat(random.vec3(-5., 5.));
     const double sx = CaseRandom::asFloat(random.uniform(0., 1.)), sy = CaseRandom::asFloat(random.uniform(0., 1.));
+    // The same rays from cameras at the origin: a direction as wrong there as here is not the
+    // position's fault, and the hint says so instead of blaming the position.
+    Camera awayAtOrigin = away, drawnAtOrigin = drawnAway;
+    awayAtOrigin.position = drawnAtOrigin.position = glm::dvec3(0.);
     checks.push_back({2,
                       "generateRay: a camera away from the origin starts its rays at its position",
-                      {away.ray(0., 0.), drawnAway.ray(sx, sy), away.viewport(), drawnAway.viewport()},
+                      {away.ray(0., 0.), drawnAway.ray(sx, sy), away.viewport(), drawnAway.viewport(),
+                       awayAtOrigin.ray(0., 0.), drawnAtOrigin.ray(sx, sy)},
                       [away, drawnAway, sx, sy](const auto& out, Judge& judge) {
-                          for (const auto& [c, o, viewport, x, y] :
-                               {std::tuple{away, out[0], out[2], 0., 0.}, std::tuple{drawnAway, out[1], out[3], sx, sy}})
+                          for (const auto& [c, o, viewport, atOrigin, x, y] :
+                               {std::tuple{away, out[0], out[2], out[4], 0., 0.},
+                                std::tuple{drawnAway, out[1], out[3], out[5], sx, sy}}) {
+                              Outputs here(o), there(atOrigin);
+                              here.vec3();
+                              there.vec3();
+                              const glm::dvec3 difference = glm::abs(here.vec3() - there.vec3());
+                              const bool sameAsAtOrigin = std::max({difference.x, difference.y, difference.z}) <= 1e-5;
                               expectRays(judge, c, SeenViewport(c, viewport),
                                          {{x, y, tr("what.lab2.away_point", {{"sx", show(x)}, {"sy", show(y)},
                                                                              {"position", show(c.position)}})}},
-                                         {o}, 0, tr("hint.lab2.away_direction"));
+                                         {o}, 0, tr(sameAsAtOrigin ? "hint.lab2.away_as_at_origin" : "hint.lab2.away_direction"));
+                          }
                       }});
 }
 
