@@ -129,7 +129,7 @@ ImageVerdict compareStatistical(const FigureReference& reference, const Image8& 
     if (biased) because(tr("compare.biased", {{"bias", formatFixed(bias, 3, true)}, {"limit", formatFixed(biasLimit, 3)}}));
     if (outliers > outlierLimit)
         because(tr("compare.outliers", {{"count", std::to_string(outliers)}, {"limit", std::to_string(outlierLimit)}}));
-    // A biased image's RMSE holds its bias: "too noisy or blurred" would name a cause it may not
+    // A biased image's RMSE holds its bias: "too noisy, blurred or shifted" would name a cause it may not
     // have (a sum divided by N + 1 is neither). Its RMSE still fails it, and is in the metrics.
     if (rmse > s.rmseLimit && !biased) because(tr("compare.noisy", {{"rmse", formatFixed(rmse, 3)},
                                                                         {"samples", std::to_string(s.samples)},
