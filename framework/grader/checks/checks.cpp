@@ -29,10 +29,14 @@ bool Judge::expectNear(const std::string& what, double got, double expected, dou
 
 bool Judge::expectNear(const std::string& what, const glm::dvec3& got, const glm::dvec3& expected, double tolerance,
                        const std::string& hint) {
-    const glm::dvec3 d = glm::abs(got - expected);
-    if (d.x <= tolerance && d.y <= tolerance && d.z <= tolerance) return true;
+    if (withinEach(got, expected, tolerance)) return true;
     fail(what, tr("check.within", {{"value", show(expected)}, {"tolerance", show(tolerance)}}), show(got), hint);
     return false;
+}
+
+bool withinEach(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
+    const glm::dvec3 d = glm::abs(a - b);
+    return d.x <= tolerance && d.y <= tolerance && d.z <= tolerance;
 }
 
 bool Judge::expectTrue(const std::string& what, bool holds, const std::string& expected, const std::string& got,

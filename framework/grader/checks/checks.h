@@ -32,6 +32,9 @@ private:
     std::vector<std::string> m_failures;
 };
 
+// Each component of a within `tolerance` of b's.
+bool withinEach(const glm::dvec3& a, const glm::dvec3& b, double tolerance);
+
 std::string show(double v);
 std::string show(const glm::dvec3& v);
 

@@ -6,7 +6,6 @@
 
 #include <glm/geometric.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -190,8 +189,7 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                               Outputs here(o), there(atOrigin);
                               here.vec3();
                               there.vec3();
-                              const glm::dvec3 difference = glm::abs(here.vec3() - there.vec3());
-                              const bool sameAsAtOrigin = std::max({difference.x, difference.y, difference.z}) <= 1e-5;
+                              const bool sameAsAtOrigin = withinEach(here.vec3(), there.vec3(), 1e-5);
                               expectRays(judge, c, SeenViewport(c, viewport),
                                          {{x, y, tr("what.lab2.away_point", {{"sx", show(x)}, {"sy", show(y)},
                                                                              {"position", show(c.position)}})}},

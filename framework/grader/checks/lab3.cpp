@@ -221,8 +221,7 @@ void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vec
                                   const glm::dvec3 n = Outputs(out[normalAt[k]]).vec3(),
                                                    d = glm::normalize(c.ray.direction);
                                   const glm::dvec3 forTheirNormal = c.colour * std::max(-glm::dot(d, n), 0.);
-                                  const glm::dvec3 off = glm::abs(got - forTheirNormal);
-                                  if (std::max({off.x, off.y, off.z}) <= c.tolerance) hint = tr("hint.lab3.cosine_own_normal");
+                                  if (withinEach(got, forTheirNormal, c.tolerance)) hint = tr("hint.lab3.cosine_own_normal");
                               }
                               judge.expectNear(c.what, got, expectedLi(c), c.tolerance, hint);
                           }

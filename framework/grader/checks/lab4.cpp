@@ -38,11 +38,6 @@ struct LookAt {
     }
 };
 
-bool near(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
-    const glm::dvec3 d = glm::abs(a - b);
-    return d.x <= tolerance && d.y <= tolerance && d.z <= tolerance;
-}
-
 // What the LookAt probe returns.
 struct Built {
     glm::dvec3 u, v, w, position;
@@ -118,10 +113,10 @@ void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                                      };
                                      // u and v made rightly from a wrong w are sent to w.
                                      const bool wRight = judge.expectNear(what("w"), b.w, c.w(), 1e-5, tr("hint.lab4.w"));
-                                     const bool uFromW = near(b.u, glm::normalize(glm::cross(c.up, b.w)), 1e-5);
+                                     const bool uFromW = withinEach(b.u, glm::normalize(glm::cross(c.up, b.w)), 1e-5);
                                      judge.expectNear(what("u"), b.u, c.u(), 1e-5,
                                                       tr(!wRight && uFromW ? "hint.lab4.from_w" : "hint.lab4.u"));
-                                     const bool vFromW = near(b.v, glm::cross(b.w, b.u), 1e-5);
+                                     const bool vFromW = withinEach(b.v, glm::cross(b.w, b.u), 1e-5);
                                      judge.expectNear(what("v"), b.v, c.v(), 1e-5,
                                                       tr(!wRight && vFromW ? "hint.lab4.from_w" : "hint.lab4.v"));
                                      judge.expectNear(what("position"), b.position, c.position, 1e-6,
@@ -134,9 +129,9 @@ void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
             // A screen placed rightly in a wrong frame: updateViewport was called, the frame is at fault.
             const glm::dvec3 ownTopLeft =
                 b.position - b.w + b.v * (b.viewportHeight / 2.) - b.u * (b.viewportWidth / 2.);
-            const bool frameRight = near(b.u, c.u(), 1e-5) && near(b.v, c.v(), 1e-5) && near(b.w, c.w(), 1e-5);
+            const bool frameRight = withinEach(b.u, c.u(), 1e-5) && withinEach(b.v, c.v(), 1e-5) && withinEach(b.w, c.w(), 1e-5);
             const std::string hint =
-                tr(!frameRight && near(b.topLeft, ownTopLeft, 1e-4) ? "hint.lab4.viewport_frame" : "hint.lab4.viewport");
+                tr(!frameRight && withinEach(b.topLeft, ownTopLeft, 1e-4) ? "hint.lab4.viewport_frame" : "hint.lab4.viewport");
             auto what = [&c](const std::string& part) { return tr("what.lab4.part", {{"camera", c.name}, {"part", part}}); };
             judge.expectNear(what(tr("what.lab4.viewport_height")), b.viewportHeight, c.viewportHeight(), 1e-5, hint);
             judge.expectNear(what(tr("what.lab4.viewport_width")), b.viewportWidth, c.viewportWidth(), 1e-5, hint);
