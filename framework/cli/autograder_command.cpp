@@ -5,10 +5,10 @@
 #include "build_info.h"
 #include "commands.h"
 
-#include "grader/autograder.h"
-#include "grader/process.h"
-#include "grader/report.h"
-#include "raylab/atomic_file.h"
+#include "grader/course/autograder.h"
+#include "grader/sandbox/process.h"
+#include "grader/course/grade_reports.h"
+#include "src/atomic_file.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -1,7 +1,7 @@
 #include "commands.h"
 
 #include "build_info.h"
-#include "raylab/figure.h"
+#include "src/figure.h"
 #ifdef RAYLAB_HAVE_YARDSTICK
 #include "../study/yardstick.h"
 #endif

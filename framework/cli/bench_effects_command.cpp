@@ -2,7 +2,7 @@
 // Pairs of scenes that differ in one effect, each timed as the median of several renders.
 #include "commands.h"
 
-#include "raylab/figure.h"
+#include "src/figure.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -2,8 +2,8 @@
 #include "commands.h"
 
 #include "grader/lab_catalog.h"
-#include "grader/process.h"
-#include "raylab/messages.h"
+#include "grader/sandbox/process.h"
+#include "src/messages.h"
 
 #include <cerrno>
 #include <charconv>

@@ -3,12 +3,12 @@
 
 #include "grader/lab_catalog.h"
 
-#include "raylab/atomic_file.h"
-#include "raylab/contact_sheet.h"
-#include "raylab/figure.h"
+#include "src/atomic_file.h"
+#include "src/contact_sheet.h"
+#include "src/figure.h"
 #include "raylab/image_io.h"
-#include "raylab/messages.h"
-#include "raylab/terminal.h"
+#include "src/messages.h"
+#include "src/terminal.h"
 
 #include <algorithm>
 #include <cstdio>

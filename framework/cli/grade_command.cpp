@@ -2,14 +2,14 @@
 #include "build_info.h"
 #include "commands.h"
 
-#include "grader/autograder.h"
-#include "grader/class_run.h"
-#include "grader/grade.h"
-#include "grader/report.h"
-#include "grader/process.h"
-#include "grader/sandbox.h"
-#include "grader/submission.h"
-#include "raylab/messages.h"
+#include "grader/course/autograder.h"
+#include "grader/course/class_run.h"
+#include "grader/judge/grade.h"
+#include "grader/course/grade_reports.h"
+#include "grader/sandbox/process.h"
+#include "grader/sandbox/sandbox.h"
+#include "grader/course/submission.h"
+#include "src/messages.h"
 
 #include <algorithm>
 #include <cstdio>

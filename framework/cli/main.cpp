@@ -2,7 +2,7 @@
 #include "build_info.h"
 #include "commands.h"
 
-#include "raylab/messages.h"
+#include "src/messages.h"
 
 #include <cstdio>
 #include <cstdlib>

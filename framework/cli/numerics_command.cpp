@@ -5,7 +5,7 @@
 
 #include "../study/numerics_study.h"
 
-#include "raylab/atomic_file.h"
+#include "src/atomic_file.h"
 
 #include <chrono>
 #include <cstdio>

@@ -3,12 +3,12 @@
 #include "build_info.h"
 #include "commands.h"
 
-#include "grader/compare.h"
-#include "grader/diagnosis.h"
+#include "grader/judge/compare.h"
+#include "grader/judge/diagnosis.h"
 #include "grader/lab_catalog.h"
-#include "grader/reference_render.h"
-#include "grader/references.h"
-#include "grader/grade.h"
+#include "grader/judge/reference_render.h"
+#include "grader/judge/references.h"
+#include "grader/judge/grade.h"
 
 #include <cstdio>
 #include <memory>

@@ -2,8 +2,8 @@
 #include "build_info.h"
 #include "commands.h"
 
-#include "raylab/messages.h"
-#include "raylab/terminal.h"
+#include "src/messages.h"
+#include "src/terminal.h"
 #include "report/report_kit.h"
 
 #include <cstdio>

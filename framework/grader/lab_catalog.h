@@ -3,7 +3,7 @@
 // a student writes, the labs it uses, its figures and checks with their points). The grader, the
 // report, `raylab distribute` and the docs test read them; nothing else names a lab or counts them.
 
-#include "raylab/scene_file.h"
+#include "src/scene_file.h"
 
 #include <filesystem>
 #include <string>

@@ -3,8 +3,8 @@
 // (1 LSB; for a noisy figure, the reference's noise), dark red just outside, yellow at 64 LSB or more.
 // A correct noisy render is dark: its pixels differ from the reference by its noise only.
 
-#include "grader/compare.h"
-#include "grader/references.h"
+#include "grader/judge/compare.h"
+#include "grader/judge/references.h"
 #include "raylab/image_io.h"
 
 namespace raylab::report {

@@ -1,6 +1,6 @@
 #include "report/pdf.h"
 
-#include "grader/process.h"
+#include "grader/sandbox/process.h"
 
 #include <cstdlib>
 #include <fstream>

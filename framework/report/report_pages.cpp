@@ -3,9 +3,9 @@
 #include "report/difference_map.h"
 #include "report/templates.h"
 
-#include "grader/checks/checks.h"
-#include "raylab/markup.h"
-#include "raylab/messages.h"
+#include "grader/judge/checks/checks.h"
+#include "src/markup.h"
+#include "src/messages.h"
 
 #include <cmark.h>
 
@@ -95,7 +95,7 @@ std::string figureMarkdown(const KitFigure& f, const KitContent& c) {
     return text;
 }
 
-// The grader's lines for a check and a figure, as `raylab grade` says them (grader/report.cpp).
+// The grader's lines for a check and a figure, as `raylab grade` says them (grader/course/grade_reports.cpp).
 std::string verdictAndLab(bool passed, int lab) {
     return tr(passed ? "report.pass" : "report.fail") + "  " + tr("report.lab_short", {{"lab", std::to_string(lab)}}) + "  ";
 }

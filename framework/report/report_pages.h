@@ -2,7 +2,7 @@
 // The report's pages: its generated Markdown segments from what was rendered and graded, and the
 // HTML of a whole document (the templates, the Markdown rendered by cmark).
 
-#include "grader/grade.h"
+#include "grader/judge/grade.h"
 #include "raylab/renderer.h"
 #include "report/student_text.h"
 #include "report/title_block.h"

@@ -1,6 +1,6 @@
 #include "report/title_block.h"
 
-#include "raylab/atomic_file.h"
+#include "src/atomic_file.h"
 #include "report/templates.h"
 
 #include <toml++/toml.h>

@@ -2,7 +2,7 @@
 // The report's language: its sentences are the [report_page] messages of the catalogues
 // (framework/messages/*.toml), its numbers written by the language's typography.
 
-#include "raylab/messages.h"
+#include "src/messages.h"
 
 #include <string>
 #include <string_view>

@@ -1,4 +1,4 @@
-#include "raylab/atomic_file.h"
+#include "src/atomic_file.h"
 
 #include <atomic>
 #include <cerrno>

@@ -1,5 +1,5 @@
 #include "raylab/perspective_camera.h"
-#include "raylab/text.h"
+#include "src/text.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,4 +1,4 @@
-#include "raylab/contact_sheet.h"
+#include "src/contact_sheet.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "raylab/csv.h"
+#include "src/csv.h"
 
 namespace raylab {
 

@@ -1,4 +1,4 @@
-#include "raylab/figure.h"
+#include "src/figure.h"
 
 #include "raylab/gradient.h"
 #include "raylab/integrator_registry.h"

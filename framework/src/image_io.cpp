@@ -1,6 +1,6 @@
 #include "raylab/image_io.h"
 
-#include "raylab/atomic_file.h"
+#include "src/atomic_file.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

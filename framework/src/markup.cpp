@@ -1,4 +1,4 @@
-#include "raylab/markup.h"
+#include "src/markup.h"
 
 namespace raylab {
 

@@ -1,4 +1,4 @@
-#include "raylab/messages.h"
+#include "src/messages.h"
 
 #include <toml++/toml.h>
 

@@ -1,6 +1,6 @@
-#include "raylab/parallel.h"
+#include "src/parallel.h"
 
-#include "raylab/terminal.h"
+#include "src/terminal.h"
 
 #include <algorithm>
 #include <atomic>

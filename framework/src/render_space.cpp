@@ -1,4 +1,4 @@
-#include "raylab/render_space.h"
+#include "src/render_space.h"
 
 #include <cmath>
 

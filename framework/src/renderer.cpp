@@ -1,6 +1,6 @@
 #include "raylab/renderer.h"
 
-#include "raylab/parallel.h"
+#include "src/parallel.h"
 
 #include <glm/common.hpp>
 

@@ -1,7 +1,7 @@
-#include "raylab/scene_file.h"
+#include "src/scene_file.h"
 
 #include "raylab/integrator_registry.h"
-#include "raylab/text.h"
+#include "src/text.h"
 
 #include <toml++/toml.h>
 

@@ -2,7 +2,7 @@
 // intersect and computeNormal are lab 3's (labs/lab3_sphere/sphere_geometry.cpp).
 #include "raylab/sphere_geometry.h"
 
-#include "raylab/text.h"
+#include "src/text.h"
 
 #include <cmath>
 #include <stdexcept>

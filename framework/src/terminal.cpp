@@ -1,4 +1,4 @@
-#include "raylab/terminal.h"
+#include "src/terminal.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include "raylab/text.h"
+#include "src/text.h"
 
 #include <sstream>
 

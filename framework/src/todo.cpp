@@ -1,6 +1,6 @@
 #include "raylab/todo.h"
 
-#include "raylab/messages.h"
+#include "src/messages.h"
 
 namespace raylab {
 

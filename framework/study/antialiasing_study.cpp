@@ -3,8 +3,8 @@
 #include "culled_render.h"
 #include "svg_plot.h"
 
-#include "raylab/atomic_file.h"
-#include "raylab/figure.h"
+#include "src/atomic_file.h"
+#include "src/figure.h"
 
 #include <algorithm>
 #include <cmath>

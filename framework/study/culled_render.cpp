@@ -1,7 +1,7 @@
 #include "culled_render.h"
 
-#include "raylab/figure.h"
-#include "raylab/parallel.h"
+#include "src/figure.h"
+#include "src/parallel.h"
 #include "raylab/renderer.h"
 #include "raylab/sampler.h"
 

@@ -5,7 +5,7 @@
 // Only for the reference solutions' renders (the studies' references): a student's intersect that
 // draws a sphere larger than it is would be hidden where its true bounds are culled.
 
-#include "raylab/scene_file.h"
+#include "src/scene_file.h"
 #include "raylab/texture.h"
 
 namespace raylab::study {

@@ -4,7 +4,7 @@
 #include "sphere_formulas.h"
 
 #include "raylab/random.h"
-#include "raylab/render_space.h"
+#include "src/render_space.h"
 #include "raylab/sphere_geometry.h"
 #include "raylab/todo.h"
 

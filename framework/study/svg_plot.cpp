@@ -1,6 +1,6 @@
 #include "svg_plot.h"
 
-#include "raylab/markup.h"
+#include "src/markup.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "table.h"
 
-#include "raylab/atomic_file.h"
-#include "raylab/csv.h"
+#include "src/atomic_file.h"
+#include "src/csv.h"
 
 #include <cmath>
 #include <cstdio>

@@ -4,7 +4,7 @@
 // framework in between. raylab renders the same image; its time over the yardstick's is what the
 // framework costs per ray.
 
-#include "raylab/scene_file.h"
+#include "src/scene_file.h"
 
 #include <vector>
 

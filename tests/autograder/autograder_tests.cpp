@@ -4,8 +4,8 @@
 // each results.json checked against Gradescope's format and against `raylab grade` on the same code;
 // GitHub Classroom's workflow parsed, its item steps' commands run in the built tree.
 #include "support/files.h"
-#include "grader/autograder.h"
-#include "grader/report.h"
+#include "grader/course/autograder.h"
+#include "grader/course/grade_reports.h"
 #include "grading_support.h"
 
 #include <nlohmann/json.hpp>

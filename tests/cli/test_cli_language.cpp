@@ -1,6 +1,6 @@
 // The command line speaks the reader's language: `raylab --help`, the student commands' help and the
 // argument errors, CLI11's own included, are French with --lang fr and hold none of the English sentences.
-#include "raylab/messages.h"
+#include "src/messages.h"
 #include "support/run_program.h"
 
 #include <doctest/doctest.h>

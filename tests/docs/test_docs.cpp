@@ -4,7 +4,7 @@
 
 #include "grader/lab_catalog.h"
 
-#include "raylab/contact_sheet.h"
+#include "src/contact_sheet.h"
 
 #include <doctest/doctest.h>
 

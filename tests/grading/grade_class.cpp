@@ -2,7 +2,7 @@
 // for the labs that do not build, with the compiler's message.
 #include "support/files.h"
 #include "grading_support.h"
-#include "grader/process.h"
+#include "grader/sandbox/process.h"
 #include "support/read_csv.h"
 #include "support/run_program.h"
 

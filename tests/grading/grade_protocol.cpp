@@ -3,8 +3,8 @@
 // render earn nothing.
 #include "grading_support.h"
 
-#include "grader/checks/checks.h"
-#include "grader/protocol.h"
+#include "grader/judge/checks/checks.h"
+#include "grader/protocol/protocol.h"
 
 #include <chrono>
 #include <cmath>

@@ -2,7 +2,7 @@
 // solutions make; the stubs get zero and are told which function to write.
 #include "grading_support.h"
 
-#include "grader/checks/checks.h"
+#include "grader/judge/checks/checks.h"
 
 #include <cmath>
 #include <set>

@@ -2,7 +2,7 @@
 // Helpers of the grader's end-to-end tests: the course's references and labs, and grading an
 // agent built by tests/grading/CMakeLists.txt.
 
-#include "grader/grade.h"
+#include "grader/judge/grade.h"
 
 #include <doctest/doctest.h>
 

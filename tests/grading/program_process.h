@@ -3,7 +3,7 @@
 // with an argument vector in a process group of its own, its output in a file, waited for later.
 // POSIX only.
 
-#include "grader/process.h"
+#include "grader/sandbox/process.h"
 
 #include <doctest/doctest.h>
 

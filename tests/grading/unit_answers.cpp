@@ -1,6 +1,6 @@
 // The parent reads each run's answers: one per item, in order, after a hello; everything else is a
 // protocol violation that fails an item with its reason, and a NaN is a value, not a violation.
-#include "grader/answers.h"
+#include "grader/judge/answers.h"
 
 #include <doctest/doctest.h>
 

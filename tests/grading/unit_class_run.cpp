@@ -1,7 +1,7 @@
 // The class ledger's pieces: a safe folder name for any student name, one to one; CSV cells that a
 // real CSV reader reads back as they were; the problems cell, short and whole characters.
-#include "grader/class_run.h"
-#include "raylab/csv.h"
+#include "grader/course/class_run.h"
+#include "src/csv.h"
 #include "support/read_csv.h"
 
 #include <doctest/doctest.h>

@@ -1,7 +1,7 @@
 // The image checks' policy (docs/grading.md) on small synthetic images.
-#include "grader/compare.h"
-#include "grader/diagnosis.h"
-#include "raylab/messages.h"
+#include "grader/judge/compare.h"
+#include "grader/judge/diagnosis.h"
+#include "src/messages.h"
 
 #include <doctest/doctest.h>
 

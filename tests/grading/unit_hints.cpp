@@ -1,6 +1,6 @@
 // A check's hint names the cause its outputs show, never one the code does not have: lab 1's
 // checks judged on made-up gradients (no agent runs).
-#include "grader/checks/checks.h"
+#include "grader/judge/checks/checks.h"
 
 #include <doctest/doctest.h>
 #include <glm/geometric.hpp>

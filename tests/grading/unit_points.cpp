@@ -1,9 +1,9 @@
 // The labs' descriptions (labs/<lab>/lab.toml): the instructor's files, read strictly, and the
 // course's own, which agree with the references.
 #include "grader/lab_catalog.h"
-#include "grader/references.h"
+#include "grader/judge/references.h"
 
-#include "raylab/scene_file.h"
+#include "src/scene_file.h"
 
 #include <doctest/doctest.h>
 

@@ -1,6 +1,6 @@
 // runProcess: an argument vector, never a shell, so an argument reaches the program as it is; a
 // program past its time limit is killed rather than waited for. POSIX programs (printf, sleep).
-#include "grader/process.h"
+#include "grader/sandbox/process.h"
 
 #include <doctest/doctest.h>
 

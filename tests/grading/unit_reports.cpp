@@ -1,6 +1,6 @@
 // The reports say the same as the grade: Gradescope's JSON, JUnit XML and the HTML page.
 #include "support/files.h"
-#include "grader/report.h"
+#include "grader/course/grade_reports.h"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 // (a fake student trying each) no signal to the grader, no process left behind, no network, no
 // file outside its scratch folder. Each test runs with bubblewrap and without it (the process-group
 // sandbox), except those only bubblewrap promises, which say so when it is missing.
-#include "grader/sandbox.h"
+#include "grader/sandbox/sandbox.h"
 
 #include <doctest/doctest.h>
 

@@ -3,7 +3,7 @@
 // and very wide images stay exact.
 #include "numerics_support.h"
 
-#include "raylab/figure.h"
+#include "src/figure.h"
 #include "raylab/gradient.h"
 #include "raylab/image_io.h"
 #include "raylab/perspective_camera.h"

@@ -2,7 +2,7 @@
 // area matches the analytic one within 0.5%; the textbook formula fills the whole image.
 #include "numerics_support.h"
 
-#include "raylab/figure.h"
+#include "src/figure.h"
 #include "raylab/image_io.h"
 #include "raylab/perspective_camera.h"
 

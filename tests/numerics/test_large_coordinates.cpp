@@ -2,7 +2,7 @@
 // at the origin, because raylab renders around a floating origin; the world-space normal is the foil.
 #include "numerics_support.h"
 
-#include "raylab/figure.h"
+#include "src/figure.h"
 #include "raylab/image_io.h"
 
 #include <doctest/doctest.h>

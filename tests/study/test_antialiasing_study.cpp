@@ -2,7 +2,7 @@
 #include "antialiasing_study.h"
 #include "culled_render.h"
 
-#include "raylab/figure.h"
+#include "src/figure.h"
 
 #include <doctest/doctest.h>
 

@@ -2,7 +2,7 @@
 // that the bench compares the same work (docs/performance.md).
 #include "yardstick.h"
 
-#include "raylab/figure.h"
+#include "src/figure.h"
 
 #include <doctest/doctest.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Helpers for tests that render the course's figures.
 
-#include "raylab/figure.h"
+#include "src/figure.h"
 #include "raylab/image_io.h"
 
 #include <doctest/doctest.h>

@@ -2,7 +2,7 @@
 // Tests run the raylab tool and agents as a user would, with an argument vector (never a shell,
 // so a path with spaces or quotes is one argument).
 
-#include "grader/process.h"
+#include "grader/sandbox/process.h"
 #include "support/files.h"
 
 #include <filesystem>

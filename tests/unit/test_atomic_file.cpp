@@ -1,7 +1,7 @@
 // Files written whole or not at all (raylab/atomic_file.h): a failed write names the file and the
 // reason, leaves the old file as it was and no temporary file behind.
 #include "support/files.h"
-#include "raylab/atomic_file.h"
+#include "src/atomic_file.h"
 
 #include <doctest/doctest.h>
 

@@ -5,7 +5,7 @@
 // picture updates the table (and `raylab references`) in the same commit.
 #include "support/figures.h"
 
-#include "grader/reference_render.h"
+#include "grader/judge/reference_render.h"
 
 #include <doctest/doctest.h>
 

@@ -1,7 +1,7 @@
 // The reference figures show what the table of figures says (README, docs/conventions.md).
 #include "support/figures.h"
 
-#include "raylab/parallel.h"
+#include "src/parallel.h"
 
 #include <doctest/doctest.h>
 

@@ -1,9 +1,9 @@
 // The message catalogues (framework/messages/en.toml, fr.toml): the same ids and placeholders in
 // both languages, French typography, numbers written each language's way, the language chosen from
 // the environment.
-#include "grader/checks/checks.h"
+#include "grader/judge/checks/checks.h"
 #include "grader/lab_catalog.h"
-#include "raylab/messages.h"
+#include "src/messages.h"
 #include "raylab/todo.h"
 
 #include <doctest/doctest.h>

@@ -1,4 +1,4 @@
-#include "raylab/scene_file.h"
+#include "src/scene_file.h"
 
 #include <doctest/doctest.h>
 

@@ -1,0 +1,452 @@
+#include "grader/course/class_run.h"
+
+#include "src/atomic_file.h"
+#include "src/csv.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+#if defined(__unix__) || defined(__APPLE__)
+#define RAYLAB_POSIX_CLASS_RUN 1
+#include <cerrno>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
+
+namespace raylab::grader {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kResultFile = "result.json";
+constexpr const char* kLockFile = "grade-class.lock";
+constexpr std::size_t kLongestSafeName = 160; // file names stop at 255 bytes
+
+fs::path studentsFolder(const fs::path& out) { return out / "students"; }
+
+// ---- the ledger: a result per student, grades.csv made from them --------------------------------
+
+std::string recordJson(const StudentRecord& record) {
+    nlohmann::json cells = nlohmann::json::array();
+    for (const auto& [column, value] : record.cells) cells.push_back({{"column", column}, {"value", value}});
+    const nlohmann::json root{{"student", record.student}, {"cells", cells}};
+    // A name that is not UTF-8 is kept in the folder's safe name; here it reads with U+FFFD.
+    return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+std::optional<StudentRecord> readRecord(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return std::nullopt;
+    try {
+        const nlohmann::json root = nlohmann::json::parse(in);
+        StudentRecord record{root.at("student").get<std::string>(), {}};
+        for (const nlohmann::json& cell : root.at("cells"))
+            record.cells.emplace_back(cell.at("column").get<std::string>(), cell.at("value").get<std::string>());
+        return record;
+    } catch (const nlohmann::json::exception&) {
+        return std::nullopt; // never half-written (atomic), so only a hand-edited file: graded again
+    }
+}
+
+// The results in OUT, by safe name.
+std::map<std::string, StudentRecord> readLedger(const fs::path& out) {
+    std::map<std::string, StudentRecord> ledger;
+    std::error_code error;
+    for (auto it = fs::directory_iterator(studentsFolder(out), error); !error && it != fs::directory_iterator();
+         it.increment(error))
+        if (auto record = readRecord(it->path() / kResultFile)) ledger[it->path().filename().string()] = std::move(*record);
+    return ledger;
+}
+
+// grades.csv, whole: a row per result, by name; the columns in the order the results give them.
+void writeGrades(const fs::path& out, const std::map<std::string, StudentRecord>& ledger) {
+    std::vector<const StudentRecord*> rows;
+    std::vector<std::string> columns;
+    for (const auto& [safe, record] : ledger) {
+        rows.push_back(&record);
+        for (const auto& cell : record.cells)
+            if (std::find(columns.begin(), columns.end(), cell.first) == columns.end()) columns.push_back(cell.first);
+    }
+    std::sort(rows.begin(), rows.end(), [](const auto* a, const auto* b) { return a->student < b->student; });
+    std::vector<std::string> header{"student"};
+    header.insert(header.end(), columns.begin(), columns.end());
+    std::string csv = csvLine(header);
+    for (const StudentRecord* record : rows) {
+        std::vector<std::string> line{record->student};
+        for (const std::string& column : columns) {
+            const auto cell = std::find_if(record->cells.begin(), record->cells.end(),
+                                           [&](const auto& c) { return c.first == column; });
+            line.push_back(cell != record->cells.end() ? cell->second : "");
+        }
+        csv += csvLine(line);
+    }
+    writeFileAtomically(out / "grades.csv", csv);
+}
+
+// ---- the class folder ---------------------------------------------------------------------------
+
+struct ClassEntries {
+    std::vector<StudentWork> students; // by name
+    std::vector<std::string> skipped;  // a line each: what was left out and why
+};
+
+ClassEntries listClass(const fs::path& classFolder, const fs::path& out) {
+    ClassEntries entries;
+    std::error_code error;
+    const fs::path outCanonical = fs::weakly_canonical(out, error);
+    auto it = fs::directory_iterator(classFolder, error);
+    if (error) throw std::runtime_error("cannot read the class folder " + classFolder.string() + ": " + error.message());
+    for (; !error && it != fs::directory_iterator(); it.increment(error)) {
+        const fs::path path = it->path();
+        const std::string name = path.filename().string();
+        const std::string shown = "skipped '" + printableName(name) + "': ";
+        std::error_code entryError;
+        const fs::file_status status = fs::symlink_status(path, entryError);
+        if (fs::is_symlink(status)) {
+            entries.skipped.push_back(shown + "a symbolic link (a submission is a folder of its own)");
+        } else if (!fs::is_directory(status)) {
+            entries.skipped.push_back(shown + "not a folder");
+        } else if (fs::weakly_canonical(path, entryError) == outCanonical) {
+            continue; // --out inside the class folder
+        } else if (const bool empty = fs::is_empty(path, entryError); entryError) {
+            entries.skipped.push_back(shown + "cannot be read (" + entryError.message() + ")");
+        } else if (empty) {
+            entries.skipped.push_back(shown + "an empty folder");
+        } else {
+            entries.students.push_back({name, path, studentsFolder(out) / safeStudentName(name)});
+        }
+    }
+    if (error) throw std::runtime_error("cannot read the class folder " + classFolder.string() + ": " + error.message());
+    std::sort(entries.students.begin(), entries.students.end(),
+              [](const StudentWork& a, const StudentWork& b) { return a.name < b.name; });
+    return entries;
+}
+
+// ---- stopping: SIGINT and SIGTERM only set a flag; the run stops the student's process itself ----
+
+volatile std::sig_atomic_t g_stopSignal = 0;
+
+extern "C" void onStopSignal(int signal) { g_stopSignal = signal; }
+
+class StopSignals {
+public:
+    StopSignals() {
+        g_stopSignal = 0;
+#ifdef RAYLAB_POSIX_CLASS_RUN
+        struct sigaction action {};
+        action.sa_handler = onStopSignal;
+        sigemptyset(&action.sa_mask);
+        action.sa_flags = 0; // no SA_RESTART: a wait for the lock returns at once
+        sigaction(SIGINT, &action, &m_previousInt);
+        sigaction(SIGTERM, &action, &m_previousTerm);
+#else
+        m_previousInt = std::signal(SIGINT, onStopSignal);
+        m_previousTerm = std::signal(SIGTERM, onStopSignal);
+#endif
+    }
+    ~StopSignals() {
+#ifdef RAYLAB_POSIX_CLASS_RUN
+        sigaction(SIGINT, &m_previousInt, nullptr);
+        sigaction(SIGTERM, &m_previousTerm, nullptr);
+#else
+        std::signal(SIGINT, m_previousInt);
+        std::signal(SIGTERM, m_previousTerm);
+#endif
+    }
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+
+private:
+#ifdef RAYLAB_POSIX_CLASS_RUN
+    struct sigaction m_previousInt {}, m_previousTerm {};
+#else
+    void (*m_previousInt)(int) = nullptr;
+    void (*m_previousTerm)(int) = nullptr;
+#endif
+};
+
+// ---- one run per OUT ----------------------------------------------------------------------------
+
+#ifdef RAYLAB_POSIX_CLASS_RUN
+
+// flock: the kernel releases it when its holder dies, so a lock left by a dead run is simply taken.
+class RunLock {
+public:
+    // Takes OUT's lock, or says in `problem` who holds it.
+    bool acquire(const fs::path& out, bool wait, std::string& problem) {
+        const fs::path file = out / kLockFile;
+        m_fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (m_fd < 0) {
+            problem = "cannot open the lock " + file.string() + ": " + std::strerror(errno);
+            return false;
+        }
+        if (::flock(m_fd, LOCK_EX | LOCK_NB) != 0) {
+            if (errno != EWOULDBLOCK) {
+                problem = "cannot take the lock " + file.string() + ": " + std::strerror(errno);
+                return false;
+            }
+            const std::string holder = "another grade-class run (" + holderPid() + ") is grading into " + out.string() +
+                                       " (lock: " + file.string() + ")";
+            if (!wait) {
+                problem = holder + "; wait for it to finish, or add --wait";
+                return false;
+            }
+            std::printf("waiting: %s ...\n", holder.c_str());
+            std::fflush(stdout);
+            while (::flock(m_fd, LOCK_EX) != 0)
+                if (errno != EINTR || g_stopSignal != 0) {
+                    problem = "stopped while waiting for the lock " + file.string();
+                    return false;
+                }
+        }
+        const std::string pid = std::to_string(getpid()) + "\n";
+        if (::ftruncate(m_fd, 0) != 0 || ::pwrite(m_fd, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
+            problem = "cannot write the lock " + file.string() + ": " + std::strerror(errno);
+            return false;
+        }
+        return true;
+    }
+    RunLock() = default;
+    ~RunLock() {
+        if (m_fd >= 0) ::close(m_fd); // releases the lock; the file stays, harmless, for the next run
+    }
+    RunLock(const RunLock&) = delete;
+    RunLock& operator=(const RunLock&) = delete;
+
+private:
+    std::string holderPid() const {
+        char text[32] = {};
+        const ssize_t n = ::pread(m_fd, text, sizeof text - 1, 0);
+        std::string pid(text, n > 0 ? std::size_t(n) : 0);
+        pid.erase(pid.find_last_not_of("\n ") + 1);
+        return pid.empty() ? "its pid not written yet" : "pid " + pid;
+    }
+    int m_fd = -1;
+};
+
+#else
+
+class RunLock { // elsewhere: no lock (one instructor's machine)
+public:
+    bool acquire(const fs::path&, bool, std::string&) { return true; }
+};
+
+#endif
+
+// ---- grading one student ------------------------------------------------------------------------
+
+enum class Outcome { Graded, Stopped, Failed };
+
+void gradeAndRecord(const StudentWork& work, const GradeStudent& grade) {
+    const StudentRecord record = grade(work);
+    writeFileAtomically(work.folder / kResultFile, recordJson(record)); // last: the grading finished
+}
+
+#ifdef RAYLAB_POSIX_CLASS_RUN
+
+std::string describeStatus(int status) {
+    if (WIFSIGNALED(status)) return "its grading process was killed by signal " + std::to_string(WTERMSIG(status));
+    return "its grading process exited with status " + std::to_string(WEXITSTATUS(status));
+}
+
+// The student is graded in a process of its own, in its own process group with every build tool
+// it starts (the agents die with it), so that a stop ends them all and a crash costs one student.
+Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, std::string& why) {
+    std::fflush(nullptr); // or the child would print our buffered lines again
+    const pid_t pid = fork();
+    if (pid < 0) {
+        why = std::string("cannot start a process: ") + std::strerror(errno);
+        return Outcome::Failed;
+    }
+    if (pid == 0) {
+        setpgid(0, 0);
+        std::signal(SIGINT, SIG_DFL);
+        std::signal(SIGTERM, SIG_DFL);
+        int status = 0;
+        try {
+            gradeAndRecord(work, grade);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "raylab: error: grading %s: %s\n", printableName(work.name).c_str(), e.what());
+            status = 1;
+        }
+        std::fflush(nullptr);
+        _exit(status);
+    }
+    setpgid(pid, pid); // also here, so the group exists before we may signal it
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point stoppedAt{};
+    int status = 0;
+    for (;;) {
+        const pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (done < 0 && errno != EINTR) {
+            why = std::string("lost its grading process: ") + std::strerror(errno);
+            return Outcome::Failed;
+        }
+        if (g_stopSignal != 0 && stoppedAt == Clock::time_point{}) {
+            stoppedAt = Clock::now();
+            kill(-pid, SIGTERM);
+        } else if (g_stopSignal != 0 && Clock::now() - stoppedAt > std::chrono::seconds(5)) {
+            kill(-pid, SIGKILL);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20)); // a signal cuts it short
+    }
+    if (stoppedAt != Clock::time_point{}) kill(-pid, SIGKILL); // whatever of its group is left
+    std::error_code error;
+    if (fs::exists(work.folder / kResultFile, error)) return Outcome::Graded; // written whole, even if stopped just after
+    if (g_stopSignal != 0) return Outcome::Stopped;
+    why = describeStatus(status);
+    return Outcome::Failed;
+}
+
+#else
+
+Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, std::string& why) {
+    try {
+        gradeAndRecord(work, grade);
+        return Outcome::Graded;
+    } catch (const std::exception& e) {
+        why = e.what();
+        return g_stopSignal != 0 ? Outcome::Stopped : Outcome::Failed;
+    }
+}
+
+#endif
+
+const char* signalName(int signal) { return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal"; }
+
+} // namespace
+
+std::string safeStudentName(const std::string& folderName) {
+    static constexpr char kHex[] = "0123456789ABCDEF";
+    std::string safe;
+    for (std::size_t k = 0; k < folderName.size(); ++k) {
+        const unsigned char c = static_cast<unsigned char>(folderName[k]);
+        const bool kept = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+                          (k > 0 && (c == '-' || c == '.'));
+        if (kept) {
+            safe += char(c);
+        } else {
+            safe += '%';
+            safe += kHex[c >> 4];
+            safe += kHex[c & 15];
+        }
+    }
+    if (safe.size() <= kLongestSafeName) return safe;
+    std::uint64_t hash = 14695981039346656037ull; // FNV-1a
+    for (char c : folderName) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    std::string cut = safe.substr(0, kLongestSafeName - 17) + "~"; // '~' is never kept: no plain name ends so
+    for (int shift = 60; shift >= 0; shift -= 4) cut += kHex[(hash >> shift) & 15];
+    return cut;
+}
+
+std::string printableName(const std::string& folderName) {
+    std::string shown;
+    for (char ch : folderName) {
+        const unsigned char c = static_cast<unsigned char>(ch);
+        if (c == '\n') shown += "\\n";
+        else if (c == '\t') shown += "\\t";
+        else if (c < 0x20 || c == 0x7f) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02X", c);
+            shown += hex;
+        } else shown += ch;
+    }
+    return shown;
+}
+
+int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
+    const fs::path& out = options.out;
+    fs::create_directories(studentsFolder(out));
+    const StopSignals stopSignals; // before the lock: a wait for it can be interrupted
+    RunLock lock;
+    std::string problem;
+    if (!lock.acquire(out, options.wait, problem)) {
+        if (g_stopSignal != 0) return 128 + g_stopSignal;
+        std::fprintf(stderr, "raylab: error: %s\n", problem.c_str());
+        return 1;
+    }
+    std::map<std::string, StudentRecord> ledger = readLedger(out);
+    writeGrades(out, ledger); // the CSV of every finished student, even if a last run stopped before it
+    const ClassEntries entries = listClass(options.classFolder, out);
+    for (const std::string& line : entries.skipped) std::printf("%s\n", line.c_str());
+    std::vector<std::string> unfinished;
+    for (const StudentWork& work : entries.students) {
+        if (g_stopSignal != 0) break;
+        const std::string shown = printableName(work.name);
+        const std::string safe = work.folder.filename().string();
+        if (ledger.count(safe)) {
+            std::printf("%-20s already graded (%s)\n", shown.c_str(), (work.folder / kResultFile).string().c_str());
+            continue;
+        }
+        fs::create_directories(work.folder);
+        std::string why;
+        const Outcome outcome = gradeInOwnProcess(work, grade, why);
+        if (outcome == Outcome::Stopped) {
+            std::printf("%-20s interrupted: not graded (the next run grades them)\n", shown.c_str());
+            break;
+        }
+        std::optional<StudentRecord> record;
+        if (outcome == Outcome::Graded) record = readRecord(work.folder / kResultFile);
+        if (!record) {
+            std::printf("%-20s not graded: %s\n", shown.c_str(), why.empty() ? "no result was written" : why.c_str());
+            unfinished.push_back(shown);
+            continue;
+        }
+        ledger[safe] = std::move(*record);
+        writeGrades(out, ledger);
+        std::fflush(stdout);
+    }
+    std::fflush(stdout);
+    if (g_stopSignal != 0) {
+        std::printf("stopped by %s; %s holds every student graded so far: run the same command again to resume\n",
+                    signalName(g_stopSignal), (out / "grades.csv").string().c_str());
+        std::fflush(stdout);
+        return 128 + g_stopSignal;
+    }
+    std::printf("grades: %s, reports: %s/<student>/report/index.html\n", (out / "grades.csv").string().c_str(),
+                studentsFolder(out).string().c_str());
+    if (!unfinished.empty()) {
+        std::string names;
+        for (const std::string& n : unfinished) names += (names.empty() ? "" : ", ") + n;
+        std::printf("not graded (run again to retry): %s\n", names.c_str());
+        return 1;
+    }
+    return 0;
+}
+
+std::string problemSummary(const std::string& problem) {
+    constexpr int kLines = 4;
+    constexpr std::size_t kWidth = 200;
+    std::istringstream lines(problem);
+    std::string summary;
+    int count = 0;
+    for (std::string line; count < kLines && std::getline(lines, line);) {
+        if (line.empty()) continue;
+        if (line.size() > kWidth) {
+            const std::size_t space = line.rfind(' ', kWidth);
+            std::size_t cut = space == std::string::npos || space < kWidth / 2 ? kWidth : space;
+            while (cut > 0 && (static_cast<unsigned char>(line[cut]) & 0xC0) == 0x80) --cut; // not inside a UTF-8 character
+            line = line.substr(0, cut) + " …";
+        }
+        summary += (count++ ? "\n" : "") + line;
+    }
+    return summary;
+}
+
+} // namespace raylab::grader

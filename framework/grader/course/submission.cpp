@@ -1,0 +1,166 @@
+#include "grader/course/submission.h"
+
+#include "grader/sandbox/process.h"
+#include "src/messages.h"
+
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+namespace raylab::grader {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// What a CMake cache value or list item cannot hold as it is.
+constexpr const char* kCmakeUnsafe = "\n\r;\"\\$#[]";
+
+fs::path agentFile(const fs::path& binDir, const std::string& name) {
+#ifdef _WIN32
+    return binDir / (name + ".exe");
+#else
+    return binDir / name;
+#endif
+}
+
+// The submission's folder as CMake can hold it: a cache value cannot hold a newline, and `;` or a
+// quote would change its meaning, so an unusual name is reached through a link of a plain name.
+// The link's name is the folder's own (hashed): a build folder shared by a class must never take
+// one student's objects, built from the same paths, for another's.
+fs::path cmakeSafe(const fs::path& labs, const fs::path& buildDir) {
+    const std::string path = fs::absolute(labs).generic_string();
+    if (path.find_first_of(kCmakeUnsafe) == std::string::npos) return fs::absolute(labs);
+    std::ostringstream name;
+    name << "submission-" << std::hex << std::hash<std::string>{}(path);
+    const fs::path link = fs::absolute(buildDir) / name.str();
+    std::error_code ignored;
+    fs::remove(link, ignored);
+    fs::create_directory_symlink(fs::absolute(labs), link);
+    return link;
+}
+
+// The compiler launcher that runs each compiler through ccache, with paths rewritten relative to the
+// folder the sources and the build share: the students of a class build the same framework files in
+// folders of the same depth, so every student after the first compiles only their labs (about 12 s
+// rather than 90 on 2 cores). Empty when ccache is not there or the folder cannot be a CMake list item.
+std::string ccacheLauncher(const Toolchain& tools, const fs::path& sourceDir, const fs::path& buildDir) {
+    if (tools.ccache.empty()) return "";
+    const fs::path source = fs::absolute(sourceDir).lexically_normal(), build = fs::absolute(buildDir).lexically_normal();
+    fs::path shared;
+    for (auto s = source.begin(), b = build.begin(); s != source.end() && b != build.end() && *s == *b; ++s, ++b)
+        shared /= *s;
+    const std::string base = shared.generic_string();
+    if (base.find_first_of(kCmakeUnsafe) != std::string::npos) return "";
+    return tools.cmake + ";-E;env;CCACHE_BASEDIR=" + base + ";" + tools.ccache.generic_string();
+}
+
+// A refusal of raylab-build-guard (build_guard.cpp), in the reader's language; empty for another line.
+std::string guardRefusal(const std::string& line) {
+    const std::string prefix = "raylab-build-guard: ";
+    if (line.rfind(prefix, 0) != 0) return "";
+    const std::size_t colon = line.find(": ", prefix.size());
+    if (colon == std::string::npos) return line;
+    const std::string why = line.substr(prefix.size(), colon - prefix.size()), rest = line.substr(colon + 2);
+    const std::size_t arrow = rest.find(" <- ");
+    const std::string source = rest.substr(0, arrow), read = arrow == std::string::npos ? "" : rest.substr(arrow + 4);
+    if (why == "outside") return tr("build.guard_outside", {{"source", source}, {"file", read}});
+    if (why == "stopped") return tr("build.guard_stopped", {{"source", source}});
+    return tr("build.guard_unchecked", {{"source", source}});
+}
+
+// make's and ninja's own lines ("gmake[2]: *** [...] Error 1", "FAILED: ..."): they repeat the
+// compiler's errors without their cause.
+bool buildToolLine(const std::string& line) {
+    for (const char* tool : {"make", "gmake", "mingw32-make", "ninja: ", "FAILED: "})
+        if (line.rfind(tool, 0) == 0) return true;
+    return false;
+}
+
+// The lines that say what went wrong, not the whole log.
+std::string errorLines(const fs::path& log) {
+    std::ifstream in(log);
+    std::string all, errors;
+    int count = 0;
+    for (std::string line; std::getline(in, line);) {
+        if (const std::string refusal = guardRefusal(line); !refusal.empty()) line = "error: " + refusal;
+        all += line + "\n";
+        const bool error = !buildToolLine(line) && (line.find("error") != std::string::npos || line.find("Error") != std::string::npos ||
+                                                    line.find("out of memory") != std::string::npos); // cc1plus past the guard's limit
+        if (error && errors.find(line + "\n") == std::string::npos && count++ < 40) errors += line + "\n"; // once each
+    }
+    if (!errors.empty()) return errors;
+    if (all.size() > 3000) all.erase(0, all.size() - 3000).insert(0, "...");
+    return all;
+}
+
+// The agent of one lab, built with the other labs from the reference (framework/grader/CMakeLists.txt).
+fs::path labAgent(const fs::path& binDir, int lab) { return agentFile(binDir, "raylab-agent-lab" + std::to_string(lab)); }
+
+} // namespace
+
+std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>& labs, bool& isolated) {
+    std::vector<AgentPlan> agents;
+    std::error_code error;
+    isolated = !labs.empty() && fs::exists(labAgent(binDir, labs.front()), error);
+    if (isolated)
+        for (int lab : labs) agents.push_back({labAgent(binDir, lab), lab});
+    else if (fs::exists(agentFile(binDir, "raylab-agent"), error))
+        agents.push_back({agentFile(binDir, "raylab-agent"), 0});
+    return agents;
+}
+
+fs::path submissionLabsFolder(const fs::path& submission) {
+    std::error_code error;
+    return fs::is_directory(submission / "labs", error) ? submission / "labs" : submission;
+}
+
+SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDir, const fs::path& labs,
+                                const fs::path& buildDir, const std::vector<int>& numbers) {
+    SubmissionBuild b;
+    fs::create_directories(buildDir);
+    b.log = fs::absolute(buildDir / "build.log");
+    const fs::path bin = buildDir / "bin";
+    // A build folder serves a whole class: the last student's agents must not pass for these.
+    std::error_code error;
+    fs::remove(agentFile(bin, "raylab-agent"), error);
+    for (int lab : numbers) fs::remove(labAgent(bin, lab), error);
+    std::vector<std::string> configure{tools.cmake, "-S", fs::absolute(sourceDir).string(), "-B",
+                                       fs::absolute(buildDir).string(), "-DCMAKE_BUILD_TYPE=Release",
+                                       "-DBUILD_TESTING=OFF", "-DRAYLAB_SUBMISSION_DIR=" + cmakeSafe(labs, buildDir).generic_string(),
+                                       // Grading needs the same pictures, not their speed: links without
+                                       // link-time optimisation take a fraction of the time.
+                                       "-DRAYLAB_LTO=OFF"};
+    if (const std::string launcher = ccacheLauncher(tools, sourceDir, buildDir); !launcher.empty())
+        configure.push_back("-DCMAKE_CXX_COMPILER_LAUNCHER=" + launcher);
+    if (!tools.generator.empty() && !fs::exists(buildDir / "CMakeCache.txt", error))
+        configure.insert(configure.end(), {"-G", tools.generator});
+    std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--target", "raylab-agents", "-j", "2"};
+    if (tools.generator.find("Ninja") != std::string::npos) build.insert(build.end(), {"--", "-k", "0"});
+    else if (tools.generator.find("Makefiles") != std::string::npos) build.insert(build.end(), {"--", "-k"});
+    fs::remove(b.log, error);
+    const ProcessOptions toLog{{}, b.log};
+    const ProcessResult configured = runProcess(configure, toLog);
+    if (!configured.succeeded()) {
+        b.compilerMessage = configured.started ? errorLines(b.log) : configured.error;
+        b.brokenLabs = numbers;
+        return b;
+    }
+    const ProcessResult built = runProcess(build, toLog);
+    if (!built.succeeded()) b.compilerMessage = built.started ? errorLines(b.log) : built.error;
+    b.isolated = fs::is_directory(sourceDir / "solutions", error);
+    if (b.isolated) {
+        for (int lab : numbers) {
+            const fs::path program = labAgent(bin, lab);
+            if (fs::exists(program, error)) b.agents.push_back({program, lab});
+            else b.brokenLabs.push_back(lab);
+        }
+    } else if (fs::exists(agentFile(bin, "raylab-agent"), error)) {
+        b.agents.push_back({agentFile(bin, "raylab-agent"), 0});
+    } else {
+        b.brokenLabs = numbers;
+    }
+    return b;
+}
+
+} // namespace raylab::grader

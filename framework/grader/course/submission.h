@@ -1,0 +1,42 @@
+#pragma once
+// Room course/: submissions, class runs, the autograders and the grade reports; it may include every other room.
+//
+// Building a submission (a copy of labs/) into grading agents, with CMake, and finding the agents
+// of a build.
+
+#include "grader/judge/grade.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace raylab::grader {
+
+struct Toolchain {
+    std::string cmake = "cmake";
+    std::string generator; // empty: CMake's default
+    std::filesystem::path ccache; // empty: none; else each compiler runs through it
+};
+
+struct SubmissionBuild {
+    std::vector<AgentPlan> agents; // those that built
+    bool isolated = false;         // each lab's agent has the other labs from the reference
+    std::vector<int> brokenLabs;   // labs whose agent did not build
+    std::string compilerMessage;   // the error lines of the build log, when something did not build
+    std::filesystem::path log;
+};
+
+// The agents of a build folder's bin/: one for each of `labs` when solutions/ was there, else one
+// for all.
+std::vector<AgentPlan> findAgents(const std::filesystem::path& binDir, const std::vector<int>& labs, bool& isolated);
+
+// Configures (once) and builds the agents of the submission's folder `labs` in `buildDir`, keeping
+// going past errors so that the labs that compile are still graded. `numbers`: the course's labs.
+SubmissionBuild buildSubmission(const Toolchain& tools, const std::filesystem::path& sourceDir,
+                                const std::filesystem::path& labs, const std::filesystem::path& buildDir,
+                                const std::vector<int>& numbers);
+
+// A submission folder holds the lab folders directly or in a labs/ subfolder.
+std::filesystem::path submissionLabsFolder(const std::filesystem::path& submission);
+
+} // namespace raylab::grader

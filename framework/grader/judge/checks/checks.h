@@ -1,0 +1,80 @@
+#pragma once
+// The function checks, judged by the parent: each check draws its inputs (fixed hard cases, and
+// cases drawn at grading time the child cannot predict), has the child call the student's
+// functions on them through probes (protocol.h), and decides from the raw outputs, in double,
+// with a message that says what was expected, what came and a hint.
+
+#include "grader/protocol/protocol.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace raylab::grader {
+
+// Collects a check's failed expectations: "WHAT: expected E, got G. Hint: H", one a line.
+class Judge {
+public:
+    void fail(const std::string& what, const std::string& expected, const std::string& got, const std::string& hint);
+    bool expectNear(const std::string& what, double got, double expected, double tolerance, const std::string& hint);
+    bool expectNear(const std::string& what, const glm::dvec3& got, const glm::dvec3& expected, double tolerance,
+                    const std::string& hint);
+    bool expectTrue(const std::string& what, bool holds, const std::string& expected, const std::string& got,
+                    const std::string& hint);
+    bool passed() const { return m_failures.empty(); }
+    std::string message() const;
+
+private:
+    std::vector<std::string> m_failures;
+};
+
+// Each component of a within `tolerance` of b's.
+bool withinEach(const glm::dvec3& a, const glm::dvec3& b, double tolerance);
+
+std::string show(double v);
+std::string show(const glm::dvec3& v);
+
+// The outputs of one call, read in order.
+using Outputs = protocol::NumberReader;
+
+struct FunctionCheck {
+    int lab = 0;
+    std::string name;
+    std::vector<protocol::Call> calls;
+    // Judges the outputs of `calls` (one list a call, each of the size its probe gives).
+    std::function<void(const std::vector<std::vector<double>>& outputs, Judge& judge)> judge;
+};
+
+// Where the drawn cases come from: the parent's own generator, seeded where the child cannot see.
+class CaseRandom {
+public:
+    explicit CaseRandom(std::uint64_t seed) : m_engine(seed) {}
+    double uniform(double low, double high) { return std::uniform_real_distribution<double>(low, high)(m_engine); }
+    int integer(int low, int high) { return std::uniform_int_distribution<int>(low, high)(m_engine); }
+    glm::dvec3 vec3(double low, double high) { return {uniform(low, high), uniform(low, high), uniform(low, high)}; }
+    glm::dvec3 unitVector();
+    // A float-exact copy: the child receives floats, so the parent reasons on the same numbers.
+    static double asFloat(double v) { return double(float(v)); }
+    static glm::dvec3 asFloat(const glm::dvec3& v) { return {asFloat(v.x), asFloat(v.y), asFloat(v.z)}; }
+
+private:
+    std::mt19937_64 m_engine;
+};
+
+void addLab1Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
+void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
+void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
+void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
+void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
+
+// Every lab's checks in order, their drawn cases from `seed`.
+std::vector<FunctionCheck> functionChecks(std::uint64_t seed);
+
+// Inputs helpers: a call's inputs from numbers and vectors, in order.
+void appendInputs(std::vector<double>& inputs, const glm::dvec3& v);
+
+} // namespace raylab::grader

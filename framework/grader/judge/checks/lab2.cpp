@@ -1,0 +1,201 @@
+// Lab 2's function checks: the viewport and the primary rays of known cameras and of cameras
+// drawn at grading time. Every camera is built without lookAt (lab 4): lab 2 is graded on its own.
+#include "grader/judge/checks/checks.h"
+
+#include "src/messages.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <numbers>
+
+namespace raylab::grader {
+
+namespace {
+
+using protocol::Probe;
+
+struct Camera {
+    int width, height;
+    double fovy;
+    glm::dvec3 position{0.};
+    double viewportHeight() const { return 2. * std::tan(fovy / 2. * std::numbers::pi / 180.); }
+    double viewportWidth() const { return viewportHeight() * width / height; }
+    // The default frame: u = (-1, 0, 0), v = (0, 1, 0), looking along +z (docs/conventions.md).
+    glm::dvec3 topLeft() const { return position + glm::dvec3(viewportWidth() / 2., viewportHeight() / 2., 1.); }
+    glm::dvec3 direction(double sx, double sy) const { return direction(sx, sy, viewportHeight(), viewportWidth()); }
+    // Through a viewport of this height and width in front of the camera (the student's own, say).
+    static glm::dvec3 direction(double sx, double sy, double height, double width) {
+        return glm::normalize(glm::dvec3(width / 2., height / 2., 1.) + sx * width * glm::dvec3(-1., 0., 0.) -
+                              sy * height * glm::dvec3(0., 1., 0.));
+    }
+    protocol::Call viewport() const { return {Probe::Viewport, {double(width), double(height), fovy}}; }
+    protocol::Call ray(double sx, double sy) const {
+        return {Probe::GenerateRay, {double(width), double(height), fovy, position.x, position.y, position.z, sx, sy}};
+    }
+    std::string name() const {
+        return tr("what.lab2.camera", {{"width", std::to_string(width)}, {"height", std::to_string(height)}, {"fovy", show(fovy)}});
+    }
+};
+
+// Sizes and angles where a float viewport keeps the checks' 1e-5 (a viewport 10 units wide would not).
+Camera drawnCamera(CaseRandom& random) {
+    const int height = random.integer(100, 800);
+    return {int(height * random.uniform(0.5, 2.5)), height, CaseRandom::asFloat(random.uniform(20., 120.))};
+}
+
+void expectViewport(Judge& judge, const Camera& c, const std::vector<double>& out, bool named) {
+    Outputs o(out);
+    const std::string suffix = named ? " (" + c.name() + ")" : "";
+    const double height = o.number(), width = o.number();
+    judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}) + suffix, height, c.viewportHeight(), 1e-5,
+                     tr("hint.lab2.viewport_height"));
+    judge.expectNear(tr("what.lab2.viewport_width", {{"width", std::to_string(c.width)}, {"height", std::to_string(c.height)}}) +
+                         suffix,
+                     width, c.viewportWidth(), 1e-5,
+                     tr("hint.lab2.viewport_width", {{"aspect", show(double(c.width) / c.height)}}));
+    judge.expectNear(tr("what.lab2.top_left") + suffix, o.vec3(), c.topLeft(), 1e-5, tr("hint.lab2.top_left"));
+}
+
+struct Point {
+    double sx, sy;
+    std::string name;
+};
+
+// The viewport the student's updateViewport gave a camera's size and fovy.
+struct SeenViewport {
+    double height, width;
+    bool right; // as updateViewport's checks want it
+    SeenViewport(const Camera& c, const std::vector<double>& out) {
+        Outputs o(out);
+        height = o.number();
+        width = o.number();
+        right = std::abs(height - c.viewportHeight()) <= 1e-5 && std::abs(width - c.viewportWidth()) <= 1e-5;
+    }
+};
+
+// generateRay is judged on its own code: when the student's viewport is wrong (updateViewport's
+// checks fail and say why), the rays are expected through that viewport, and a failure's hint
+// says generateRay inherits the viewport's mistake rather than repeat its formula.
+void expectRays(Judge& judge, const Camera& c, const SeenViewport& viewport, const std::vector<Point>& points,
+                const std::vector<std::vector<double>>& out, std::size_t first,
+                const std::string& hint = tr("hint.lab2.ray_direction")) {
+    const std::string inherited =
+        tr("hint.lab2.inherited_viewport", {{"height", show(viewport.height)}, {"width", show(viewport.width)}});
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        Outputs o(out[first + k]);
+        const Point& p = points[k];
+        const std::string what = tr("what.lab2.ray_direction_at", {{"point", p.name}});
+        judge.expectNear(tr("what.lab2.ray_origin_at", {{"point", p.name}}), o.vec3(), c.position, 1e-6,
+                         tr("hint.lab2.ray_origin"));
+        if (viewport.right)
+            judge.expectNear(what, o.vec3(), c.direction(p.sx, p.sy), 1e-5, hint);
+        else
+            judge.expectNear(tr("what.lab2.through_viewport", {{"what", what}}), o.vec3(),
+                             Camera::direction(p.sx, p.sy, viewport.height, viewport.width), 1e-5, inherited);
+    }
+}
+
+} // namespace
+
+void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    const Camera handout{600, 400, 60.};
+    const Camera drawn = drawnCamera(random);
+    checks.push_back({2,
+                      "updateViewport: the viewport of the default camera",
+                      {handout.viewport(), drawn.viewport()},
+                      [handout, drawn](const auto& out, Judge& judge) {
+                          expectViewport(judge, handout, out[0], false);
+                          expectViewport(judge, drawn, out[1], true);
+                      }});
+
+    const Camera square{100, 100, 90.}, wide{100, 100, CaseRandom::asFloat(random.uniform(20., 120.))};
+    checks.push_back(
+        {2,
+         "updateViewport: fovy is in degrees and halved",
+         {square.viewport(), wide.viewport()},
+         [square, wide](const auto& out, Judge& judge) {
+             const std::string hint = tr("hint.lab2.fovy_degrees_halved");
+             for (const auto& [c, o] : {std::pair{square, out[0]}, std::pair{wide, out[1]}})
+                 judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}), o[0], c.viewportHeight(), 1e-5,
+                                  hint);
+         }});
+
+    std::vector<Point> corners{{0.5, 0.5, tr("what.lab2.centre", {{"sx", show(0.5)}, {"sy", show(0.5)}})},
+                               {0., 0., tr("what.lab2.top_left_corner")},
+                               {1., 0., tr("what.lab2.top_right_corner")},
+                               {0., 1., tr("what.lab2.bottom_left_corner")},
+                               {1., 1., tr("what.lab2.bottom_right_corner")}};
+    const std::size_t fixedCorners = corners.size();
+    const Camera other = drawnCamera(random);
+    std::vector<Point> drawnPoints;
+    for (int k = 0; k < 3; ++k) {
+        const double sx = CaseRandom::asFloat(random.uniform(0., 1.)), sy = CaseRandom::asFloat(random.uniform(0., 1.));
+        drawnPoints.push_back({sx, sy, tr("what.lab2.point_of_camera", {{"sx", show(sx)}, {"sy", show(sy)}, {"camera", other.name()}})});
+    }
+    std::vector<protocol::Call> calls;
+    for (const Point& p : corners)
+        calls.push_back(handout.ray(p.sx, p.sy));
+    for (const Point& p : drawnPoints)
+        calls.push_back(other.ray(p.sx, p.sy));
+    calls.push_back(handout.viewport());
+    calls.push_back(other.viewport());
+    checks.push_back({2, "generateRay: the centre and the four corners of the default camera", calls,
+                      [handout, other, corners, drawnPoints, fixedCorners](const auto& out, Judge& judge) {
+                          const std::size_t viewports = fixedCorners + drawnPoints.size();
+                          expectRays(judge, handout, SeenViewport(handout, out[viewports]), corners, out, 0);
+                          expectRays(judge, other, SeenViewport(other, out[viewports + 1]), drawnPoints, out,
+                                     fixedCorners);
+                      }});
+
+    const Camera unit{640, 480, 75.};
+    std::vector<std::pair<double, double>> screen;
+    for (double sx : {0., 0.3, 1.})
+        for (double sy : {0., 0.7, 1.})
+            screen.emplace_back(CaseRandom::asFloat(sx), CaseRandom::asFloat(sy));
+    for (int k = 0; k < 3; ++k)
+        screen.emplace_back(CaseRandom::asFloat(random.uniform(0., 1.)), CaseRandom::asFloat(random.uniform(0., 1.)));
+    calls.clear();
+    for (const auto& [sx, sy] : screen)
+        calls.push_back(unit.ray(sx, sy));
+    checks.push_back(
+        {2, "generateRay: directions are unit vectors", calls, [screen](const auto& out, Judge& judge) {
+             for (std::size_t k = 0; k < screen.size(); ++k) {
+                 Outputs o(out[k]);
+                 o.vec3();
+                 if (!judge.expectNear(
+                         tr("what.lab2.direction_length", {{"sx", show(screen[k].first)}, {"sy", show(screen[k].second)}}),
+                         glm::length(o.vec3()), 1., 1e-5, tr("hint.lab2.normalize")))
+                     return;
+             }
+         }});
+
+    const Camera away{300, 200, 60., {2., 3., -4.}};
+    Camera drawnAway = drawnCamera(random);
+    drawnAway.position = CaseRandom::asFloat(random.vec3(-5., 5.));
+    const double sx = CaseRandom::asFloat(random.uniform(0., 1.)), sy = CaseRandom::asFloat(random.uniform(0., 1.));
+    // The same rays from cameras at the origin: a direction as wrong there as here is not the
+    // position's fault, and the hint says so instead of blaming the position.
+    Camera awayAtOrigin = away, drawnAtOrigin = drawnAway;
+    awayAtOrigin.position = drawnAtOrigin.position = glm::dvec3(0.);
+    checks.push_back({2,
+                      "generateRay: a camera away from the origin starts its rays at its position",
+                      {away.ray(0., 0.), drawnAway.ray(sx, sy), away.viewport(), drawnAway.viewport(),
+                       awayAtOrigin.ray(0., 0.), drawnAtOrigin.ray(sx, sy)},
+                      [away, drawnAway, sx, sy](const auto& out, Judge& judge) {
+                          for (const auto& [c, o, viewport, atOrigin, x, y] :
+                               {std::tuple{away, out[0], out[2], out[4], 0., 0.},
+                                std::tuple{drawnAway, out[1], out[3], out[5], sx, sy}}) {
+                              Outputs here(o), there(atOrigin);
+                              here.vec3();
+                              there.vec3();
+                              const bool sameAsAtOrigin = withinEach(here.vec3(), there.vec3(), 1e-5);
+                              expectRays(judge, c, SeenViewport(c, viewport),
+                                         {{x, y, tr("what.lab2.away_point", {{"sx", show(x)}, {"sy", show(y)},
+                                                                             {"position", show(c.position)}})}},
+                                         {o}, 0, tr(sameAsAtOrigin ? "hint.lab2.away_as_at_origin" : "hint.lab2.away_direction"));
+                          }
+                      }});
+}
+
+} // namespace raylab::grader

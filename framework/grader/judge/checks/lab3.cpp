@@ -1,0 +1,448 @@
+// Lab 3's function checks: intersection distances of chosen rays (with the hard cases of
+// docs/numerics.md that are fair to ask), normals and shading; each also on cases drawn at
+// grading time.
+#include "grader/judge/checks/checks.h"
+
+#include "src/messages.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
+
+namespace raylab::grader {
+
+namespace {
+
+using protocol::Probe;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Sphere {
+    glm::dvec3 centre;
+    double radius;
+};
+struct Ray {
+    glm::dvec3 origin, direction;
+    glm::dvec3 at(double t) const { return origin + t * direction; }
+};
+
+const Sphere kSphere{{0., 0., 3.}, 1.};
+const Ray kAlongZ{{0., 0., 0.}, {0., 0., 1.}}; // from the origin towards kSphere
+
+// One intersect call and what it must give: a hit at t, or a miss (t < 0).
+struct Case {
+    std::string what;
+    Sphere sphere;
+    Ray ray;
+    double tMin = 0., tMax = kInf;
+    double t = -1.; // < 0: a miss
+    double tolerance = 1e-5;
+    std::string hint;
+};
+
+protocol::Call call(const Case& c) {
+    std::vector<double> in;
+    appendInputs(in, c.sphere.centre);
+    in.push_back(c.sphere.radius);
+    appendInputs(in, c.ray.origin);
+    appendInputs(in, c.ray.direction);
+    in.insert(in.end(), {c.tMin, c.tMax});
+    return {Probe::Intersect, in};
+}
+
+// The two roots of the ray's line on the sphere, in double (nullopt when it misses the line).
+std::optional<std::pair<double, double>> roots(const Sphere& s, const Ray& r) {
+    const glm::dvec3 oc = r.origin - s.centre;
+    const double a = glm::dot(r.direction, r.direction), b = glm::dot(oc, r.direction);
+    const double disc = b * b - a * (glm::dot(oc, oc) - s.radius * s.radius);
+    if (disc < 0.) return std::nullopt;
+    return std::pair{(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a};
+}
+
+
+bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
+    Outputs o(out);
+    const bool found = o.number() != 0.;
+    const double t = o.number();
+    const glm::dvec3 position = o.vec3();
+    if (c.t >= 0.) {
+        if (!found) {
+            judge.fail(c.what, tr("what.lab3.hit_at", {{"t", show(c.t)}}), tr("what.lab3.no_hit"), c.hint);
+            return false;
+        }
+        // The hint names the cause the outputs show: a far root where the near one was due is the root
+        // choice, whatever the check is about.
+        const auto line = roots(c.sphere, c.ray);
+        const bool farRoot = line && std::abs(c.t - line->second) > c.tolerance &&
+                             std::abs(t - line->second) <= c.tolerance && line->first >= c.tMin;
+        return judge.expectNear(c.what + ", t", t, c.t, c.tolerance, farRoot ? tr("hint.lab3.far_root") : c.hint) &&
+               judge.expectNear(c.what + ", hit.position", position, c.ray.at(c.t), c.tolerance * 2.,
+                                tr("hint.lab3.position"));
+    }
+    if (found)
+        judge.fail(c.what, tr("what.lab3.no_hit"), tr("what.lab3.hit_at", {{"t", show(t)}}), c.hint);
+    else if (t != -7.)
+        judge.fail(tr("what.lab3.hit_record", {{"case", c.what}}), tr("what.lab3.left_alone"),
+                   tr("what.lab3.t_changed", {{"t", show(t)}}), tr("hint.lab3.hit_record"));
+    return !found;
+}
+
+void addIntersect(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<Case> cases) {
+    std::vector<protocol::Call> calls;
+    for (const Case& c : cases)
+        calls.push_back(call(c));
+    checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
+                          for (std::size_t k = 0; k < cases.size(); ++k)
+                              judgeCase(judge, cases[k], out[k]);
+                      }});
+}
+
+// A far sphere's cases, judged after a near sphere confirms the root choice: the discriminant's
+// cancellation is blamed only when the near root is taken where it should be, and the hint says
+// what the near sphere showed otherwise.
+void addFarIntersect(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<Case> cases) {
+    const Case nearSphere{"", kSphere, kAlongZ, 0., kInf, 2., 1e-5, ""};
+    std::vector<protocol::Call> calls{call(nearSphere)};
+    for (const Case& c : cases)
+        calls.push_back(call(c));
+    checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
+                          Outputs near(out[0]);
+                          const bool found = near.number() != 0.;
+                          const double t = near.number();
+                          const bool rootChoiceRight = found && std::abs(t - 2.) <= 1e-5;
+                          for (std::size_t k = 0; k < cases.size(); ++k) {
+                              Case c = cases[k];
+                              if (!rootChoiceRight)
+                                  c.hint = tr("hint.lab3.near_first", {{"got", found ? "t = " + show(t) : tr("what.lab3.no_hit")}}) +
+                                           (found && std::abs(t - 4.) <= 1e-5 ? tr("hint.lab3.and_far_root") : "");
+                              judgeCase(judge, c, out[k + 1]);
+                          }
+                      }});
+}
+
+Sphere drawnSphere(CaseRandom& random) {
+    return {CaseRandom::asFloat(random.vec3(-5., 5.)), CaseRandom::asFloat(random.uniform(0.5, 2.))};
+}
+
+std::string describe(const Sphere& s) {
+    return tr("what.lab3.sphere", {{"centre", show(s.centre)}, {"radius", show(s.radius)}});
+}
+
+// The nearest t >= 0 of the ray on the sphere, in double; none on a miss.
+std::optional<double> nearestHit(const Sphere& s, const Ray& r) {
+    const glm::dvec3 oc = r.origin - s.centre;
+    const double a = glm::dot(r.direction, r.direction), b = glm::dot(oc, r.direction);
+    const double disc = b * b - a * (glm::dot(oc, oc) - s.radius * s.radius);
+    if (disc < 0.) return std::nullopt;
+    const double near = (-b - std::sqrt(disc)) / a, far = (-b + std::sqrt(disc)) / a;
+    if (near >= 0.) return near;
+    if (far >= 0.) return far;
+    return std::nullopt;
+}
+
+// A ray from outside a drawn sphere towards a point of its disc at `offset` radii from its centre line.
+Ray rayTowards(CaseRandom& random, const Sphere& s, double offset) {
+    const glm::dvec3 axis = random.unitVector();
+    glm::dvec3 side = glm::normalize(glm::cross(axis, random.unitVector()));
+    const glm::dvec3 origin = CaseRandom::asFloat(s.centre - axis * (s.radius * random.uniform(3., 8.)));
+    const glm::dvec3 aim = s.centre + side * (offset * s.radius);
+    return {origin, CaseRandom::asFloat(glm::normalize(aim - origin))};
+}
+
+// The Li call of a one-sphere scene.
+protocol::Call liCall(int shading, const Sphere& s, const glm::dvec3& colour, const glm::dvec3& background,
+                      const Ray& r) {
+    std::vector<double> in{double(shading)};
+    appendInputs(in, s.centre);
+    in.push_back(s.radius);
+    appendInputs(in, colour);
+    appendInputs(in, background);
+    appendInputs(in, r.origin);
+    appendInputs(in, r.direction);
+    return {Probe::Li, in};
+}
+
+enum Shading { kFlat = 0, kPlaceholder = 1, kCosine = 2 };
+
+const glm::dvec3 kBlue{0., 0., 1.}, kGrey{0.5, 0.5, 0.5};
+
+struct LiCase {
+    std::string what;
+    int shading;
+    Sphere sphere;
+    glm::dvec3 colour, background;
+    Ray ray;
+    double tolerance;
+    std::string hint;
+};
+
+// The colour Li must return, in double.
+glm::dvec3 expectedLi(const LiCase& c) {
+    const std::optional<double> t = nearestHit(c.sphere, c.ray);
+    if (!t) return c.background;
+    const glm::dvec3 d = glm::normalize(c.ray.direction);
+    if (c.shading == kFlat) return c.colour;
+    glm::dvec3 n =
+        c.shading == kCosine ? (c.ray.at(*t) - c.sphere.centre) / c.sphere.radius : glm::normalize(glm::dvec3(1.));
+    if (c.shading == kPlaceholder && glm::dot(d, n) > 0.) n = -n;
+    return c.colour * std::max(-glm::dot(d, n), 0.);
+}
+
+protocol::Call normalCall(const Sphere& s, const glm::dvec3& point) {
+    std::vector<double> in;
+    appendInputs(in, s.centre);
+    in.push_back(s.radius);
+    appendInputs(in, point);
+    return {Probe::ComputeNormal, in};
+}
+
+// Cosine shading reads the normal from the student's computeNormal: the check also asks that
+// function at the true hit, so that a Li right for a wrong normal is sent to computeNormal, not
+// told to fix its own formula.
+void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<LiCase> cases) {
+    std::vector<protocol::Call> calls;
+    for (const LiCase& c : cases)
+        calls.push_back(liCall(c.shading, c.sphere, c.colour, c.background, c.ray));
+    std::vector<std::size_t> normalAt(cases.size(), 0); // the normal call of a cosine hit, else 0
+    for (std::size_t k = 0; k < cases.size(); ++k)
+        if (const std::optional<double> t = nearestHit(cases[k].sphere, cases[k].ray); t && cases[k].shading == kCosine) {
+            normalAt[k] = calls.size();
+            calls.push_back(normalCall(cases[k].sphere, CaseRandom::asFloat(cases[k].ray.at(*t))));
+        }
+    checks.push_back({3, name, calls, [cases, normalAt](const auto& out, Judge& judge) {
+                          for (std::size_t k = 0; k < cases.size(); ++k) {
+                              const LiCase& c = cases[k];
+                              const glm::dvec3 got = Outputs(out[k]).vec3();
+                              std::string hint = c.hint;
+                              if (normalAt[k] != 0) {
+                                  const glm::dvec3 n = Outputs(out[normalAt[k]]).vec3(),
+                                                   d = glm::normalize(c.ray.direction);
+                                  const glm::dvec3 forTheirNormal = c.colour * std::max(-glm::dot(d, n), 0.);
+                                  if (withinEach(got, forTheirNormal, c.tolerance)) hint = tr("hint.lab3.cosine_own_normal");
+                              }
+                              judge.expectNear(c.what, got, expectedLi(c), c.tolerance, hint);
+                          }
+                      }});
+}
+
+void addIntersectChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    {
+        const std::string hint = tr("hint.lab3.quadratic");
+        const Sphere s = drawnSphere(random);
+        const Ray r = rayTowards(random, s, 0.);
+        addIntersect(checks, "intersect: a ray through the centre hits the near side",
+                     {{tr("what.lab3.origin_along_z"), kSphere, kAlongZ, 0., kInf, 2., 1e-5, hint},
+                      {tr("what.lab3.towards_centre", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf,
+                       *nearestHit(s, r), 1e-4, hint}});
+    }
+    {
+        const std::string hint = tr("hint.lab3.miss");
+        const Sphere s = drawnSphere(random);
+        const Ray r = rayTowards(random, s, random.uniform(1.1, 3.));
+        addIntersect(
+            checks, "intersect: a ray beside the sphere misses",
+            {{tr("what.lab3.beside_fixed"), kSphere, {{2., 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
+             {tr("what.lab3.beside", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf, -1., 0., hint}});
+    }
+    {
+        // Integer coordinates: the tangent's discriminant is exactly 0 in float too.
+        const std::string hint = tr("hint.lab3.tangent");
+        const Sphere s{{double(random.integer(-5, 5)), double(random.integer(-5, 5)), double(random.integer(-5, 5))},
+                       double(random.integer(1, 3))};
+        const double k = random.integer(int(s.radius) + 1, 10);
+        const Ray r{s.centre + glm::dvec3(s.radius, 0., -k), {0., 0., 1.}};
+        addIntersect(checks, "intersect: a tangent ray touches the sphere",
+                     {{tr("what.lab3.tangent_fixed"),
+                       kSphere,
+                       {{1., 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       3.,
+                       1e-4,
+                       hint},
+                      {tr("what.lab3.tangent", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf, k,
+                       1e-4, hint}});
+    }
+    {
+        const std::string hint = tr("hint.lab3.inside");
+        const Sphere s = drawnSphere(random);
+        const Ray r{s.centre, CaseRandom::asFloat(random.unitVector())};
+        addIntersect(checks, "intersect: from inside the sphere the far root is the hit",
+                     {{tr("what.lab3.inside_fixed"),
+                       kSphere,
+                       {{0., 0., 3.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       1.,
+                       1e-5,
+                       hint},
+                      {tr("what.lab3.inside", {{"sphere", describe(s)}, {"direction", show(r.direction)}}), s, r, 0., kInf,
+                       *nearestHit(s, r), 1e-5, hint}});
+    }
+    {
+        const std::string hint = tr("hint.lab3.behind");
+        const Sphere s = drawnSphere(random);
+        const glm::dvec3 d = CaseRandom::asFloat(random.unitVector());
+        const Ray r{CaseRandom::asFloat(s.centre + d * (s.radius * random.uniform(1.5, 5.))), d};
+        addIntersect(checks, "intersect: a sphere behind the ray is not hit",
+                     {{tr("what.lab3.behind_fixed"),
+                       kSphere,
+                       {{0., 0., 5.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       -1.,
+                       0.,
+                       hint},
+                      {tr("what.lab3.behind", {{"origin", show(r.origin)}, {"direction", show(d)}, {"sphere", describe(s)}}), s, r,
+                       0., kInf, -1., 0., hint}});
+    }
+    addIntersect(
+        checks, "intersect: tMin and tMax bound the hit",
+        {{tr("what.lab3.t_max", {{"t", show(1.5)}}), kSphere, kAlongZ, 0., 1.5, -1., 0., tr("hint.lab3.t_max")},
+         {tr("what.lab3.t_min", {{"t", show(2.5)}}), kSphere, kAlongZ, 2.5, kInf, 4., 1e-5, tr("hint.lab3.t_min")}});
+    {
+        const std::string hint = tr("hint.lab3.not_unit");
+        const double scale = CaseRandom::asFloat(random.uniform(0.3, 5.));
+        addIntersect(
+            checks, "intersect: a direction that is not unit length",
+            {{tr("what.lab3.origin_along", {{"direction", show(glm::dvec3(0., 0., 2.))}}), kSphere, {{0., 0., 0.}, {0., 0., 2.}}, 0., kInf, 1., 1e-5, hint},
+             {tr("what.lab3.origin_along", {{"direction", show(glm::dvec3(0., 0., scale))}}),
+              kSphere,
+              {{0., 0., 0.}, {0., 0., scale}},
+              0.,
+              kInf,
+              2. / scale,
+              1e-5,
+              hint}});
+    }
+    {
+        const Sphere far{{0., 0., 1000.}, 1.};
+        const double offset = CaseRandom::asFloat(random.uniform(0., 0.9));
+        const std::string hint = tr("hint.lab3.far_1000");
+        addFarIntersect(checks, "intersect: a sphere 1000 radii away",
+                     {{tr("what.lab3.at_radius", {{"offset", show(0.5)}}),
+                       far,
+                       {{0.5, 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       1000. - std::sqrt(0.75),
+                       2e-3,
+                       hint},
+                      {tr("what.lab3.at_radius", {{"offset", show(offset)}}),
+                       far,
+                       {{offset, 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       1000. - std::sqrt(1. - offset * offset),
+                       2e-3,
+                       hint},
+                      {tr("what.lab3.at_radii", {{"offset", show(1.5)}}),
+                       far,
+                       {{1.5, 0., 0.}, {0., 0., 1.}},
+                       0.,
+                       kInf,
+                       -1.,
+                       0.,
+                       tr("hint.lab3.far_miss")}});
+    }
+    {
+        const Sphere far{{0., 0., 10000.}, 1.};
+        const std::string hint = tr("hint.lab3.far_10000");
+        addFarIntersect(
+            checks, "intersect: a sphere 10000 radii away keeps its silhouette",
+            {{tr("what.lab3.at_radii", {{"offset", show(1.1)}}), far, {{1.1, 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
+             {tr("what.lab3.at_radius", {{"offset", show(0.9)}}),
+              far,
+              {{0.9, 0., 0.}, {0., 0., 1.}},
+              0.,
+              kInf,
+              10000. - std::sqrt(0.19),
+              0.02,
+              hint}});
+    }
+}
+
+void addNormalCheck(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    const Sphere big{{1., 2., 3.}, 2.}, drawn = drawnSphere(random);
+    const glm::dvec3 n = random.unitVector(), point = CaseRandom::asFloat(drawn.centre + n * drawn.radius);
+    const std::vector<std::pair<Sphere, glm::dvec3>> cases{
+        {kSphere, {0., 0., 2.}}, {big, {1., 2., 5.}}, {drawn, point}};
+    std::vector<protocol::Call> calls;
+    for (const auto& [s, p] : cases) calls.push_back(normalCall(s, p));
+    // The hint names what the answer shows: a length other than 1, or the inward direction.
+    auto hint = [](const glm::dvec3& got, const glm::dvec3& expected) {
+        if (!(std::abs(glm::length(got) - 1.) <= 1e-3)) return tr("hint.lab3.normal_unit");
+        if (glm::dot(got, expected) < 0.) return tr("hint.lab3.normal_outwards");
+        return tr("hint.lab3.normal");
+    };
+    checks.push_back(
+        {3, "computeNormal: unit and pointing outwards", calls, [cases, hint](const auto& out, Judge& judge) {
+             const std::string what[] = {tr("what.lab3.normal_at", {{"point", show(glm::dvec3(0., 0., 2.))}}),
+                                         tr("what.lab3.normal_radius_2", {{"point", show(glm::dvec3(1., 2., 5.))}}),
+                                         tr("what.lab3.normal_of", {{"point", show(cases[2].second)}, {"sphere", describe(cases[2].first)}})};
+             for (std::size_t k = 0; k < cases.size(); ++k) {
+                 const auto& [s, p] = cases[k];
+                 const glm::dvec3 got = Outputs(out[k]).vec3(), expected = (p - s.centre) / s.radius;
+                 judge.expectNear(what[k], got, expected, k < 2 ? 1e-6 : 1e-5, hint(got, expected));
+             }
+         }});
+}
+
+void addLiChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    const Sphere drawn = drawnSphere(random);
+    const glm::dvec3 colour = CaseRandom::asFloat(random.vec3(0.1, 1.)),
+                     background = CaseRandom::asFloat(random.vec3(0., 1.));
+    const Ray hitting = rayTowards(random, drawn, random.uniform(0., 0.8)),
+              missing = rayTowards(random, drawn, random.uniform(1.2, 3.));
+    const std::string drawnScene = tr("what.lab3.scene", {{"sphere", describe(drawn)}, {"colour", show(colour)}});
+    {
+        const std::string hitHint = tr("hint.lab3.flat_hit");
+        const std::string missHint = tr("hint.lab3.flat_miss");
+        addLi(checks, "Li: flat shading sees the sphere's colour or the background",
+              {{tr("what.lab3.flat_z"), kFlat, kSphere, kBlue, kGrey, kAlongZ, 1e-6, hitHint},
+               {tr("what.lab3.flat_x"),
+                kFlat,
+                kSphere,
+                kBlue,
+                kGrey,
+                {{0., 0., 0.}, {1., 0., 0.}},
+                1e-6,
+                missHint},
+               {tr("what.lab3.flat_hits", {{"scene", drawnScene}}), kFlat, drawn, colour, background, hitting, 1e-6, hitHint},
+               {tr("what.lab3.flat_misses", {{"scene", drawnScene}}), kFlat, drawn, colour, background, missing, 1e-6, missHint}});
+    }
+    {
+        const std::string hint = tr("hint.lab3.cosine");
+        // From (0.6, 0, 0) along +z: the hit is (0.6, 0, 2.2), n = (0.6, 0, -0.8), -d.n = 0.8.
+        addLi(checks, "Li: cosine shading is colour times the cosine -d.n",
+              {{tr("what.lab3.cosine_z"), kCosine, kSphere, kBlue, kGrey, kAlongZ, 1e-5, tr("hint.lab3.cosine_facing")},
+               {tr("what.lab3.cosine_from", {{"origin", show(glm::dvec3(0.6, 0., 0.))}}),
+                kCosine,
+                kSphere,
+                kBlue,
+                kGrey,
+                {{0.6, 0., 0.}, {0., 0., 1.}},
+                1e-5,
+                hint},
+               {tr("what.lab3.cosine_drawn", {{"origin", show(hitting.origin)}, {"scene", drawnScene}}), kCosine, drawn, colour, background, hitting,
+                1e-4, hint}});
+    }
+    addLi(checks, "Li: the placeholder normal faces the ray",
+          {{tr("what.lab3.placeholder_z"), kPlaceholder, kSphere, kBlue, kGrey, kAlongZ, 1e-5, tr("hint.lab3.placeholder")},
+           {tr("what.lab3.placeholder_drawn", {{"origin", show(hitting.origin)}, {"scene", drawnScene}}), kPlaceholder,
+            drawn, colour, background, hitting, 1e-5, tr("hint.lab3.placeholder")}});
+}
+
+} // namespace
+
+// The draws happen in this order: intersect, computeNormal, then Li.
+void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    addIntersectChecks(checks, random);
+    addNormalCheck(checks, random);
+    addLiChecks(checks, random);
+}
+
+} // namespace raylab::grader

@@ -1,0 +1,172 @@
+// Lab 4's function checks: the lookAt basis of the handout's four cameras, of cameras whose `up`
+// is not perpendicular to the view direction, and of cameras drawn at grading time; the viewport
+// of a camera rebuilt after construction; and the cameras that cannot be built.
+#include "grader/judge/checks/checks.h"
+
+#include "src/messages.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+namespace raylab::grader {
+
+namespace {
+
+using protocol::Probe;
+
+struct LookAt {
+    std::string name;
+    glm::dvec3 position, target, up;
+    int width = 600, height = 400;
+    double fovy = 60.;
+
+    glm::dvec3 w() const { return glm::normalize(position - target); }
+    glm::dvec3 u() const { return glm::normalize(glm::cross(up, w())); }
+    glm::dvec3 v() const { return glm::cross(w(), u()); }
+    double viewportHeight() const { return 2. * std::tan(fovy / 2. * std::numbers::pi / 180.); }
+    double viewportWidth() const { return viewportHeight() * width / height; }
+    glm::dvec3 topLeft() const { return position - w() + v() * (viewportHeight() / 2.) - u() * (viewportWidth() / 2.); }
+    protocol::Call call() const {
+        std::vector<double> in{double(width), double(height)};
+        for (const glm::dvec3& p : {position, target, up})
+            appendInputs(in, p);
+        in.push_back(fovy);
+        return {Probe::LookAt, in};
+    }
+};
+
+// What the LookAt probe returns.
+struct Built {
+    glm::dvec3 u, v, w, position;
+    double viewportHeight, viewportWidth;
+    glm::dvec3 topLeft;
+    explicit Built(const std::vector<double>& out) {
+        Outputs o(out);
+        u = o.vec3();
+        v = o.vec3();
+        w = o.vec3();
+        position = o.vec3();
+        viewportHeight = o.number();
+        viewportWidth = o.number();
+        topLeft = o.vec3();
+    }
+};
+
+// The cameras of scenes/figures/lab4_{a,b,c,d}.toml (named when the checks are made: in the reader's language).
+std::vector<LookAt> handoutCameras() {
+    auto name = [](const char* letter) { return tr("what.lab4.handout_camera", {{"letter", letter}}); };
+    return {{name("a"), {0., 0., -2.}, {0., 0., 79.}, {0., 1., 0.}},
+            {name("b"), {1., 0., 0.}, {1., 0., 1.}, {0., 1., 0.}},
+            {name("c"), {0., 1., 0.}, {0., 1., 1.}, {0., 1., 0.}},
+            {name("d"), {4., -1., 0.}, {-1., -1., 2.}, {0., 1., 0.}}};
+}
+
+// A camera whose up leans towards the view direction: v = up or an unnormalized u shows there.
+LookAt drawnCamera(CaseRandom& random) {
+    LookAt c{"", CaseRandom::asFloat(random.vec3(-5., 5.)), {}, {}};
+    c.target = CaseRandom::asFloat(c.position + random.unitVector() * random.uniform(1., 10.));
+    const glm::dvec3 view = glm::normalize(c.target - c.position);
+    for (;;) {
+        c.up = CaseRandom::asFloat(random.unitVector() * random.uniform(0.5, 3.));
+        const double cosine = std::abs(glm::dot(glm::normalize(c.up), view));
+        if (cosine > 0.2 && cosine < 0.9) break; // oblique, and far from parallel
+    }
+    c.name = tr("what.lab4.drawn_camera", {{"position", show(c.position)}, {"target", show(c.target)}, {"up", show(c.up)}});
+    c.height = random.integer(100, 800);
+    c.width = int(c.height * random.uniform(0.5, 2.5));
+    c.fovy = CaseRandom::asFloat(random.uniform(30., 100.));
+    return c;
+}
+
+protocol::Call refusedCall(const glm::dvec3& position, const glm::dvec3& target, const glm::dvec3& up) {
+    std::vector<double> in;
+    for (const glm::dvec3& p : {position, target, up})
+        appendInputs(in, p);
+    return {Probe::LookAtRefused, in};
+}
+
+// A lookAt check, one call a camera: `expect` judges what each camera was built as.
+FunctionCheck lookAtCheck(std::string name, std::vector<LookAt> cameras,
+                          std::function<void(const LookAt& camera, const Built& built, Judge& judge)> expect) {
+    std::vector<protocol::Call> calls;
+    for (const LookAt& c : cameras) calls.push_back(c.call());
+    return {4, std::move(name), std::move(calls), [cameras, expect](const auto& out, Judge& judge) {
+                for (std::size_t k = 0; k < cameras.size(); ++k) expect(cameras[k], Built(out[k]), judge);
+            }};
+}
+
+} // namespace
+
+void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+    std::vector<LookAt> cameras = handoutCameras();
+    const glm::dvec3 obliqueUp{0.3, 1., 0.4};
+    cameras.push_back({tr("what.lab4.oblique_camera", {{"up", show(obliqueUp)}}), {4., -1., 0.}, {-1., -1., 2.}, obliqueUp});
+    cameras.push_back(drawnCamera(random));
+    cameras.push_back(drawnCamera(random));
+    checks.push_back(lookAtCheck("lookAt: the basis of the handout's four cameras", cameras,
+                                 [](const LookAt& c, const Built& b, Judge& judge) {
+                                     auto what = [&c](const char* part) {
+                                         return tr("what.lab4.part", {{"camera", c.name}, {"part", part}});
+                                     };
+                                     // u and v made rightly from a wrong w are sent to w.
+                                     const bool wRight = judge.expectNear(what("w"), b.w, c.w(), 1e-5, tr("hint.lab4.w"));
+                                     const bool uFromW = withinEach(b.u, glm::normalize(glm::cross(c.up, b.w)), 1e-5);
+                                     judge.expectNear(what("u"), b.u, c.u(), 1e-5,
+                                                      tr(!wRight && uFromW ? "hint.lab4.from_w" : "hint.lab4.u"));
+                                     const bool vFromW = withinEach(b.v, glm::cross(b.w, b.u), 1e-5);
+                                     judge.expectNear(what("v"), b.v, c.v(), 1e-5,
+                                                      tr(!wRight && vFromW ? "hint.lab4.from_w" : "hint.lab4.v"));
+                                     judge.expectNear(what("position"), b.position, c.position, 1e-6,
+                                                      tr("hint.lab4.position"));
+                                 }));
+
+    const std::vector<LookAt> moved{handoutCameras()[3], drawnCamera(random)};
+    checks.push_back(lookAtCheck(
+        "lookAt: the viewport follows the new frame", moved, [](const LookAt& c, const Built& b, Judge& judge) {
+            // A screen placed rightly in a wrong frame: updateViewport was called, the frame is at fault.
+            const glm::dvec3 ownTopLeft =
+                b.position - b.w + b.v * (b.viewportHeight / 2.) - b.u * (b.viewportWidth / 2.);
+            const bool frameRight = withinEach(b.u, c.u(), 1e-5) && withinEach(b.v, c.v(), 1e-5) && withinEach(b.w, c.w(), 1e-5);
+            const std::string hint =
+                tr(!frameRight && withinEach(b.topLeft, ownTopLeft, 1e-4) ? "hint.lab4.viewport_frame" : "hint.lab4.viewport");
+            auto what = [&c](const std::string& part) { return tr("what.lab4.part", {{"camera", c.name}, {"part", part}}); };
+            judge.expectNear(what(tr("what.lab4.viewport_height")), b.viewportHeight, c.viewportHeight(), 1e-5, hint);
+            judge.expectNear(what(tr("what.lab4.viewport_width")), b.viewportWidth, c.viewportWidth(), 1e-5, hint);
+            judge.expectNear(what(tr("what.lab4.top_left")), b.topLeft, c.topLeft(), 1e-4,
+                             frameRight ? tr("hint.lab4.viewport_position", {{"hint", hint}}) : hint);
+        }));
+
+    const LookAt origin{"", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}};
+    checks.push_back(
+        {4, "lookAt: the default camera as a lookAt camera", {origin.call()}, [](const auto& out, Judge& judge) {
+             const Built b(out[0]);
+             judge.expectNear("u", b.u, {-1., 0., 0.}, 1e-6, tr("hint.lab4.default_u"));
+             judge.expectNear("v", b.v, {0., 1., 0.}, 1e-6, tr("hint.lab4.default_v"));
+         }});
+
+    // A constructor that refuses everything earns nothing: a valid camera must be built first.
+    const LookAt valid{"", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}, 200, 100};
+    const glm::dvec3 p = CaseRandom::asFloat(random.vec3(-5., 5.));
+    // Along an axis, so that the view and up are exactly parallel in float too.
+    const glm::dvec3 along{0., double(random.integer(1, 9)) * (random.integer(0, 1) ? 1. : -1.), 0.};
+    checks.push_back(
+        {4,
+         "lookAt: a degenerate camera is refused with an error",
+         {valid.call(), refusedCall({0., 0., 0.}, {0., 2., 0.}, {0., 1., 0.}),
+          refusedCall({1., 2., 3.}, {1., 2., 3.}, {0., 1., 0.}), refusedCall(p, p, {0., 1., 0.}),
+          refusedCall(p, p + along, {0., 2., 0.})},
+         [p](const auto& out, Judge& judge) {
+             judge.expectNear(tr("what.lab4.valid_w"), Built(out[0]).w, {0., 0., -1.}, 1e-6, tr("hint.lab4.valid_w"));
+             const std::string names[] = {tr("what.lab4.up_parallel"), tr("what.lab4.position_is_target"),
+                                          tr("what.lab4.position_is_target_at", {{"position", show(p)}}),
+                                          tr("what.lab4.up_parallel_from", {{"position", show(p)}})};
+             for (std::size_t k = 1; k < out.size(); ++k)
+                 judge.expectTrue(names[k - 1], out[k][0] == 1., tr("what.lab4.refused"), tr("what.lab4.built"),
+                                  tr("hint.lab4.refuse"));
+         }});
+}
+
+} // namespace raylab::grader

@@ -1,0 +1,123 @@
+#include "grader/judge/diagnosis.h"
+
+#include "src/messages.h"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace raylab::grader {
+
+namespace fs = std::filesystem;
+
+std::string Diagnosis::text() const {
+    if (!mistake) return "";
+    std::string text = tr("diagnosis.matches", mistake->args());
+    if (alike) text += tr("diagnosis.or_alike", alike->args());
+    return text;
+}
+
+const std::string& Mistake::name() const { return language() == Language::Fr ? nameFr : nameEn; }
+const std::string& Mistake::hint() const { return language() == Language::Fr ? hintFr : hintEn; }
+
+std::vector<std::pair<std::string_view, std::string>> Mistake::args() const {
+    const std::string shown = label.empty() ? "" : (language() == Language::Fr ? "E" : "M") + label + " ";
+    return {{"name", name()}, {"hint", hint()}, {"label", shown}, {"lab", std::to_string(lab)}, {"function", function}};
+}
+
+std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
+    std::vector<Mistake> mistakes;
+    const fs::path file = referenceFolder / "mistakes.toml";
+    std::error_code error;
+    if (!fs::exists(file, error)) return mistakes;
+    toml::table t;
+    try {
+        t = toml::parse_file(file.string());
+    } catch (const toml::parse_error& e) {
+        throw std::runtime_error(file.string() + ": " + std::string(e.description()));
+    }
+    const toml::array* list = t["mistake"].as_array();
+    if (!list) throw std::runtime_error(file.string() + ": expected [[mistake]] entries");
+    for (const toml::node& node : *list) {
+        const toml::table* m = node.as_table();
+        if (!m) throw std::runtime_error(file.string() + ": each [[mistake]] is a table");
+        Mistake mistake;
+        mistake.id = (*m)["id"].value_or(std::string());
+        mistake.nameEn = (*m)["name"].value_or(std::string());
+        mistake.nameFr = (*m)["name_fr"].value_or(std::string());
+        mistake.hintEn = (*m)["hint"].value_or(std::string());
+        mistake.hintFr = (*m)["hint_fr"].value_or(std::string());
+        mistake.label = (*m)["label"].value_or(std::string());
+        mistake.lab = (*m)["lab"].value_or(0);
+        mistake.check = (*m)["check"].value_or(std::string());
+        mistake.function = (*m)["function"].value_or(std::string());
+        if (mistake.id.empty() || mistake.nameEn.empty() || mistake.hintEn.empty() || mistake.nameFr.empty() ||
+            mistake.hintFr.empty() || mistake.function.empty() || mistake.lab < 1 || mistake.lab > 5)
+            throw std::runtime_error(file.string() + ": mistake '" + mistake.id +
+                                     "' needs id, name, name_fr, hint, hint_fr, function and lab 1 ... 5");
+        const fs::path folder = referenceFolder / "mistakes" / mistake.id;
+        if (fs::is_directory(folder, error))
+            for (const auto& entry : fs::directory_iterator(folder))
+                if (entry.path().extension() == ".png")
+                    mistake.signatures.emplace_back(entry.path().stem().string(), readImage(entry.path()));
+        mistakes.push_back(std::move(mistake));
+    }
+    return mistakes;
+}
+
+Image8 downsample(const Image8& image) {
+    const int s = kSignatureScale;
+    Image8 small{image.width / s, image.height / s, {}};
+    small.rgb.resize(std::size_t(small.width) * small.height * 3);
+    for (int j = 0; j < small.height; ++j)
+        for (int i = 0; i < small.width; ++i)
+            for (int c = 0; c < 3; ++c) {
+                int sum = 0;
+                for (int y = 0; y < s; ++y)
+                    for (int x = 0; x < s; ++x) sum += image.pixel(i * s + x, j * s + y)[c];
+                small.rgb[3 * (std::size_t(j) * small.width + i) + c] = std::uint8_t((sum + s * s / 2) / (s * s));
+            }
+    return small;
+}
+
+namespace {
+
+double meanAbsoluteDifference(const Image8& a, const Image8& b) {
+    if (a.width != b.width || a.height != b.height || a.rgb.empty()) return std::numeric_limits<double>::infinity();
+    double sum = 0.;
+    for (std::size_t k = 0; k < a.rgb.size(); ++k) sum += std::abs(int(a.rgb[k]) - int(b.rgb[k]));
+    return sum / double(a.rgb.size());
+}
+
+} // namespace
+
+Diagnosis diagnose(const std::vector<Mistake>& mistakes, const std::string& figure, const Image8& student,
+                   const Image8& reference, const std::function<bool(const Mistake&)>& suspect) {
+    Diagnosis best;
+    const Image8 small = downsample(student);
+    best.referenceDistance = meanAbsoluteDifference(small, downsample(reference));
+    best.distance = std::numeric_limits<double>::infinity();
+    double alikeDistance = best.distance;
+    for (const Mistake& m : mistakes)
+        for (const auto& [id, signature] : m.signatures) {
+            if (id != figure || !suspect(m)) continue;
+            const double d = meanAbsoluteDifference(small, signature);
+            if (d < best.distance) {
+                best.alike = best.mistake;
+                alikeDistance = best.distance;
+                best.distance = d;
+                best.mistake = &m;
+            } else if (d < alikeDistance) {
+                alikeDistance = d;
+                best.alike = &m;
+            }
+        }
+    if (!(alikeDistance <= best.distance + 0.25)) best.alike = nullptr;
+    // A fit: within 3 LSB on average, and at most a third of the distance to the reference.
+    if (best.mistake && !(best.distance <= 3. && best.distance <= best.referenceDistance / 3.)) best.mistake = best.alike = nullptr;
+    return best;
+}
+
+} // namespace raylab::grader

@@ -1,0 +1,51 @@
+#pragma once
+// What a grade found: each check, figure and lab, their verdicts and points. Plain data, written by
+// the judge and read by the reports, the class run and the autograders.
+
+#include "grader/judge/compare.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace raylab::grader {
+
+struct CheckOutcome {
+    int lab = 0;
+    std::string name;
+    bool passed = false;
+    std::string message; // expected / got / hint, or why it never ran
+    double points = 0., maxPoints = 0.;
+};
+
+struct FigureOutcome {
+    std::string id;
+    int lab = 0;
+    bool passed = false;
+    bool found = true;   // --images: false when the file is missing (listed, not deciding the exit status)
+    std::string reason;  // the verdict's line, or why there is no image
+    ImageVerdict verdict;
+    std::string diagnosis;              // the closest classic mistake, when one fits
+    std::filesystem::path studentImage; // empty when there is none
+    double points = 0., maxPoints = 0.;
+};
+
+struct LabOutcome {
+    int lab = 0;
+    double points = 0., maxPoints = 0.;
+    std::vector<std::string> notes; // "graded with the other labs from the reference", the labs to fix first
+};
+
+struct GradeResult {
+    std::string title;
+    std::vector<CheckOutcome> checks;
+    std::vector<FigureOutcome> figures;
+    std::vector<LabOutcome> labs;
+    std::vector<std::string> problems; // what went wrong around the items (a crash, a compile error)
+
+    double score() const;
+    double maxScore() const;
+    bool allPassed() const; // every check and every figure found passed
+};
+
+} // namespace raylab::grader

@@ -1,0 +1,66 @@
+#pragma once
+// Room sandbox/: runs a program confined and reads back what it said; it includes nothing of the grader's other rooms.
+//
+// Runs a grading agent (untrusted: it holds the student's code) and collects what it reports.
+//
+// Linux with bubblewrap (`bwrap` in PATH): the agent runs in its own mount, PID and network
+// namespaces: it sees the system's libraries read-only, the program and the files it is given
+// read-only, a private /tmp, and writes only to its scratch folder (and the folders it is given);
+// it cannot see or signal any process outside, has no network, and dies with the grader.
+// POSIX without bubblewrap: its own session and process group, the grader ignores (and records)
+// signals from it, and every process it started is killed when it ends. Both: rlimits on CPU,
+// memory and file size, a wall-clock limit per item, and results read from a pipe the parent
+// opened (its stdout goes to a capped file nobody trusts).
+// Windows: a plain child process with a result file and none of these limits (the student's own
+// machine, grading the student's own code).
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace raylab::grader {
+
+struct SandboxLimits {
+    int cpuSeconds = 600;       // CPU time of the whole run
+    double wallSeconds = 180.;  // wall-clock time without a word from the child: each check and figure
+                                // announces itself, so this is a limit per item, and a slow item
+                                // never makes the next one late
+    double totalSeconds = 1800.; // wall-clock time of the whole run
+    unsigned long long memoryBytes = 4ull << 30;
+    unsigned long long fileBytes = 256ull << 20;
+    bool bubblewrap = true; // use it when it is installed (false: `--no-sandbox`)
+};
+
+struct AgentCommand {
+    std::filesystem::path program;
+    std::vector<std::string> args;
+    std::filesystem::path scratch;               // created; the agent's working folder, writable
+    std::vector<std::filesystem::path> readable = {}; // files and folders it may read (scenes, inputs)
+    std::vector<std::filesystem::path> writable = {}; // folders it may write besides its scratch (created)
+    std::string requests = {}; // what it reads on its request pipe ("--request-fd 4"), then end-of-file
+};
+
+struct AgentRun {
+    std::vector<std::string> lines; // what the agent reported, one JSON object a line
+    bool timedOut = false;
+    int exitCode = -1; // when it exited
+    int signal = 0;    // when a signal ended it
+    std::vector<std::string> violations; // what it tried against the grader ("sent signal 15 to the grader")
+    std::string stderrTail; // the end of its error output, for the report
+    std::string describe() const; // "killed after 180 s", "exited with status 3", "crashed (signal 11)"
+};
+
+// Runs `program args... --request-fd 4 --report-fd 3` (POSIX: two pipes the parent opened; the
+// requests are written as the child reads them, so the parent never blocks on a child that stops
+// reading) or `... --request-file F --report-file F` (Windows) in `command.scratch`, confined as
+// described above.
+AgentRun runAgent(const AgentCommand& command, const SandboxLimits& limits);
+
+// How agents are confined with these limits: "bubblewrap", "process group" or "none".
+std::string sandboxKind(const SandboxLimits& limits);
+
+// Why bubblewrap cannot confine agents here, in the reader's language ("bubblewrap is not installed
+// (no bwrap in PATH)"); empty when it can. Looked up once: `bwrap` in PATH, able to make its namespaces.
+std::string bubblewrapMissing();
+
+} // namespace raylab::grader
