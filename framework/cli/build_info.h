@@ -8,6 +8,7 @@ inline constexpr const char* kLabOrigins = RAYLAB_LAB_ORIGINS;  // e.g. "lab1=la
 inline constexpr const char* kScenesDir = RAYLAB_SCENES_DIR;    // the scenes/ folder of the source tree
 inline constexpr const char* kSourceDir = RAYLAB_SOURCE_DIR;
 inline constexpr const char* kBinaryDir = RAYLAB_BINARY_DIR;    // where the raylab programs are
+inline constexpr const char* kBuildDir = RAYLAB_BUILD_DIR;      // the build folder (`cmake --build` it)
 inline constexpr const char* kBuildType = RAYLAB_BUILD_TYPE;    // "Release", "Debug"... (CMake's config)
 
 } // namespace raylab::build

@@ -38,6 +38,27 @@ std::filesystem::path referencesFolder();
 // The lab descriptions of labsFolder(), their figures' scene files in the tree's scenes/figures: what
 // says which lab a figure is, whichever folder --scenes names.
 grader::LabCatalog courseLabs();
+// "the labs are 1 2 3 4 5", in the reader's language.
+std::string labList(const grader::LabCatalog& labs);
+
+// A program of this build's folder (name.exe on Windows).
+std::filesystem::path programInBuild(const std::string& name);
+
+// Whether the programs holding the student's labs are as new as the lab files (fresh_build.cpp).
+enum class FreshBuild {
+    Fresh,       // no lab file is newer than the program
+    Rebuilt,     // the build brought it up to date
+    BuildFailed, // the compiler's errors were shown
+    Stale,       // it could not be rebuilt from here; the error names the newer file
+};
+// The first lab file (.cpp, .h) of `labFolders` written after `program`; empty when none is.
+std::filesystem::path newerLabFile(const std::vector<std::filesystem::path>& labFolders, const std::filesystem::path& program);
+// When a lab file is newer than `program`, builds `targets` first: the files this program takes from
+// labs/ when it is the `runningProgram`, which is then run again in this process's place with the
+// same arguments (the call returns only when nothing changed or the build failed); else every lab
+// file of labs/ (the agents').
+FreshBuild ensureFreshBuild(const Context& context, const std::filesystem::path& program,
+                            const std::vector<std::string>& targets, bool runningProgram);
 
 // The most render threads raylab starts (--threads): more only exhausts the system.
 inline constexpr int kMaxThreads = 1024;

@@ -80,6 +80,12 @@ std::filesystem::path referencesFolder() {
 
 grader::LabCatalog courseLabs() { return grader::loadLabCatalog(labsFolder(), build::kScenesDir); }
 
+std::string labList(const grader::LabCatalog& labs) {
+    std::string list;
+    for (int n : labs.numbers()) list += " " + std::to_string(n);
+    return tr("grade.labs_are", {{"labs", list}});
+}
+
 CLI::App* studyCommand(CLI::App& app) {
     try {
         return app.get_subcommand("study");
@@ -90,13 +96,18 @@ CLI::App* studyCommand(CLI::App& app) {
     }
 }
 
-bool Context::ranInOtherImpl() {
-    if (impl == build::kImpl) return false;
-    namespace fs = std::filesystem;
-    fs::path program = fs::path(build::kBinaryDir) / (impl == "reference" ? "raylab-reference" : "raylab");
+std::filesystem::path programInBuild(const std::string& name) {
+    std::filesystem::path program = std::filesystem::path(build::kBinaryDir) / name;
 #ifdef _WIN32
     program += ".exe";
 #endif
+    return program;
+}
+
+bool Context::ranInOtherImpl() {
+    if (impl == build::kImpl) return false;
+    namespace fs = std::filesystem;
+    const fs::path program = programInBuild(impl == "reference" ? "raylab-reference" : "raylab");
     std::error_code error;
     if (!fs::exists(program, error)) {
         const std::string why = tr("cli.no_build", {{"impl", tr("figures.impl_" + impl)}, {"program", program.string()}}) +

@@ -1,5 +1,6 @@
 #include "build_info.h"
 #include "commands.h"
+#include "figure_process.h"
 
 #include "grader/lab_catalog.h"
 
@@ -33,10 +34,10 @@ bool writeFigure(const std::string& id, const std::filesystem::path& file, const
 }
 
 // Writes the figure's PNG and prints its line; returns false when the figure is not usable.
-bool report(const SceneDescription& d, const FigureResult& r, const std::filesystem::path& file) {
+bool report(const SceneDescription& d, const FigureResult& r, const std::filesystem::path& file, const grader::LabCatalog& labs) {
     switch (r.status) {
     case FigureResult::Status::NotDoneYet:
-        std::printf("  %-24s %s\n", d.id.c_str(), tr("figures.todo", {{"message", r.message}}).c_str());
+        std::printf("  %-24s %s\n", d.id.c_str(), tr("figures.todo", {{"message", grader::waitingMessage(labs, d.id, *r.todo)}}).c_str());
         return true;
     case FigureResult::Status::Failed:
         std::printf("  %-24s %s\n", d.id.c_str(), tr("figures.failed", {{"message", r.message}}).c_str());
@@ -70,6 +71,8 @@ struct FiguresOptions {
 // for a lab not done yet is reported, not a failure.
 int runFigures(const FiguresOptions& o) {
     const grader::LabCatalog labs = courseLabs();
+    if (o.lab != 0 && labs.lab(o.lab) == nullptr)
+        throw std::invalid_argument(tr("figures.no_such_lab", {{"lab", std::to_string(o.lab)}, {"labs", labList(labs)}}));
     std::vector<SceneDescription> scenes = grader::loadFiguresInLabOrder(o.scenes, labs);
     for (const std::string& id : o.only)
         if (std::none_of(scenes.begin(), scenes.end(), [&](const auto& d) { return d.id == id; })) {
@@ -88,8 +91,8 @@ int runFigures(const FiguresOptions& o) {
     const RenderOptions renderOptions{o.threads, stderrIsInteractive()};
     std::vector<ContactSheetItem> sheet;
     for (const SceneDescription& d : scenes) {
-        const FigureResult r = renderScene(d, renderOptions);
-        if (!report(d, r, o.out / (d.id + ".png"))) ++failed;
+        const FigureResult r = renderFigure(d, renderOptions, labs);
+        if (!report(d, r, o.out / (d.id + ".png"), labs)) ++failed;
         if (r.status == FigureResult::Status::NotDoneYet) ++todo;
         if (r.status == FigureResult::Status::Rendered) sheet.push_back({d.id, quantize(*r.image), ""});
         else sheet.push_back({d.id, std::nullopt, r.status == FigureResult::Status::NotDoneYet ? "todo" : "failed"});
@@ -118,8 +121,18 @@ int runRender(const std::filesystem::path& scene, std::filesystem::path out, int
                                                    {"height", std::to_string(d.height)}, {"picture", std::string(pictureName(d.picture))},
                                                    {"samples", std::to_string(d.samples)}, {"sampler", std::string(samplerName(d.sampler))}})
                             .c_str());
-    const FigureResult r = renderScene(d, RenderOptions{threads, stderrIsInteractive()});
-    return report(d, r, out) && r.status == FigureResult::Status::Rendered ? 0 : 1;
+    const grader::LabCatalog labs = courseLabs();
+    const FigureResult r = renderFigure(d, RenderOptions{threads, stderrIsInteractive()}, labs);
+    return report(d, r, out, labs) && r.status == FigureResult::Status::Rendered ? 0 : 1;
+}
+
+// The student's figures come from the lab files as they are now: a build older than one of them is
+// brought up to date first. False when it could not be.
+bool codeIsFresh(Context& context) {
+    const std::string self = build::kImpl == std::string("student") ? "raylab" : "raylab-reference";
+    const FreshBuild fresh = ensureFreshBuild(context, programInBuild(self), {self}, true);
+    if (fresh == FreshBuild::BuildFailed || fresh == FreshBuild::Stale) context.exitStatus = 1;
+    return context.exitStatus == 0;
 }
 
 } // namespace
@@ -127,7 +140,7 @@ int runRender(const std::filesystem::path& scene, std::filesystem::path out, int
 void addFigureCommands(CLI::App& app, Context& context) {
     auto options = std::make_shared<FiguresOptions>();
     auto renderFigures = [&context, options] {
-        if (context.ranInOtherImpl()) return;
+        if (context.ranInOtherImpl() || !codeIsFresh(context)) return;
         options->scenes = context.scenes;
         options->threads = context.threads;
         if (options->out.empty()) options->out = std::filesystem::path("out") / context.impl;
@@ -142,7 +155,7 @@ void addFigureCommands(CLI::App& app, Context& context) {
     figures->callback(renderFigures);
 
     CLI::App* lab = app.add_subcommand("lab", tr("cli.lab"));
-    lab->add_option("N", options->lab, tr("cli.lab_number"))->required()->check(CLI::Range(1, 5));
+    lab->add_option("N", options->lab, tr("cli.lab_number"))->required()->check(CLI::PositiveNumber);
     lab->add_option("--out", options->out, tr("cli.lab_out"));
     context.addRenderOptions(lab);
     lab->callback(renderFigures);
@@ -155,7 +168,7 @@ void addFigureCommands(CLI::App& app, Context& context) {
     context.addImplOption(render);
     context.addRenderOptions(render);
     render->callback([&context, scene, out] {
-        if (!context.ranInOtherImpl()) context.exitStatus = runRender(*scene, *out, context.threads);
+        if (!context.ranInOtherImpl() && codeIsFresh(context)) context.exitStatus = runRender(*scene, *out, context.threads);
     });
 }
 

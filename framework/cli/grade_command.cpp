@@ -35,18 +35,16 @@ struct GradeOptions {
     bool noSandbox = false; // grade-class: grade without bubblewrap, as asked
 };
 
+// raylab grade's exit status when no graded lab has anything written yet (every item reached its
+// lab's own stubs): the students' tree's ctest reports such a lab as skipped, not failed.
+constexpr int kNothingWrittenStatus = 3;
+
 // A fresh folder of our own for the agents' files.
 fs::path scratchFolder(const std::string& what) {
     std::random_device random;
     const fs::path folder = fs::temp_directory_path() / ("raylab-" + what + "-" + std::to_string(random()));
     fs::create_directories(folder);
     return folder;
-}
-
-std::string labList(const LabCatalog& catalog) {
-    std::string list;
-    for (int n : catalog.numbers()) list += " " + std::to_string(n);
-    return tr("grade.labs_are", {{"labs", list}});
 }
 
 GradeSetup setupFor(const GradeOptions& o, const Context& context, const fs::path& scratch) {
@@ -85,7 +83,9 @@ int gradeImageFolder(const GradeOptions& o, const Context& context) {
     for (const std::string& p : result.problems) std::printf("%s\n", tr("grade.note", {{"note", p}}).c_str());
     writeReports(result, setup.references, o.report);
     std::printf("%s\n", tr("grade.images_summary", {{"found", std::to_string(found)},
+                                                   {"total", std::to_string(result.figures.size())},
                                                    {"failed", std::to_string(failed)},
+                                                   {"missing", std::to_string(result.figures.size() - std::size_t(found))},
                                                    {"report", o.report + "/index.html"}})
                             .c_str());
     fs::remove_all(scratch);
@@ -126,6 +126,13 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
 }
 
 int gradeLabs(GradeOptions o, const Context& context) {
+    // labs/ as it is now: its agents rebuilt when a lab file changed, or graded as a submission when
+    // they no longer build (each lab that compiles is graded).
+    if (o.labs.empty() && o.agents.empty() &&
+        ensureFreshBuild(context, programInBuild("raylab-agent"), {"raylab-agents"}, false) == FreshBuild::BuildFailed) {
+        std::printf("%s\n", tr("cli.build_failed_grading_copy").c_str());
+        o.labs = labsFolder().string();
+    }
     const fs::path scratch = scratchFolder("grade");
     const GradeSetup setup = setupFor(o, context, scratch);
     if (!o.item.empty()) try { // its lab is graded, the item alone kept
@@ -142,7 +149,10 @@ int gradeLabs(GradeOptions o, const Context& context) {
     writeReports(result, setup.references, o.report);
     std::printf("%s\n", tr("grade.report_written", {{"report", o.report + "/index.html"}}).c_str());
     fs::remove_all(scratch);
-    return result.allPassed() ? 0 : 1;
+    if (result.allPassed()) return 0;
+    const bool nothingWritten = std::all_of(result.labs.begin(), result.labs.end(),
+                                            [](const LabOutcome& l) { return l.notStarted || l.maxPoints == 0.; });
+    return nothingWritten ? kNothingWrittenStatus : 1;
 }
 
 // A student's row of grades.csv: points per lab, the total, and the first lines of the problems.

@@ -1,5 +1,7 @@
 #include "grader/lab_catalog.h"
 
+#include "src/messages.h"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -295,6 +297,20 @@ LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {
                                          it->second->file.string());
     }
     return catalog;
+}
+
+std::string waitingMessage(const LabCatalog& labs, const std::string& figureId, const NotDoneYet& todo) {
+    const LabDescription* own = labs.labOfFigure(figureId);
+    const std::string stubLab = todo.lab().substr(todo.lab().find_last_of(' ') + 1); // "lab 2" -> "2"
+    if (own == nullptr || std::to_string(own->number) == stubLab || own->functions.empty()) return todo.what();
+    std::string functions;
+    for (const LabFunction& f : own->functions) functions += (functions.empty() ? "" : ", ") + titleInLanguage(f.name);
+    return tr("todo.waits", {{"lab", std::to_string(own->number)},
+                             {"functions", functions},
+                             {"folder", "labs/" + own->id + "/"},
+                             {"first", stubLab},
+                             {"function", titleInLanguage(todo.function())},
+                             {"where", todo.file() + ":" + std::to_string(todo.line())}});
 }
 
 } // namespace raylab::grader

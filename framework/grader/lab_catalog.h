@@ -3,6 +3,7 @@
 // a student writes, the labs it uses, its figures and checks with their points). The grader, the
 // report, `raylab distribute` and the docs test read them; nothing else names a lab or counts them.
 
+#include "raylab/todo.h"
 #include "src/scene_file.h"
 
 #include <filesystem>
@@ -61,6 +62,10 @@ struct LabCatalog {
     double checkPoints(int lab, const std::string& name, double fallback) const;
     double figurePoints(const std::string& id, double fallback) const;
 };
+
+// What a figure that reached a stub waits for: the stub's own message when it is the figure's lab,
+// else the figure's lab's functions to write and, first, the earlier lab's stub it reached.
+std::string waitingMessage(const LabCatalog& labs, const std::string& figureId, const NotDoneYet& todo);
 
 // One lab.toml, checked on its own; throws std::runtime_error "FILE:LINE: key: problem".
 // `scenes`: the folder its figures' scene files must be in.

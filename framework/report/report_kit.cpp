@@ -51,7 +51,8 @@ std::vector<KitFigure> renderFigures(const ReportRequest& request, const LabCata
     for (const SceneDescription& d : loadFiguresInLabOrder(request.scenes, labs)) {
         const FigureResult r = renderScene(d, RenderOptions{request.threads, request.progress});
         KitFigure f{d.id, labs.labNumberOfFigure(d.id), r.status == FigureResult::Status::Rendered, r.message, r.stats, d.width, d.height};
-        if (r.status == FigureResult::Status::Failed) f.message = "failed: " + r.message;
+        if (r.status == FigureResult::Status::Failed) f.message = tr("figures.failed", {{"message", r.message}});
+        if (r.status == FigureResult::Status::NotDoneYet) f.message = waitingMessage(labs, d.id, *r.todo);
         if (f.rendered) {
             images[d.id] = quantize(*r.image);
             writePng(request.out / "figures" / (d.id + ".png"), images[d.id]);

@@ -2,6 +2,7 @@
 
 #include <toml++/toml.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -74,6 +75,22 @@ std::string titleInLanguage(const std::string& name) {
     return found != catalogue.end() ? found->second : name;
 }
 
+namespace {
+
+// Whether `count` takes the singular (CLDR's "one"): 1 in English; 0 and 1 in French ("0 figure",
+// "1,5 pixel"), that is, any number below 2.
+bool isOne(Language language, const std::string& count) {
+    std::string number = count;
+    for (char& c : number)
+        if (c == ',') c = '.';
+    char* end = nullptr;
+    const double value = std::strtod(number.c_str(), &end);
+    if (end == number.c_str()) throw std::logic_error("plural of '" + count + "', which is not a number");
+    return language == Language::Fr ? std::abs(value) < 2. : value == 1.;
+}
+
+} // namespace
+
 std::string tr(Language language, std::string_view id, MessageArgs args) {
     const auto& catalogue = messageCatalogue(language);
     const auto found = catalogue.find(std::string(id));
@@ -88,11 +105,19 @@ std::string tr(Language language, std::string_view id, MessageArgs args) {
             break;
         }
         out += text.substr(k, open - k);
-        const std::string_view name = std::string_view(text).substr(open + 1, close - open - 1);
+        // {name} is the argument; {name|one|other} the word that agrees with the number `name`.
+        const std::string_view inside = std::string_view(text).substr(open + 1, close - open - 1);
+        const std::size_t bar = inside.find('|');
+        const std::string_view name = inside.substr(0, bar);
         bool replaced = false;
         for (const auto& [key, value] : args)
             if (key == name) {
-                out += value;
+                if (bar == std::string_view::npos) out += value;
+                else {
+                    const std::string_view forms = inside.substr(bar + 1);
+                    const std::size_t second = forms.find('|');
+                    out += isOne(language, value) ? forms.substr(0, second) : forms.substr(second + 1);
+                }
                 replaced = true;
                 break;
             }

@@ -25,8 +25,9 @@ const char* languageCode(Language language); // "en", "fr"
 
 using MessageArgs = std::vector<std::pair<std::string_view, std::string>>;
 
-// The message `id` in the current language, each {name} replaced by its argument. An unknown id or
-// placeholder is a programming error: std::logic_error.
+// The message `id` in the current language, each {name} replaced by its argument, and each
+// {name|one|other} by the form that agrees with the number `name` in that language ("1 figure",
+// "2 figures"; French "0 figure"). An unknown id or placeholder is a programming error: std::logic_error.
 std::string tr(std::string_view id, MessageArgs args = {});
 std::string tr(Language language, std::string_view id, MessageArgs args = {});
 

@@ -103,7 +103,7 @@ TEST_CASE("figures into a folder that cannot exist: each figure failed with the 
     const Finished f = run("raylab-reference", {"figures", "--only", "lab1_gradient", "--out", out.string()});
     CHECK(f.status == 1);
     CHECK_MESSAGE(has(f, "lab1_gradient            FAILED  cannot write " + (out / "lab1_gradient.png").string()), f.output);
-    CHECK_MESSAGE(has(f, "1 figures: 0 rendered, 0 waiting for a lab not done yet, 1 failed"), f.output);
+    CHECK_MESSAGE(has(f, "1 figure: 0 rendered, 0 waiting for a lab not done yet, 1 failed"), f.output);
 }
 
 TEST_CASE("a write cut short (a nearly full disk) fails with the file named and leaves the old file whole") {

@@ -185,7 +185,7 @@ TEST_CASE("LANG=fr_FR.UTF-8 gives French without --lang, and --lang en overrides
     const ProgramRun english = runRaylab(inEnglish, dir);
     CHECK_MESSAGE(english.output.find("  total: 10 / 10") != std::string::npos, english.output);
     const ProgramRun figures = runRaylab({"lab", "1", "--out", (dir / "figures").string()}, dir);
-    CHECK_MESSAGE(figures.output.find("figures\u00A0: ") != std::string::npos, figures.output);
+    CHECK_MESSAGE(figures.output.find("1 figure\u00A0: ") != std::string::npos, figures.output);
 }
 
 } // TEST_SUITE

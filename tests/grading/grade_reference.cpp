@@ -53,6 +53,12 @@ TEST_CASE("the stubs of labs/ get zero, each check saying what to write") {
     REQUIRE(f);
     CHECK(f->reason.find("lab 3 not done yet") != std::string::npos);
     CHECK(r.labs[2].notes.front().find("other labs came from the reference") != std::string::npos);
+    // Nothing of any lab is written: each says so, last.
+    for (const LabOutcome& lab : r.labs) {
+        CHECK(lab.notStarted);
+        CHECK(lab.notes.back() == "nothing of lab " + std::to_string(lab.lab) +
+                                      " is written yet: each of its checks and figures reached a stub (its own or an earlier lab's)");
+    }
 }
 
 } // TEST_SUITE
@@ -96,12 +102,13 @@ TEST_CASE("without the reference, grading is cumulative and names the earlier la
     const GradeResult r = gradeCode(setup, {{binDir() / "raylab-agent", 0}}, false); // labs/: all stubs
     fs::remove_all(setup.scratch);
     REQUIRE(r.labs.size() == setup.labs.labs.size());
-    CHECK(r.labs[0].notes.empty());
+    // Each lab's last note: nothing of it is written yet (all stubs).
+    CHECK(r.labs[0].notes.size() == 1);
     REQUIRE_FALSE(r.labs[2].notes.empty());
     CHECK(r.labs[2].notes.front() == "lab 3 uses lab 2, which has failures: fix lab 2 first");
-    CHECK(r.labs[3].notes.size() == 2); // labs 2 and 3
+    CHECK(r.labs[3].notes.size() == 3); // labs 2 and 3, and not started
     // Labs 2 and 4 use each other (a lab 2 check builds a lookAt camera): said once, from the later lab.
-    CHECK(r.labs[1].notes.empty());
+    CHECK(r.labs[1].notes.size() == 1);
 }
 
 } // TEST_SUITE

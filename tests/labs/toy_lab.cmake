@@ -98,7 +98,35 @@ expect("${report}" "## TP 6 : Un TP jouet" "the French report has lab 6's secti
 string(FIND "${report}" "## TP 6 : Un TP jouet" section)
 string(SUBSTRING "${report}" ${section} -1 section)
 expect("${section}" "La direction d de chaque rayon primaire" "the French report shows lab 6's French caption")
-expect("${section}" "pas encore écrit" "the student's French report says lab 6's figure is not drawn yet")
+expect("${section}" "TP 6 : écrivez toyColour dans labs/lab6_toy/ ; cette figure attend d'abord le TP 2 : écrivez PerspectiveCamera::updateViewport"
+       "the student's French report names lab 6's function and the earlier lab it waits for")
+
+# 5b. The student writes lab 6 after the build: `raylab grade` and `raylab lab` rebuild first, and
+# grade and draw the code as it is now (written anew, so that it is newer than the build).
+file(READ ${TOY}/solution/toy_colour.cpp written)
+file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}")
+run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-written)
+expect("${output}" "labs/lab6_toy/toy_colour.cpp changed since the last build: rebuilding first" "raylab grade rebuilds")
+expect("${output}" "lab 6: 5 / 5 points" "the grade follows the code written after the build")
+file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}\nint unfinished(\n")
+run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-broken)
+expect("${output}" "grading labs/ as a submission" "a build that fails is graded as a submission")
+expect("${output}" "lab 6: 0 / 5 points" "lab 6 that does not compile gets no point")
+expect("${output}" "lab 1: 0 / 10 points" "the other labs are graded (lab 1 is a stub)")
+file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}")
+file(READ ${SOURCE}/solutions/lab1_first_image/gradient.cpp written)
+file(WRITE ${tree}/labs/lab1_first_image/gradient.cpp "${written}")
+run(output 0 ${bin}/raylab lab 1 --out ${WORK}/lab1-written)
+expect("${output}" "labs/lab1_first_image/gradient.cpp changed since the last build: rebuilding first" "raylab lab rebuilds")
+if(NOT EXISTS ${WORK}/lab1-written/lab1_gradient.png)
+  message(FATAL_ERROR "toy lab: raylab lab 1 drew nothing from the code written after the build")
+endif()
+# A lab function that crashes costs its figure only: the command names the lab and the function,
+# draws the other figures and exits with an error status, not a signal.
+file(WRITE ${tree}/labs/lab1_first_image/gradient.cpp "#include \"raylab/gradient.h\"\nnamespace raylab {\nvoid fillGradient(Texture&) { *static_cast<volatile int*>(nullptr) = 1; }\n}\n")
+run(output 1 ${bin}/raylab figures --out ${WORK}/figures-crash)
+expect("${output}" "lab 1: fillGradient in labs/lab1_first_image/ crashed (" "the crash names lab 1 and fillGradient")
+expect("${output}" "lab2_directions" "the figures after the crash are still drawn")
 
 # 6. framework/'s sources are those of the tree: the lab needed none of its files changed (its
 # data folder holds what `raylab references` made).

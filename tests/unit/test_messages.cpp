@@ -22,10 +22,13 @@ namespace {
 
 constexpr std::string_view kCheckTitles = "check_title."; // French only: English shows the check's name
 
+// The arguments a message reads: {name}, and the number of {name|one|other}.
 std::set<std::string> placeholders(const std::string& text) {
     std::set<std::string> names;
-    for (std::size_t open = text.find('{'); open != std::string::npos; open = text.find('{', open + 1))
-        names.insert(text.substr(open + 1, text.find('}', open) - open - 1));
+    for (std::size_t open = text.find('{'); open != std::string::npos; open = text.find('{', open + 1)) {
+        const std::string inside = text.substr(open + 1, text.find('}', open) - open - 1);
+        names.insert(inside.substr(0, inside.find('|')));
+    }
     return names;
 }
 
@@ -155,6 +158,34 @@ TEST_SUITE("messages") {
         CHECK(tr(Language::Fr, "report.lab", {{"lab", "3"}}) == "TP 3");
         CHECK_THROWS_AS(tr("no.such.message"), std::logic_error);
         CHECK_THROWS_AS(tr("report.lab"), std::logic_error);
+    }
+
+    TEST_CASE("a word agrees with its number: 1 in English; 0 and 1 (any number below 2) in French") {
+        const auto summary = [](Language l, int count) {
+            return tr(l, "figures.summary", {{"count", std::to_string(count)}, {"rendered", std::to_string(count)},
+                                             {"todo", "0"}, {"failed", "0"}});
+        };
+        CHECK(summary(Language::En, 1).rfind("1 figure: 1 rendered", 0) == 0);
+        CHECK(summary(Language::En, 0).rfind("0 figures: 0 rendered", 0) == 0);
+        CHECK(summary(Language::En, 10).rfind("10 figures: 10 rendered", 0) == 0);
+        CHECK(summary(Language::Fr, 0).rfind("0 figure\u00A0: 0 rendue,", 0) == 0);
+        CHECK(summary(Language::Fr, 1).rfind("1 figure\u00A0: 1 rendue,", 0) == 0);
+        CHECK(summary(Language::Fr, 2).rfind("2 figures\u00A0: 2 rendues,", 0) == 0);
+        // Decimals, in each language's way of writing them.
+        CHECK(tr(Language::Fr, "report.lab_points", {{"lab", "1"}, {"points", "0,5"}, {"max", "1,5"}}) == "TP 1\u00A0: 0,5 / 1,5 point");
+        CHECK(tr(Language::En, "report.lab_points", {{"lab", "1"}, {"points", "0.5"}, {"max", "1.5"}}) == "lab 1: 0.5 / 1.5 points");
+        CHECK_THROWS_AS(tr(Language::En, "figures.summary", {{"count", "many"}, {"rendered", "1"}, {"todo", "0"}, {"failed", "0"}}),
+                        std::logic_error);
+    }
+
+    TEST_CASE("a check's failures that share a hint are one line, with how many more there are") {
+        const LanguageScope english(Language::En);
+        grader::Judge judge;
+        for (int k = 0; k < 14; ++k) judge.fail("u of camera " + std::to_string(k), "a", "b", "u = cross(up, w)");
+        judge.fail("v", "c", "d", "v = cross(w, u)");
+        judge.fail("w", "e", "f", "u = cross(up, w)");
+        CHECK(judge.message() == "u of camera 0: expected a, got b. Hint: u = cross(up, w) (and 14 more cases with the same hint)\n"
+                                 "v: expected c, got d. Hint: v = cross(w, u)");
     }
 
     TEST_CASE("the language comes from LC_ALL, then LC_MESSAGES, then LANG: fr_* gives French") {

@@ -4,6 +4,7 @@
 #include "raylab/todo.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace raylab::grader {
 
@@ -13,10 +14,11 @@ namespace {
 bool accept(Ledger& ledger, Item& item, const protocol::Answer& answer, std::string& violation) {
     if (const auto* todo = std::get_if<protocol::NotDone>(&answer)) {
         const std::string message = NotDoneYet(todo->lab, todo->function, todo->file, todo->line).what();
+        const int stubLab = std::atoi(todo->lab.c_str() + std::min(todo->lab.size(), todo->lab.find_last_of(' ') + 1)); // "lab 3"
         if (item.check)
-            ledger.resolveCheck(item, false, message);
+            ledger.resolveCheck(item, false, message, stubLab);
         else
-            ledger.resolveFigure(item, RenderedFigure{std::nullopt, message});
+            ledger.resolveFigure(item, RenderedFigure{std::nullopt, message, stubLab});
         return true;
     }
     if (const auto* failure = std::get_if<protocol::Failure>(&answer)) {

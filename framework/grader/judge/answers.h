@@ -21,6 +21,7 @@ namespace raylab::grader {
 struct RenderedFigure {
     std::optional<Image8> image;
     std::string reason;
+    int stubLab = 0; // the lab whose stub the render reached
 };
 
 // What an agent answered, over all its runs, judged.
@@ -44,11 +45,11 @@ class Ledger {
 public:
     explicit Ledger(Reported& reported) : m_reported(reported) {}
 
-    void resolveCheck(Item& item, bool passed, const std::string& message) {
+    void resolveCheck(Item& item, bool passed, const std::string& message, int stubLab = 0) {
         if (item.resolved) return;
         item.resolved = true;
         m_reported.order.push_back(item.check->name);
-        m_reported.checks[item.check->name] = CheckOutcome{item.check->lab, item.check->name, passed, message, 0., 0.};
+        m_reported.checks[item.check->name] = CheckOutcome{item.check->lab, item.check->name, passed, message, 0., 0., stubLab};
     }
     void resolveFigure(Item& item, RenderedFigure figure) {
         if (item.resolved) return;

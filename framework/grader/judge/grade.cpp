@@ -31,7 +31,15 @@ void scoreLabs(const LabCatalog& catalog, GradeResult& result) {
         labs[f.lab].points += f.points;
         labs[f.lab].maxPoints += f.maxPoints;
     }
-    for (auto& [lab, outcome] : labs) result.labs.push_back(outcome);
+    // A lab whose every item reached a stub (its own, or a lab's its figures use) is not started
+    // (addNotStartedNotes says so).
+    std::map<int, bool> started;
+    for (const CheckOutcome& c : result.checks) started[c.lab] = started[c.lab] || c.stubLab == 0;
+    for (const FigureOutcome& f : result.figures) started[f.lab] = started[f.lab] || f.stubLab == 0;
+    for (auto& [lab, outcome] : labs) {
+        if (const auto it = started.find(lab); it != started.end()) outcome.notStarted = !it->second;
+        result.labs.push_back(outcome);
+    }
 }
 
 void addCheck(const GradeSetup& setup, GradeResult& result, CheckOutcome c) {
@@ -147,6 +155,7 @@ void addReportedFigures(const GradeSetup& setup, GradeResult& result, const Agen
             result.figures.push_back(figureAtZero(setup, reference, tr("grade.figure_never_ran")));
         } else if (!it->second.image) {
             result.figures.push_back(figureAtZero(setup, reference, it->second.reason));
+            result.figures.back().stubLab = it->second.stubLab;
         } else {
             // Kept for the report in a folder of the parent's, written after the agent is gone.
             const fs::path file = setup.scratch / ("figures-" + agentName(plan)) / (reference.id + ".png");
@@ -155,6 +164,12 @@ void addReportedFigures(const GradeSetup& setup, GradeResult& result, const Agen
             result.figures.push_back(gradeImage(setup, reference, *it->second.image, file));
         }
     }
+}
+
+// "nothing of lab 3 is written yet", last among a lab's notes.
+void addNotStartedNotes(GradeResult& result) {
+    for (LabOutcome& lab : result.labs)
+        if (lab.notStarted) lab.notes.push_back(tr("grade.not_started", {{"lab", std::to_string(lab.lab)}}));
 }
 
 // Names the likely mistake of every failed figure, once every lab is scored. A suspect is a mistake
@@ -240,6 +255,7 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         for (LabOutcome& lab : result.labs) lab.notes.push_back(tr("grade.graded_alone"));
     else
         addDependencyNotes(setup.labs, result);
+    addNotStartedNotes(result);
     return result;
 }
 

@@ -16,6 +16,7 @@ struct CheckOutcome {
     bool passed = false;
     std::string message; // expected / got / hint, or why it never ran
     double points = 0., maxPoints = 0.;
+    int stubLab = 0; // the lab whose stub the check reached ("not done yet"); 0 when none
 };
 
 struct FigureOutcome {
@@ -28,12 +29,14 @@ struct FigureOutcome {
     std::string diagnosis;              // the closest classic mistake, when one fits
     std::filesystem::path studentImage; // empty when there is none
     double points = 0., maxPoints = 0.;
+    int stubLab = 0; // the lab whose stub its render reached; 0 when none
 };
 
 struct LabOutcome {
     int lab = 0;
     double points = 0., maxPoints = 0.;
     std::vector<std::string> notes; // "graded with the other labs from the reference", the labs to fix first
+    bool notStarted = false;        // every item reached this lab's own stubs: nothing of it is written yet
 };
 
 struct GradeResult {

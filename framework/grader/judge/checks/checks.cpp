@@ -5,6 +5,8 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace raylab::grader {
 
@@ -16,7 +18,7 @@ std::string show(const glm::dvec3& v) {
 
 void Judge::fail(const std::string& what, const std::string& expected, const std::string& got,
                  const std::string& hint) {
-    m_failures.push_back(tr("check.failure", {{"what", what}, {"expected", expected}, {"got", got}, {"hint", hint}}));
+    m_failures.push_back({tr("check.failure", {{"what", what}, {"expected", expected}, {"got", got}, {"hint", hint}}), hint});
 }
 
 // A NaN is never near anything: the comparisons are written so that it fails them.
@@ -46,9 +48,19 @@ bool Judge::expectTrue(const std::string& what, bool holds, const std::string& e
 }
 
 std::string Judge::message() const {
+    std::vector<std::pair<std::string, int>> lines; // a hint's first failure, and how many more share it
+    std::map<std::string, std::size_t> lineOfHint;
+    for (const Failure& f : m_failures) {
+        const auto [at, first] = lineOfHint.emplace(f.hint, lines.size());
+        if (first) lines.emplace_back(f.line, 0);
+        else ++lines[at->second].second;
+    }
     std::string text;
-    for (const std::string& f : m_failures)
-        text += (text.empty() ? "" : "\n") + f;
+    for (const auto& [line, more] : lines) {
+        if (!text.empty()) text += '\n';
+        text += line;
+        if (more > 0) text.append(" ").append(tr("check.same_hint", {{"count", std::to_string(more)}}));
+    }
     return text;
 }
 

@@ -16,7 +16,8 @@
 
 namespace raylab::grader {
 
-// Collects a check's failed expectations: "WHAT: expected E, got G. Hint: H", one a line.
+// Collects a check's failed expectations: "WHAT: expected E, got G. Hint: H", one a line; the
+// failures that share a hint are one line, the first, and how many more there are.
 class Judge {
 public:
     void fail(const std::string& what, const std::string& expected, const std::string& got, const std::string& hint);
@@ -29,7 +30,10 @@ public:
     std::string message() const;
 
 private:
-    std::vector<std::string> m_failures;
+    struct Failure {
+        std::string line, hint;
+    };
+    std::vector<Failure> m_failures;
 };
 
 // Each component of a within `tolerance` of b's.

@@ -1,0 +1,92 @@
+# The students' tree stays green: `raylab distribute` writes it, and its own test suite (the one its
+# README tells students to run) passes with no lab written (each lab skipped), with lab 1 written
+# (lab 1 passes, the others skipped) and with every lab written (all pass, none skipped).
+#
+#   cmake -DRAYLAB=<raylab program> -DSOLUTIONS=<solutions/> -DWORK=<scratch folder> [-DGENERATOR=...]
+#         [-DCCACHE=<ccache>] -P tests/labs/students_tree.cmake
+# Every program runs from an argument vector (execute_process), never through a shell.
+
+foreach(var RAYLAB SOLUTIONS WORK)
+  if(NOT ${var})
+    message(FATAL_ERROR "students' tree: -D${var}=... is required")
+  endif()
+endforeach()
+set(tree ${WORK}/tree)
+set(build ${WORK}/build)
+
+function(run name expected)
+  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(REPLACE ";" " " shown "${ARGN}")
+  message(STATUS "students' tree: ${shown} -> ${status}")
+  if(NOT status EQUAL expected)
+    message(FATAL_ERROR "students' tree: `${shown}` exited with ${status}, expected ${expected}:\n${out}${err}")
+  endif()
+  set(${name} "${out}${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect text needle what)
+  string(FIND "${text}" "${needle}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "students' tree: ${what}: no \"${needle}\" in:\n${text}")
+  endif()
+endfunction()
+
+# ctest of the students' tree: it must pass, with `passed` labs passed and the others skipped.
+function(suite_passes passed)
+  run(output 0 ${CMAKE_COMMAND} --build ${build} -j 2)
+  run(output 0 ${CMAKE_CTEST_COMMAND} --test-dir ${build} -j 2)
+  expect("${output}" "100% tests passed" "the suite passes")
+  foreach(n 1 2 3 4 5)
+    set(test "lab ${n}: its function checks and figures against the references (raylab grade --lab ${n})")
+    set(verdict "***Skipped")
+    if(n IN_LIST passed)
+      set(verdict "Passed")
+    endif()
+    # ctest's result line: "k/N Test #i: <name> .....   <verdict>".
+    string(REGEX MATCHALL "Test #[0-9]+: [^\n]*" results "${output}")
+    set(found "")
+    foreach(line IN LISTS results)
+      string(FIND "${line}" "${test}" named)
+      string(FIND "${line}" "${verdict}" said)
+      if(NOT named EQUAL -1 AND NOT said EQUAL -1)
+        set(found yes)
+      endif()
+    endforeach()
+    if(found STREQUAL "")
+      message(FATAL_ERROR "students' tree: lab ${n} should be ${passed} passed, the others skipped:\n${output}")
+    endif()
+  endforeach()
+endfunction()
+
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+run(output 0 ${RAYLAB} distribute ${tree})
+set(configure ${CMAKE_COMMAND} -S ${tree} -B ${build} -DCMAKE_BUILD_TYPE=Release -DRAYLAB_LTO=OFF)
+if(GENERATOR)
+  list(APPEND configure -G ${GENERATOR})
+endif()
+if(CCACHE)
+  list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CCACHE})
+endif()
+run(output 0 ${configure})
+
+suite_passes("")
+
+# A student's lab: the solution's files written over the stubs (anew, so they are newer than the build).
+function(write_lab folder)
+  file(GLOB files ${SOLUTIONS}/${folder}/*.cpp)
+  foreach(file IN LISTS files)
+    get_filename_component(name ${file} NAME)
+    file(READ ${file} text)
+    file(WRITE ${tree}/labs/${folder}/${name} "${text}")
+  endforeach()
+endfunction()
+
+write_lab(lab1_first_image)
+suite_passes("1")
+
+foreach(folder lab2_primary_rays lab3_sphere lab4_lookat_camera lab5_antialiasing)
+  write_lab(${folder})
+endforeach()
+suite_passes("1;2;3;4;5")
+message(STATUS "students' tree: its suite passes with 0, 1 and 5 labs written")
