@@ -110,11 +110,6 @@ std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>
     return agents;
 }
 
-fs::path submissionLabsFolder(const fs::path& submission) {
-    std::error_code error;
-    return fs::is_directory(submission / "labs", error) ? submission / "labs" : submission;
-}
-
 SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDir, const fs::path& labs,
                                 const fs::path& buildDir, const std::vector<int>& numbers) {
     SubmissionBuild b;

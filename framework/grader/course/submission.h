@@ -1,8 +1,8 @@
 #pragma once
 // Room course/: submissions, class runs, the autograders and the grade reports; it may include every other room.
 //
-// Building a submission (a copy of labs/) into grading agents, with CMake, and finding the agents
-// of a build.
+// Building a submission (the grader's copy of its lab files, submission_copy.h) into grading agents,
+// with CMake, and finding the agents of a build.
 
 #include "grader/judge/grade.h"
 
@@ -30,13 +30,10 @@ struct SubmissionBuild {
 // for all.
 std::vector<AgentPlan> findAgents(const std::filesystem::path& binDir, const std::vector<int>& labs, bool& isolated);
 
-// Configures (once) and builds the agents of the submission's folder `labs` in `buildDir`, keeping
+// Configures (once) and builds the agents of the submission's copy `labs` in `buildDir`, keeping
 // going past errors so that the labs that compile are still graded. `numbers`: the course's labs.
 SubmissionBuild buildSubmission(const Toolchain& tools, const std::filesystem::path& sourceDir,
                                 const std::filesystem::path& labs, const std::filesystem::path& buildDir,
                                 const std::vector<int>& numbers);
-
-// A submission folder holds the lab folders directly or in a labs/ subfolder.
-std::filesystem::path submissionLabsFolder(const std::filesystem::path& submission);
 
 } // namespace raylab::grader
