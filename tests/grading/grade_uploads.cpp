@@ -3,6 +3,8 @@
 // they are, and a lab that does not compile costs that lab and the labs that use it only.
 // The cases share one build folder: after the first, each recompiles only the lab files that changed.
 #include "grading_support.h"
+#include "grader/course/submission.h"
+#include "grader/sandbox/process.h"
 #include "support/files.h"
 #include "support/run_program.h"
 
@@ -146,6 +148,36 @@ TEST_CASE("a missing ';' in lab 4 costs lab 4 only: labs 1, 2, 3 and 5 (which do
     CHECK(g.labs == expected);
     CHECK(g.output.find("lab 4: the code does not build") != std::string::npos);
     CHECK(g.output.find("look_at.cpp") != std::string::npos); // the compiler's message names the file
+}
+
+// The students' tree has no solutions/: no reference lab stands in for a broken one. The grader's
+// build of a submission there (buildSubmission on a copy of the tree without solutions/) gives each lab
+// an agent with the labs it uses from the submission and the others' stubs.
+TEST_CASE("in the students' tree, a missing ';' in lab 4 costs lab 4 only: labs 1, 2, 3 and 5 keep their points") {
+    const fs::path tree = kRoot / "students-tree";
+    fs::remove_all(tree);
+    fs::create_directories(tree);
+    for (const char* part : {"framework", "labs", "scenes", "cmake", "CMakeLists.txt", "CMakePresets.json"})
+        fs::copy(sourceDir() / part, tree / part, fs::copy_options::recursive);
+    REQUIRE_FALSE(fs::exists(tree / "solutions"));
+    const fs::path folder = submission("students-tree-lab4-broken");
+    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+    const fs::path lookAt = folder / "lab4_lookat_camera" / "look_at.cpp";
+    write(lookAt, "this line is not C++\n" + readFile(lookAt));
+
+    const raylab::grader::Toolchain tools{RAYLAB_CMAKE_COMMAND, RAYLAB_CMAKE_GENERATOR, raylab::grader::findProgram("ccache")};
+    const GradeSetup setup = courseSetup();
+    const raylab::grader::SubmissionBuild b =
+        raylab::grader::buildSubmission(tools, tree, folder, kRoot / "students-tree-build", setup.labs.numbers());
+    CHECK_FALSE(b.isolated);
+    CHECK(b.brokenLabs == std::vector<int>{4});
+    CHECK(b.compilerMessage.find("look_at.cpp") != std::string::npos);
+    const GradeResult result = gradeCode(setup, b.agents, b.isolated, b.brokenLabs, b.compilerMessage);
+    fs::remove_all(setup.scratch);
+    std::map<int, double> points;
+    for (const LabOutcome& lab : result.labs) points[lab.lab] = lab.points;
+    const std::map<int, double> expected{{1, 10.}, {2, 16.}, {3, 24.}, {4, 0.}, {5, 13.}};
+    CHECK_MESSAGE(points == expected, failures(result));
 }
 
 } // TEST_SUITE

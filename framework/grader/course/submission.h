@@ -19,8 +19,9 @@ struct Toolchain {
 };
 
 struct SubmissionBuild {
-    std::vector<AgentPlan> agents; // those that built
-    bool isolated = false;         // each lab's agent has the other labs from the reference
+    std::vector<AgentPlan> agents; // those that built: one for all labs, or one for each lab
+    bool isolated = false;         // each lab's agent has the other labs from the reference (else the
+                                   // labs it uses from the submission, the others' stubs)
     std::vector<int> brokenLabs;   // labs whose agent did not build
     std::string compilerMessage;   // the error lines of the build log, when something did not build
     std::filesystem::path log;
@@ -31,7 +32,8 @@ struct SubmissionBuild {
 std::vector<AgentPlan> findAgents(const std::filesystem::path& binDir, const std::vector<int>& labs, bool& isolated);
 
 // Configures (once) and builds the agents of the submission's copy `labs` in `buildDir`, keeping
-// going past errors so that the labs that compile are still graded. `numbers`: the course's labs.
+// going past errors so that the labs that compile are still graded: a lab that does not compile costs
+// that lab and, without solutions/, the labs that use it. `numbers`: the course's labs.
 SubmissionBuild buildSubmission(const Toolchain& tools, const std::filesystem::path& sourceDir,
                                 const std::filesystem::path& labs, const std::filesystem::path& buildDir,
                                 const std::vector<int>& numbers);
