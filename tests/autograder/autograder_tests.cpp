@@ -239,7 +239,7 @@ TEST_CASE("run_autograder: a submission that crashes is graded, the crash costin
     CHECK(pointsByItem(j) == pointsOfAgent("raylab-bad-crash"));
 }
 
-TEST_CASE("run_autograder: a hand-in without lab folders gets zero, with the layouts it accepts") {
+TEST_CASE("run_autograder: a hand-in without lab files gets zero, saying what to upload, never \"does not build\"") {
     const fs::path submission = kRoot / "hand-in-empty";
     fs::remove_all(submission);
     fs::create_directories(submission / "notes");
@@ -247,7 +247,8 @@ TEST_CASE("run_autograder: a hand-in without lab folders gets zero, with the lay
     const nlohmann::json j = gradeOnGradescope(submission);
     CHECK(j["score"] == 0.);
     CHECK(j["tests"].size() > 20);
-    CHECK(j["output"].get<std::string>().find("no lab folder in the submission") != std::string::npos);
+    CHECK(j.dump().find("no lab file found: upload the lab files (gradient.cpp, ") != std::string::npos);
+    CHECK(j.dump().find("does not build") == std::string::npos);
 }
 
 } // TEST_SUITE

@@ -5,10 +5,14 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <optional>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #ifndef _WIN32
 #include <fcntl.h>
@@ -16,6 +20,7 @@
 #include <unistd.h>
 #else
 #include <fstream>
+#include <iterator>
 #endif
 
 namespace raylab::grader {
@@ -26,7 +31,8 @@ namespace {
 
 // A lab file is a page or two of code: anything larger is not one, and must not fill the grader's memory.
 constexpr std::uintmax_t kMaxFileBytes = 1 << 20;
-// A whole repository is a few thousand entries deep of 6; a submission made to exhaust the walk stops here.
+// A whole repository is a few thousand entries, 6 folders deep: a submission made to exhaust the walk
+// stops here.
 constexpr int kMaxDepth = 12;
 constexpr int kMaxEntries = 50000;
 // The grade lists this many ignored files, then how many more.
