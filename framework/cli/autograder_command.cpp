@@ -64,7 +64,7 @@ int runGradescope(const Context& context) {
     std::string why;
     try {
         const LabCatalog catalog = loadLabCatalog(labsFolder(), context.scenes);
-        copySubmittedLabs(findSubmittedLabs(root / "submission", catalog), catalog, submitted);
+        copySubmittedLabs(root / "submission", catalog, submitted);
         std::fflush(stdout); // what we printed comes before what it prints
         const int status = runProcess({(fs::path(build::kBinaryDir) / "raylab").string(), "grade", "--labs",
                                        submitted.string(), "--build-dir", (tree / "build").string(), "--report",

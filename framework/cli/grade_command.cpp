@@ -9,6 +9,7 @@
 #include "grader/sandbox/process.h"
 #include "grader/sandbox/sandbox.h"
 #include "grader/course/submission.h"
+#include "grader/course/submission_copy.h"
 #include "src/messages.h"
 
 #include <algorithm>
@@ -98,14 +99,21 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
     std::vector<AgentPlan> agents;
     bool isolated = false;
     std::vector<int> unbuilt;
-    std::string message;
+    std::string message, ignored;
     if (!o.agents.empty()) {
         for (const std::string& a : o.agents) agents.push_back({fs::absolute(a), 0});
     } else if (!o.labs.empty()) {
+        // The grader's own copy of the lab files, wherever the submission holds them: CMake builds that alone.
+        const SubmissionCopy copy = copySubmission(o.labs, setup.labs, buildDir / "submission");
+        if (copy.labs.empty()) {
+            GradeResult result = gradeWithoutLabFiles(setup, copy);
+            result.title = std::move(title);
+            return result;
+        }
+        ignored = ignoredFilesNote(copy, setup.labs);
         std::printf("%s\n", tr("grade.building", {{"labs", o.labs}, {"folder", buildDir.string()}}).c_str());
         std::fflush(stdout);
-        const SubmissionBuild b =
-            buildSubmission(tools, build::kSourceDir, submissionLabsFolder(o.labs), buildDir, setup.labs.numbers());
+        const SubmissionBuild b = buildSubmission(tools, build::kSourceDir, copy.folder, buildDir, setup.labs.numbers());
         agents = b.agents;
         isolated = b.isolated;
         unbuilt = b.brokenLabs;
@@ -121,6 +129,7 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
         std::erase_if(unbuilt, [&](int lab) { return lab != o.lab; });
     }
     GradeResult result = gradeCode(setup, agents, isolated, unbuilt, message);
+    if (!ignored.empty()) result.problems.push_back(ignored);
     result.title = std::move(title);
     return result;
 }

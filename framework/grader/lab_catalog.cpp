@@ -103,6 +103,14 @@ bool contains(const std::vector<int>& list, int value) {
     return std::find(list.begin(), list.end(), value) != list.end();
 }
 
+// A lab file's name as a submission's copy and a CMake list can hold it: no folder, no quote, no `;`.
+bool plainFileName(const std::string& name) {
+    const bool plain = !name.empty() && name[0] != '.' && std::all_of(name.begin(), name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+    });
+    return plain && name.size() > 4 && name.compare(name.size() - 4, 4, ".cpp") == 0;
+}
+
 toml::table parseToml(const fs::path& file) {
     try {
         return toml::parse_file(file.string());
@@ -134,6 +142,10 @@ std::vector<LabFunction> readFunctions(const Reader& r, const toml::table& root,
     return r.list<LabFunction>(root, "function", [&](const toml::table& t, const std::string& where) {
         r.onlyKeys(t, where, {"file", "name"});
         LabFunction f{r.text(t, where, "file"), r.text(t, where, "name")};
+        // The grader copies a submission's files under these names and CMake lists them: a plain name only.
+        if (!plainFileName(f.file))
+            r.fail(t.get("file"), where + "file",
+                   "\"" + f.file + "\" is not a plain file name (letters, digits, '_', '-' and '.', ending in .cpp)");
         std::error_code error;
         if (!fs::is_regular_file(file.parent_path() / f.file, error))
             r.fail(t.get("file"), where + "file", "no file " + f.file + " beside " + file.filename().string());
@@ -203,6 +215,13 @@ const LabCheck* LabDescription::check(const std::string& wanted) const {
     for (const LabCheck& c : checks)
         if (c.name == wanted) return &c;
     return nullptr;
+}
+
+std::vector<std::string> LabDescription::files() const {
+    std::vector<std::string> names;
+    for (const LabFunction& f : functions)
+        if (std::find(names.begin(), names.end(), f.file) == names.end()) names.push_back(f.file);
+    return names;
 }
 
 const LabDescription* LabCatalog::lab(int number) const {
@@ -280,7 +299,7 @@ LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {
     if (catalog.labs.empty()) throw std::runtime_error("no lab description (lab*/lab.toml) in " + labs.string());
     std::sort(catalog.labs.begin(), catalog.labs.end(),
               [](const auto& a, const auto& b) { return a.number < b.number; });
-    std::map<std::string, const LabDescription*> figureOwner;
+    std::map<std::string, const LabDescription*> figureOwner, fileOwner;
     for (std::size_t k = 0; k < catalog.labs.size(); ++k) {
         const LabDescription& lab = catalog.labs[k];
         if (k > 0 && catalog.labs[k - 1].number == lab.number)
@@ -291,6 +310,11 @@ LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {
                              [&](const auto& l) { return l.number == other; }))
                 throw std::runtime_error(lab.file.string() + ": uses: there is no lab " + std::to_string(other) +
                                          " in " + labs.string());
+        // A file uploaded without its folder is put in its lab by its name alone.
+        for (const std::string& name : lab.files())
+            if (const auto [it, added] = fileOwner.emplace(name, &lab); !added)
+                throw std::runtime_error(lab.file.string() + ": function: file " + name + " is also a file of " +
+                                         it->second->file.string() + " (a lab file's name is unique in the course)");
         for (const LabFigure& f : lab.figures)
             if (const auto [it, added] = figureOwner.emplace(f.id, &lab); !added)
                 throw std::runtime_error(lab.file.string() + ": figure: " + f.id + " is also a figure of " +

@@ -47,6 +47,9 @@ struct LabDescription {
     const std::string& title(const std::string& lang) const { return lang == "fr" ? titleFr : titleEn; }
     const LabFigure* figure(const std::string& id) const;
     const LabCheck* check(const std::string& name) const;
+    // The files a student writes (the functions' files, each once, in their order): what the grader
+    // copies from a submission, each name unique in the course.
+    std::vector<std::string> files() const;
 };
 
 struct LabCatalog {

@@ -239,7 +239,7 @@ TEST_CASE("run_autograder: a submission that crashes is graded, the crash costin
     CHECK(pointsByItem(j) == pointsOfAgent("raylab-bad-crash"));
 }
 
-TEST_CASE("run_autograder: a hand-in without lab folders gets zero, with the layouts it accepts") {
+TEST_CASE("run_autograder: a hand-in without lab files gets zero, saying what to upload, never \"does not build\"") {
     const fs::path submission = kRoot / "hand-in-empty";
     fs::remove_all(submission);
     fs::create_directories(submission / "notes");
@@ -247,7 +247,8 @@ TEST_CASE("run_autograder: a hand-in without lab folders gets zero, with the lay
     const nlohmann::json j = gradeOnGradescope(submission);
     CHECK(j["score"] == 0.);
     CHECK(j["tests"].size() > 20);
-    CHECK(j["output"].get<std::string>().find("no lab folder in the submission") != std::string::npos);
+    CHECK(j.dump().find("no lab file found: upload the lab files (gradient.cpp, ") != std::string::npos);
+    CHECK(j.dump().find("does not build") == std::string::npos);
 }
 
 } // TEST_SUITE
@@ -310,7 +311,7 @@ TEST_CASE("classroom.yml: GitHub Classroom's shape, a build, a step per check an
 
 TEST_SUITE("autograder units") {
 
-TEST_CASE("a submission's labs are found at its top, in labs/, or in one wrapping folder; links are not copied") {
+TEST_CASE("a submission's lab files are found at its top, in labs/, in one wrapping folder or flat; links are not copied") {
     const LabCatalog catalog = courseSetup().labs;
     const fs::path root = kRoot / "layouts";
     fs::remove_all(root);
@@ -319,21 +320,26 @@ TEST_CASE("a submission's labs are found at its top, in labs/, or in one wrappin
         fs::create_directories(labs / "lab2_primary_rays");
         std::ofstream(labs / "lab2_primary_rays" / "perspective_camera.cpp") << "// mine\n";
     }
-    fs::create_directories(root / "wrapped" / "__MACOSX");
-    CHECK(findSubmittedLabs(root / "top", catalog) == root / "top");
-    CHECK(findSubmittedLabs(root / "inlabs", catalog) == root / "inlabs" / "labs");
-    CHECK(findSubmittedLabs(root / "wrapped", catalog) == root / "wrapped" / "raylab-main" / "labs");
-    CHECK(findSubmittedLabs(root / "wrappedtop", catalog) == root / "wrappedtop" / "my-labs");
+    fs::create_directories(root / "flat");
+    std::ofstream(root / "flat" / "perspective_camera.cpp") << "// mine\n";
+    fs::create_directories(root / "wrapped" / "__MACOSX" / "raylab-main" / "labs" / "lab2_primary_rays");
+    std::ofstream(root / "wrapped" / "__MACOSX" / "raylab-main" / "labs" / "lab2_primary_rays" / "perspective_camera.cpp")
+        << "resource fork\n";
+    for (const char* layout : {"top", "inlabs", "wrapped", "wrappedtop", "flat"}) {
+        CAPTURE(layout);
+        copySubmittedLabs(root / layout, catalog, root / "copied");
+        CHECK(readFile(root / "copied" / "lab2_primary_rays" / "perspective_camera.cpp") == "// mine\n");
+        CHECK_FALSE(fs::exists(root / "copied" / "lab1_first_image"));
+    }
     fs::create_directories(root / "none" / "a");
-    fs::create_directories(root / "none" / "b" / "lab2_primary_rays");
-    CHECK_THROWS_WITH_AS(findSubmittedLabs(root / "none", catalog), doctest::Contains("no lab folder"), std::runtime_error);
+    copySubmittedLabs(root / "none", catalog, root / "copied");
+    CHECK(fs::is_empty(root / "copied"));
 
-    fs::create_symlink(sourceDir() / "framework/grader/data/references/mistakes.toml",
-                       root / "top" / "lab2_primary_rays" / "stolen.toml");
+    fs::remove(root / "top" / "lab2_primary_rays" / "perspective_camera.cpp");
+    fs::create_symlink(sourceDir() / "solutions" / "lab2_primary_rays" / "perspective_camera.cpp",
+                       root / "top" / "lab2_primary_rays" / "perspective_camera.cpp");
     copySubmittedLabs(root / "top", catalog, root / "copied");
-    CHECK(readFile(root / "copied" / "lab2_primary_rays" / "perspective_camera.cpp") == "// mine\n");
-    CHECK_FALSE(fs::exists(root / "copied" / "lab2_primary_rays" / "stolen.toml"));
-    CHECK_FALSE(fs::exists(root / "copied" / "lab1_first_image"));
+    CHECK(fs::is_empty(root / "copied"));
 }
 
 TEST_CASE("one item alone: its lab, its verdict and points; an unknown name is refused") {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -105,6 +106,42 @@ TEST_CASE("grade-class builds and grades each student in its own folder: hostile
     CHECK((cache.find("CCACHE_BASEDIR=/") != std::string::npos) == !raylab::grader::findProgram("ccache").empty());
     CHECK(fs::exists(root / "out" / "students" / "bob" / "report" / "index.html"));
     CHECK(fs::exists(root / "out" / "students" / "alice" / "report" / "results.json"));
+}
+
+TEST_CASE("grade-class takes uploads as students make them: the files flat, odd extra names, a labs/ link to "
+          "solutions/ earns 0 and says why, a lab that does not compile costs that lab only") {
+    const fs::path root = fs::temp_directory_path() / "raylab-class-uploads";
+    fs::remove_all(root);
+    const fs::path flat = root / "class" / "flat", odd = root / "class" / "odd", linked = root / "class" / "linked",
+                   broken = root / "class" / "broken";
+    fs::create_directories(flat);
+    for (const auto& entry : fs::recursive_directory_iterator(sourceDir() / "solutions"))
+        if (entry.is_regular_file()) fs::copy_file(entry.path(), flat / entry.path().filename());
+    fs::create_directories(flat / "__MACOSX");
+    std::ofstream(flat / "__MACOSX" / "._look_at.cpp") << "resource fork";
+    fs::copy(sourceDir() / "solutions", odd, fs::copy_options::recursive);
+    for (const char* name : {"x;y.cpp", "${HOME}x.cpp", "it's a \"file\".cpp"})
+        std::ofstream(odd / "lab3_sphere" / name) << "not C++\n";
+    fs::create_directories(linked);
+    fs::create_directory_symlink(sourceDir() / "solutions", linked / "labs");
+    fs::copy(sourceDir() / "solutions", broken, fs::copy_options::recursive);
+    std::ofstream(broken / "lab4_lookat_camera" / "look_at.cpp", std::ios::app) << "\nint missing_semicolon = 1\n";
+
+    const int status = gradeClass(root / "class", root / "out");
+    REQUIRE_MESSAGE(status == 0, readFile(root / "class-output.txt"));
+    const auto rows = readCsv(readFile(root / "out" / "grades.csv"));
+    REQUIRE(rows.size() == 5);
+    std::map<std::string, std::vector<std::string>> row;
+    for (const auto& r : rows) row[r[0]] = r;
+    const auto points = [&](const std::string& name) { return std::vector<std::string>(row[name].begin() + 1, row[name].end() - 1); };
+    CHECK(points("flat") == std::vector<std::string>{"10", "16", "24", "12", "13", "75", "75"});
+    CHECK(row["flat"][8].empty());
+    CHECK(points("odd") == std::vector<std::string>{"10", "16", "24", "12", "13", "75", "75"});
+    CHECK(row["odd"][8].find("left out of the grade (3; the lab files are") != std::string::npos);
+    CHECK(points("linked") == std::vector<std::string>{"0", "0", "0", "0", "0", "0", "75"});
+    CHECK(row["linked"][8].find("no lab file found") != std::string::npos);
+    CHECK(row["linked"][8].find("labs: a symbolic link, not followed") != std::string::npos);
+    CHECK(points("broken") == std::vector<std::string>{"10", "16", "24", "0", "13", "63", "75"});
 }
 
 } // TEST_SUITE

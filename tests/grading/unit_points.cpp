@@ -125,6 +125,10 @@ TEST_CASE("a bad description is refused, naming the file, the line and the key")
     refused(replaced(kLab2, "handout = \"2(b)\"", "hand_out = \"2(b)\""), ":13: [[figure]] #1 hand_out: unknown key");
     refused(replaced(kLab2, "lab2_picture.toml", "lab2_missing.toml"), "[[figure]] #1 scene: expected lab2_picture.toml");
     refused(replaced(kLab2, "file = \"code.cpp\"", "file = \"gone.cpp\""), ":7: [[function]] #1 file: no file gone.cpp");
+    refused(replaced(kLab2, "file = \"code.cpp\"", "file = \"x;y.cpp\""),
+            ":7: [[function]] #1 file: \"x;y.cpp\" is not a plain file name");
+    refused(replaced(kLab2, "file = \"code.cpp\"", "file = \"../lab1_first/code.cpp\""), "is not a plain file name");
+    refused(replaced(kLab2, "file = \"code.cpp\"", "file = \"lab.toml\""), "is not a plain file name");
     refused(replaced(kLab2, ", fr = \"Rayons\" }", " }"), "title.fr: missing");
     refused(replaced(kLab2, "[[check]]\nname = \"trace: another check\"", "[[check]]\nname = \"trace: a check\""),
             "check: the name \"trace: a check\" is there twice");
@@ -132,6 +136,21 @@ TEST_CASE("a bad description is refused, naming the file, the line and the key")
     course.lab("lab2_rays", kLab2);
     course.lab("lab1_again", replaced(kLab1, "lab1_first", "lab1_again"));
     CHECK_THROWS_WITH_AS(course.load(), doctest::Contains("number: 1 is also the number of"), std::runtime_error);
+}
+
+TEST_CASE("a lab's files: each declared once, in order, and no two labs share a file's name") {
+    const Course course;
+    course.scene("lab2_picture");
+    course.lab("lab1_first", kLab1 + "[[function]]\nfile = \"code.cpp\"\nname = \"first\"\n");
+    course.lab("lab2_rays", kLab2 + "[[function]]\nfile = \"code.cpp\"\nname = \"again\"\n");
+    // A file uploaded without its folder goes to its lab by its name: two labs cannot both own it.
+    CHECK_THROWS_WITH_AS(course.load(), doctest::Contains("file code.cpp is also a file of"), std::runtime_error);
+    course.lab("lab1_first", kLab1);
+    const LabCatalog catalog = course.load();
+    CHECK(catalog.lab(2)->files() == std::vector<std::string>{"code.cpp"});
+    CHECK(catalog.lab(1)->files().empty());
+    const LabCatalog real = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
+    CHECK(real.lab(3)->files() == std::vector<std::string>{"sphere_geometry.cpp", "ray_cast_integrator.cpp"});
 }
 
 TEST_CASE("the course's descriptions agree with the references and the scene files") {

@@ -1,5 +1,7 @@
 #include "grader/course/autograder.h"
 
+#include "grader/course/submission_copy.h"
+
 #include <nlohmann/json.hpp>
 #include <zip.h>
 
@@ -16,25 +18,6 @@ namespace raylab::grader {
 namespace fs = std::filesystem;
 
 namespace {
-
-bool holdsLabFolder(const fs::path& folder, const LabCatalog& catalog) {
-    std::error_code error;
-    return std::any_of(catalog.labs.begin(), catalog.labs.end(),
-                       [&](const LabDescription& lab) { return fs::is_directory(folder / lab.id, error); });
-}
-
-// The one folder a submission's top holds, besides hidden files and what archivers add.
-fs::path wrappingFolder(const fs::path& submission) {
-    fs::path only;
-    std::error_code error;
-    for (const auto& entry : fs::directory_iterator(submission, error)) {
-        const std::string name = entry.path().filename().string();
-        if (name.empty() || name[0] == '.' || name == "__MACOSX") continue;
-        if (!entry.is_directory() || entry.is_symlink() || !only.empty()) return {};
-        only = entry.path();
-    }
-    return only;
-}
 
 // A double-quoted YAML scalar: JSON's string syntax is a subset of YAML's.
 std::string yamlString(const std::string& text) { return nlohmann::json(text).dump(); }
@@ -80,37 +63,8 @@ struct ZipArchive {
 
 } // namespace
 
-fs::path findSubmittedLabs(const fs::path& submission, const LabCatalog& catalog) {
-    std::vector<fs::path> candidates{submission, submission / "labs"};
-    if (const fs::path wrapper = wrappingFolder(submission); !wrapper.empty()) {
-        candidates.push_back(wrapper);
-        candidates.push_back(wrapper / "labs");
-    }
-    for (const fs::path& folder : candidates)
-        if (holdsLabFolder(folder, catalog)) return folder;
-    std::string names;
-    for (const LabDescription& lab : catalog.labs) names += (names.empty() ? "" : ", ") + lab.id + "/";
-    throw std::runtime_error("no lab folder in the submission: hand in the folders " + names +
-                             " at its top, in a labs/ folder, or in one folder that holds either");
-}
-
-void copySubmittedLabs(const fs::path& labs, const LabCatalog& catalog, const fs::path& destination) {
-    fs::remove_all(destination);
-    fs::create_directories(destination);
-    for (const LabDescription& lab : catalog.labs) {
-        const fs::path from = labs / lab.id;
-        std::error_code error;
-        if (!fs::is_directory(from, error) || fs::is_symlink(from, error)) continue;
-        for (auto it = fs::recursive_directory_iterator(from); it != fs::recursive_directory_iterator(); ++it) {
-            const fs::path target = destination / lab.id / it->path().lexically_relative(from);
-            if (it->is_symlink()) continue; // not followed, not copied
-            if (it->is_directory()) fs::create_directories(target);
-            else if (it->is_regular_file()) {
-                fs::create_directories(target.parent_path());
-                fs::copy_file(it->path(), target);
-            }
-        }
-    }
+void copySubmittedLabs(const fs::path& submission, const LabCatalog& catalog, const fs::path& destination) {
+    copySubmission(submission, catalog, destination);
 }
 
 int labOfItem(const LabCatalog& catalog, const std::string& item) {

@@ -14,14 +14,11 @@ namespace raylab::grader {
 
 // --- Submissions as students hand them in -----------------------------------------------------
 
-// The folder of a submission that holds its lab folders (named by the labs' ids): the submission
-// itself, its labs/, or either inside the one folder that wraps everything (an unpacked zip).
-// Throws std::runtime_error saying which layouts are accepted when none holds a lab folder.
-std::filesystem::path findSubmittedLabs(const std::filesystem::path& submission, const LabCatalog& catalog);
-
-// Copies the lab folders of `labs` that the catalog names into `destination`, emptied first: regular
-// files only (a link could point at the grader's own files).
-void copySubmittedLabs(const std::filesystem::path& labs, const LabCatalog& catalog,
+// Copies the lab files of a submission as students hand it in (lab folders at its top, in labs/, in a
+// wrapping folder, named otherwise, or the files flat) into `destination`, emptied first, as
+// `<lab id>/<file>`: regular files with the names lab.toml declares, nothing followed
+// (submission_copy.h).
+void copySubmittedLabs(const std::filesystem::path& submission, const LabCatalog& catalog,
                        const std::filesystem::path& destination);
 
 // --- One item alone (raylab grade --item) -------------------------------------------------------

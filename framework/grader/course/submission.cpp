@@ -110,11 +110,6 @@ std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>
     return agents;
 }
 
-fs::path submissionLabsFolder(const fs::path& submission) {
-    std::error_code error;
-    return fs::is_directory(submission / "labs", error) ? submission / "labs" : submission;
-}
-
 SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDir, const fs::path& labs,
                                 const fs::path& buildDir, const std::vector<int>& numbers) {
     SubmissionBuild b;
@@ -158,7 +153,13 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     } else if (fs::exists(agentFile(bin, "raylab-agent"), error)) {
         b.agents.push_back({agentFile(bin, "raylab-agent"), 0});
     } else {
-        b.brokenLabs = numbers;
+        // Some lab did not compile: each lab's own agent (the labs it uses from the submission, the
+        // others' stubs) grades it when its labs compiled.
+        for (int lab : numbers) {
+            const fs::path program = labAgent(bin, lab);
+            if (fs::exists(program, error)) b.agents.push_back({program, lab});
+            else b.brokenLabs.push_back(lab);
+        }
     }
     return b;
 }

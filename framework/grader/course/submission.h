@@ -1,8 +1,8 @@
 #pragma once
 // Room course/: submissions, class runs, the autograders and the grade reports; it may include every other room.
 //
-// Building a submission (a copy of labs/) into grading agents, with CMake, and finding the agents
-// of a build.
+// Building a submission (the grader's copy of its lab files, submission_copy.h) into grading agents,
+// with CMake, and finding the agents of a build.
 
 #include "grader/judge/grade.h"
 
@@ -19,8 +19,9 @@ struct Toolchain {
 };
 
 struct SubmissionBuild {
-    std::vector<AgentPlan> agents; // those that built
-    bool isolated = false;         // each lab's agent has the other labs from the reference
+    std::vector<AgentPlan> agents; // those that built: one for all labs, or one for each lab
+    bool isolated = false;         // each lab's agent has the other labs from the reference (else the
+                                   // labs it uses from the submission, the others' stubs)
     std::vector<int> brokenLabs;   // labs whose agent did not build
     std::string compilerMessage;   // the error lines of the build log, when something did not build
     std::filesystem::path log;
@@ -30,13 +31,11 @@ struct SubmissionBuild {
 // for all.
 std::vector<AgentPlan> findAgents(const std::filesystem::path& binDir, const std::vector<int>& labs, bool& isolated);
 
-// Configures (once) and builds the agents of the submission's folder `labs` in `buildDir`, keeping
-// going past errors so that the labs that compile are still graded. `numbers`: the course's labs.
+// Configures (once) and builds the agents of the submission's copy `labs` in `buildDir`, keeping
+// going past errors so that the labs that compile are still graded: a lab that does not compile costs
+// that lab and, without solutions/, the labs that use it. `numbers`: the course's labs.
 SubmissionBuild buildSubmission(const Toolchain& tools, const std::filesystem::path& sourceDir,
                                 const std::filesystem::path& labs, const std::filesystem::path& buildDir,
                                 const std::vector<int>& numbers);
-
-// A submission folder holds the lab folders directly or in a labs/ subfolder.
-std::filesystem::path submissionLabsFolder(const std::filesystem::path& submission);
 
 } // namespace raylab::grader

@@ -1,0 +1,183 @@
+// Submissions as students upload them, graded end to end by `raylab grade --labs`: the grader copies
+// the lab files itself (regular files with the names lab.toml declares, nothing followed), wherever
+// they are, and a lab that does not compile costs that lab and the labs that use it only.
+// The cases share one build folder: after the first, each recompiles only the lab files that changed.
+#include "grading_support.h"
+#include "grader/course/submission.h"
+#include "grader/sandbox/process.h"
+#include "support/files.h"
+#include "support/run_program.h"
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+using namespace raylab::test;
+
+namespace {
+
+const fs::path kRoot = fs::temp_directory_path() / "raylab-uploads";
+
+// A submission folder of its own, made empty.
+fs::path submission(const std::string& name) {
+    const fs::path folder = kRoot / "submissions" / name;
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
+}
+
+void write(const fs::path& file, const std::string& text) {
+    fs::create_directories(file.parent_path());
+    std::ofstream(file, std::ios::binary) << text;
+}
+
+struct Graded {
+    int status = -1;
+    std::string output;
+    std::map<int, std::string> labs; // "10 / 10" for each lab's line
+    std::string total;               // "75 / 75"
+};
+
+// `raylab grade --labs FOLDER`, in English, in the cases' shared build folder.
+Graded grade(const fs::path& folder) {
+    std::vector<std::string> argv{(binDir() / "raylab").string(), "grade", "--labs", folder.string(), "--build-dir",
+                                  (kRoot / "build").string(), "--report", (kRoot / "report").string(), "--lang", "en"};
+    const ProgramRun run = runProgram(argv, kRoot / "output.txt", kRoot);
+    Graded g{run.status, run.output, {}, {}};
+    std::istringstream lines(run.output);
+    const std::regex labLine(R"(^  lab (\d+): (.* / .*) points$)"), totalLine(R"(^  total: (.*)$)");
+    std::smatch match;
+    for (std::string line; std::getline(lines, line);) {
+        if (std::regex_match(line, match, labLine)) g.labs[std::stoi(match[1])] = match[2];
+        if (std::regex_match(line, match, totalLine)) g.total = match[1];
+    }
+    return g;
+}
+
+const std::vector<std::string> kLabFiles{"lab1_first_image/gradient.cpp", "lab2_primary_rays/perspective_camera.cpp",
+                                         "lab3_sphere/ray_cast_integrator.cpp", "lab3_sphere/sphere_geometry.cpp",
+                                         "lab4_lookat_camera/look_at.cpp", "lab5_antialiasing/pixel_samples.cpp"};
+
+} // namespace
+
+TEST_SUITE("uploads") {
+
+TEST_CASE("extra files named x;y.cpp, ${HOME}x.cpp or it's a \"file\".cpp cost nothing: listed, never given to CMake") {
+    fs::create_directories(kRoot);
+    const fs::path folder = submission("odd-names");
+    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+    for (const char* name : {"x;y.cpp", "${HOME}x.cpp", "it's a \"file\".cpp"})
+        write(folder / "lab3_sphere" / name, "this is not C++\n");
+    const Graded g = grade(folder);
+    CHECK_MESSAGE(g.total == "75 / 75", g.output);
+    CHECK(g.output.find("left out of the grade (3; the lab files are") != std::string::npos);
+    CHECK(g.output.find("lab3_sphere/x;y.cpp: not a lab file") != std::string::npos);
+    CHECK(g.output.find("lab3_sphere/it's a \"file\".cpp: not a lab file") != std::string::npos);
+    CHECK(g.output.find("CMake Error") == std::string::npos);
+}
+
+TEST_CASE("the six files uploaded flat, with __MACOSX and junk, grade 75/75") {
+    const fs::path folder = submission("flat");
+    for (const std::string& file : kLabFiles)
+        fs::copy_file(sourceDir() / "solutions" / file, folder / fs::path(file).filename());
+    write(folder / "__MACOSX" / "._look_at.cpp", "resource fork");
+    write(folder / "__MACOSX" / "look_at.cpp", "not C++ either");
+    write(folder / ".DS_Store", "junk");
+    write(folder / "screenshot.png", "not a PNG");
+    const Graded g = grade(folder);
+    CHECK_MESSAGE(g.total == "75 / 75", g.output);
+    CHECK(g.output.find("left out of the grade") == std::string::npos);
+}
+
+TEST_CASE("folders named otherwise (tp3/, \"Lab 3/\") inside a wrapping folder grade 75/75") {
+    const fs::path folder = submission("named-otherwise");
+    const std::vector<std::string> folders{"tp1", "TP 2", "Lab 3", "Lab 3", "lab4-final", "tp5"};
+    for (std::size_t k = 0; k < kLabFiles.size(); ++k) {
+        const fs::path to = folder / "my labs" / folders[k] / fs::path(kLabFiles[k]).filename();
+        fs::create_directories(to.parent_path());
+        fs::copy_file(sourceDir() / "solutions" / kLabFiles[k], to);
+    }
+    const Graded g = grade(folder);
+    CHECK_MESSAGE(g.total == "75 / 75", g.output);
+}
+
+TEST_CASE("a labs/ folder that is a link to solutions/ earns 0 and says why") {
+    const fs::path folder = submission("linked-labs");
+    fs::create_directory_symlink(sourceDir() / "solutions", folder / "labs");
+    const Graded g = grade(folder);
+    CHECK_MESSAGE(g.total == "0 / 75", g.output);
+    CHECK(g.output.find("no lab file found: upload the lab files (gradient.cpp, ") != std::string::npos);
+    CHECK(g.output.find("labs: a symbolic link, not followed") != std::string::npos);
+    CHECK(g.output.find("does not build") == std::string::npos);
+}
+
+TEST_CASE("a lab file that is a link to its solution is not read: that lab is graded as not written") {
+    const fs::path folder = submission("linked-file");
+    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+    fs::remove(folder / "lab4_lookat_camera" / "look_at.cpp");
+    fs::create_symlink(sourceDir() / "solutions" / "lab4_lookat_camera" / "look_at.cpp",
+                       folder / "lab4_lookat_camera" / "look_at.cpp");
+    const Graded g = grade(folder);
+    CHECK_MESSAGE(g.labs.count(4) == 1, g.output);
+    CHECK(g.labs.at(4) == "0 / 12");
+    CHECK(g.total == "63 / 75");
+    CHECK(g.output.find("lab4_lookat_camera/look_at.cpp: a symbolic link, not followed") != std::string::npos);
+}
+
+TEST_CASE("a folder with no lab file says what to upload, never that the code does not build") {
+    const fs::path folder = submission("empty");
+    write(folder / "README.md", "my labs are on my other computer\n");
+    const Graded g = grade(folder);
+    CHECK_MESSAGE(g.total == "0 / 75", g.output);
+    CHECK(g.output.find("no lab file found: upload the lab files") != std::string::npos);
+    CHECK(g.output.find("does not build") == std::string::npos);
+}
+
+TEST_CASE("a missing ';' in lab 4 costs lab 4 only: labs 1, 2, 3 and 5 (which does not use lab 4) keep their points") {
+    const fs::path folder = submission("lab4-broken");
+    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+    const fs::path lookAt = folder / "lab4_lookat_camera" / "look_at.cpp";
+    std::string code = readFile(lookAt);
+    const std::size_t semicolon = code.find("m_position = position;");
+    REQUIRE(semicolon != std::string::npos);
+    code.erase(semicolon + std::string("m_position = position").size(), 1);
+    write(lookAt, code);
+    const Graded g = grade(folder);
+    CHECK_MESSAGE(g.total == "63 / 75", g.output);
+    const std::map<int, std::string> expected{{1, "10 / 10"}, {2, "16 / 16"}, {3, "24 / 24"}, {4, "0 / 12"}, {5, "13 / 13"}};
+    CHECK(g.labs == expected);
+    CHECK(g.output.find("lab 4: the code does not build") != std::string::npos);
+    CHECK(g.output.find("look_at.cpp") != std::string::npos); // the compiler's message names the file
+}
+
+// The students' tree has no solutions/: no reference lab stands in for a broken one. The grader's
+// build of a submission there (buildSubmission on a copy of the tree without solutions/) gives each lab
+// an agent with the labs it uses from the submission and the others' stubs.
+TEST_CASE("in the students' tree, a missing ';' in lab 4 costs lab 4 only: labs 1, 2, 3 and 5 keep their points") {
+    const fs::path tree = kRoot / "students-tree";
+    fs::remove_all(tree);
+    fs::create_directories(tree);
+    for (const char* part : {"framework", "labs", "scenes", "cmake", "CMakeLists.txt", "CMakePresets.json"})
+        fs::copy(sourceDir() / part, tree / part, fs::copy_options::recursive);
+    REQUIRE_FALSE(fs::exists(tree / "solutions"));
+    const fs::path folder = submission("students-tree-lab4-broken");
+    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+    const fs::path lookAt = folder / "lab4_lookat_camera" / "look_at.cpp";
+    write(lookAt, "this line is not C++\n" + readFile(lookAt));
+
+    const raylab::grader::Toolchain tools{RAYLAB_CMAKE_COMMAND, RAYLAB_CMAKE_GENERATOR, raylab::grader::findProgram("ccache")};
+    const GradeSetup setup = courseSetup();
+    const raylab::grader::SubmissionBuild b =
+        raylab::grader::buildSubmission(tools, tree, folder, kRoot / "students-tree-build", setup.labs.numbers());
+    CHECK_FALSE(b.isolated);
+    CHECK(b.brokenLabs == std::vector<int>{4});
+    CHECK(b.compilerMessage.find("look_at.cpp") != std::string::npos);
+    const GradeResult result = gradeCode(setup, b.agents, b.isolated, b.brokenLabs, b.compilerMessage);
+    fs::remove_all(setup.scratch);
+    std::map<int, double> points;
+    for (const LabOutcome& lab : result.labs) points[lab.lab] = lab.points;
+    const std::map<int, double> expected{{1, 10.}, {2, 16.}, {3, 24.}, {4, 0.}, {5, 13.}};
+    CHECK_MESSAGE(points == expected, failures(result));
+}
+
+} // TEST_SUITE
