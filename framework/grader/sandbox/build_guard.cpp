@@ -12,6 +12,8 @@
 // A refusal is one line `raylab-build-guard: <why>: <source>[ <- <file read>]` on stderr, <why> one of `outside`,
 // `stopped`, `no-depfile` (the grader says it in the student's language, grader/submission.cpp),
 // and exit status 1, with the object file removed.
+#include "grader/sandbox/scratch_file.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
@@ -19,8 +21,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +41,7 @@ constexpr rlim_t kCpuSeconds = 120;
 constexpr unsigned kWallSeconds = 300; // --wall-seconds N (the tests)
 constexpr rlim_t kMemoryBytes = rlim_t(2) << 30;
 constexpr rlim_t kFileBytes = rlim_t(1) << 30;
+constexpr std::size_t kDepfileBytes = std::size_t(16) << 20; // a lab file's lists a few hundred headers
 
 volatile std::sig_atomic_t g_compiler = 0; // the compiler's process group, once started
 volatile std::sig_atomic_t g_timedOut = 0;
@@ -100,9 +101,7 @@ std::optional<Command> parse(int argc, char** argv) {
 }
 
 // The files a Make-style dependency file lists after its target: `obj: a.cpp b.h \` ...
-std::vector<std::string> dependencies(const std::string& depfile) {
-    std::ifstream in(depfile, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+std::vector<std::string> dependencies(const std::string& text) {
     std::vector<std::string> files;
     std::string word;
     bool pastTarget = false;
@@ -198,10 +197,13 @@ int main(int argc, char** argv) {
         return refuse("stopped", source, command->object);
     if (status != 0) return status;
     if (command->depfile.empty()) return refuse("no-depfile", source, command->object);
+    // Read as any file an untrusted build wrote: not through a link, not past a cap.
+    const raylab::grader::ScratchFile depfile = raylab::grader::readScratchFile(command->depfile, kDepfileBytes);
+    if (!depfile.found || depfile.refused || depfile.cut) return refuse("no-depfile", source, command->object);
 
     std::vector<fs::path> allowed;
     for (const fs::path& folder : command->allowed) allowed.push_back(resolved(folder));
-    for (const std::string& file : dependencies(command->depfile)) {
+    for (const std::string& file : dependencies(depfile.text)) {
         const fs::path real = resolved(file);
         const bool inside = std::any_of(allowed.begin(), allowed.end(), [&](const fs::path& f) { return isWithin(real, f); });
         if (!inside) return refuse("outside", source, command->object, real.string());

@@ -2,15 +2,18 @@
 
 #include "grader/sandbox/process.h"
 #include "grader/sandbox/sandbox_internal.h"
+#include "grader/sandbox/scratch_file.h"
 #include "src/messages.h"
 
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <fstream>
 #include <mutex>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #ifdef RAYLAB_POSIX_SANDBOX
 #include <algorithm>
 #include <cerrno>
@@ -46,12 +49,22 @@ std::string AgentRun::describe() const {
 
 namespace {
 
-std::string tail(const fs::path& file, std::size_t bytes = 2000) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream all;
-    all << in.rdbuf();
-    const std::string text = all.str();
-    return text.size() > bytes ? "..." + text.substr(text.size() - bytes) : text;
+constexpr std::size_t kMaxReportBytes = 64u << 20; // what the parent takes of a report: more than any honest one
+
+// The end of its error output for the report, and its output files cut down to what is kept. A file
+// that is no longer a file (a link to the solutions or /etc/shadow, a FIFO, /dev/zero) is never
+// read: that is an attack on the grader, and the run earns nothing.
+void collectOutput(const fs::path& scratch, AgentRun& run) {
+    constexpr std::size_t kReported = 2000;
+    for (const char* name : {"stdout.txt", "stderr.txt"}) {
+        const ScratchFile output = readScratchFile(scratch / name, kOutputKeptBytes, ScratchKeep::tail, true);
+        if (output.refused) {
+            run.violations.push_back(tr("sandbox.replaced_output", {{"file", name}}));
+        } else if (std::string_view(name) == "stderr.txt") {
+            const std::string& text = output.text;
+            run.stderrTail = text.size() > kReported ? "..." + text.substr(text.size() - kReported) : text;
+        }
+    }
 }
 
 std::vector<std::string> splitLines(const std::string& text) {
@@ -195,12 +208,11 @@ private:
             const ssize_t n = read(m_reportFd, m_buffer, sizeof m_buffer);
             if (n < 0 && errno == EINTR) continue;
             if (n <= 0) return n < 0; // EAGAIN: open but empty
-            if (m_received.size() < kMaxBytes) m_received.append(m_buffer, std::size_t(n));
+            if (m_received.size() < kMaxReportBytes) m_received.append(m_buffer, std::size_t(n));
             m_deadline = std::min(m_end, Clock::now() + seconds(m_limits.wallSeconds)); // it spoke: a new item's time
         }
     }
 
-    static constexpr std::size_t kMaxBytes = 64u << 20; // more than any honest report
     pid_t m_pid;
     int m_reportFd, m_requestFd;
     const SandboxLimits& m_limits;
@@ -295,12 +307,11 @@ AgentRun runAgent(const AgentCommand& command, const SandboxLimits& limits) {
     argv.insert(argv.end(), {"--request-file", requestFile.string(), "--report-file", results.string()});
     const ProcessResult ran = runProcess(argv, {c.scratch, c.scratch / "stderr.txt"});
     run.exitCode = ran.exitCode;
-    std::ifstream in(results, std::ios::binary);
-    std::stringstream all;
-    all << in.rdbuf();
-    run.lines = splitLines(all.str());
+    const ScratchFile answers = readScratchFile(results, kMaxReportBytes);
+    if (answers.refused) run.violations.push_back(tr("sandbox.replaced_output", {{"file", "results.jsonl"}}));
+    run.lines = splitLines(answers.text);
 #endif
-    run.stderrTail = tail(c.scratch / "stderr.txt");
+    collectOutput(c.scratch, run);
     return run;
 }
 
