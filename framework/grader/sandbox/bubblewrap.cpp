@@ -45,18 +45,25 @@ fs::path bubblewrap() {
     return probe.works ? probe.program : fs::path();
 }
 
-std::vector<std::string> bubblewrapArgs(const fs::path& bwrap, const AgentCommand& c) {
+std::vector<std::string> bubblewrapSystem(const fs::path& bwrap) {
     std::vector<std::string> args{bwrap.string()};
     args.insert(args.end(), std::begin(kBubblewrapIsolation), std::end(kBubblewrapIsolation));
-    args.insert(args.end(), {"--ro-bind", "/usr", "/usr", "--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp"});
+    args.insert(args.end(), {"--ro-bind", "/usr", "/usr", "--dev", "/dev", "--tmpfs", "/tmp"});
     // /lib, /bin ... are links into /usr on merged systems, folders elsewhere.
     for (const char* top : {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
         std::error_code error;
         if (fs::is_symlink(top, error)) args.insert(args.end(), {"--symlink", fs::read_symlink(top).string(), top});
         else if (fs::is_directory(top, error)) addBind(args, "--ro-bind", top);
     }
-    for (const char* file : {"/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/localtime"})
+    // /etc/alternatives: Debian's c++ and cc are links through it.
+    for (const char* file : {"/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/localtime", "/etc/alternatives"})
         addBind(args, "--ro-bind-try", file);
+    return args;
+}
+
+std::vector<std::string> bubblewrapArgs(const fs::path& bwrap, const AgentCommand& c) {
+    std::vector<std::string> args = bubblewrapSystem(bwrap);
+    args.insert(args.end(), {"--proc", "/proc"});
     addBind(args, "--bind", c.scratch);
     for (const fs::path& folder : c.writable) addBind(args, "--bind", folder);
     for (const fs::path& input : c.readable) addBind(args, "--ro-bind-try", input);

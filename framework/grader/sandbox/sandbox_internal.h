@@ -46,7 +46,11 @@ const BubblewrapProbe& bubblewrapProbe();
 // bwrap, when it can confine agents here.
 std::filesystem::path bubblewrap();
 
-// bwrap's arguments before the program: the system read-only, the given files, nothing else.
+// bwrap, its namespaces, and the system read-only (/usr, /lib..., the dynamic linker's files), its own
+// /dev and /tmp: what every confined program sees (an agent, the compiler).
+std::vector<std::string> bubblewrapSystem(const std::filesystem::path& bwrap);
+
+// bwrap's arguments before an agent: the system read-only, the given files, nothing else.
 std::vector<std::string> bubblewrapArgs(const std::filesystem::path& bwrap, const AgentCommand& c);
 
 // ---- child_setup.cpp ----
