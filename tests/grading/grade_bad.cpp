@@ -1,6 +1,8 @@
 // Bad submissions get the grade they earned, with a clear reason, and the run goes on.
 #include "grading_support.h"
 
+#include <fstream>
+
 using namespace raylab::test;
 
 namespace {
@@ -116,6 +118,22 @@ TEST_CASE("a submission that signals the grader: the grader goes on; without bub
             for (const std::string& p : r.problems) said |= p.find("sent signal 15") != std::string::npos;
             CHECK_MESSAGE(said, failures(r));
         }
+    }
+}
+
+TEST_CASE("a stderr.txt replaced with a link to a file of the grader's: that run earns nothing, no byte of the file is read") {
+    const std::string planted = "the grader's own file, which no submission may read back: solutions, /etc/shadow ...\n";
+    for (const bool bubblewrap : {false, true}) {
+        CAPTURE(bubblewrap);
+        GradeSetup setup = courseSetup();
+        setup.limits.bubblewrap = bubblewrap;
+        fs::create_directories(setup.scratch);
+        std::ofstream(setup.scratch / "planted.txt") << planted; // where the link points, beside the agent's folder
+        const GradeResult r = gradeAgent(setup, "raylab-bad-links_stderr");
+        expectCheck(r, "computeNormal: unit and pointing outwards", false, "replaced its output file stderr.txt");
+        expectFigure(r, "lab3_cosine", false);
+        CHECK(failures(r).find("the grader's own file") == std::string::npos);
+        CHECK(r.labs[2].points == 0.);
     }
 }
 

@@ -18,6 +18,7 @@
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace {
@@ -151,6 +152,17 @@ int main(int argc, char** argv) {
         } catch (const std::bad_alloc&) {
             report(R"({"kind":"refused"})");
         }
+    } else if (mode == "replace-stderr") { // arg: "symlink:TARGET", "hardlink:TARGET", "fifo" or "keep"
+        std::fprintf(stderr, "an honest line of error output\n");
+        std::fflush(stderr);
+        const std::string how = arg.substr(0, arg.find(':')), target = arg.substr(arg.find(':') + 1);
+        if (how != "keep") unlink("stderr.txt"); // its descriptor 2 still writes to the file unlinked
+        const int made = how == "symlink"    ? symlink(target.c_str(), "stderr.txt")
+                         : how == "hardlink" ? link(target.c_str(), "stderr.txt")
+                         : how == "fifo"     ? mkfifo("stderr.txt", 0644)
+                                             : 0;
+        report(std::string(R"({"kind":"replaced","made":)") + std::to_string(made) + "}");
+        return 1; // a failure, so that the grader shows the end of the error output
     } else if (mode == "cwd") {
         char cwd[4096];
         report(std::string(R"({"kind":"cwd","path":")") + (getcwd(cwd, sizeof cwd) ? cwd : "") + "\"}");

@@ -1,17 +1,23 @@
-// raylab-build-guard, the compiler launcher of a submission's files: a file that reads outside the
-// allowed folders (directly, through `..` or through a symlink) leaves no object and one refusal
-// line; an honest file compiles; a compiler that runs past the wall-clock limit is stopped whole.
+// raylab-build-guard, the compiler launcher of a submission's files: under bubblewrap the compiler
+// sees only what it was allowed, so a file that reads outside (`#include` directly, through `..` or a
+// symlink, the assembler's `.incbin`) does not compile; without it (RAYLAB_SANDBOX=none) the
+// dependency file is checked, a second wall: no object and one refusal line. An honest file compiles
+// in both; a compiler that runs past the wall-clock limit is stopped whole.
+#include "grader/sandbox/sandbox.h"
 #include "support/run_program.h"
 
 #include <doctest/doctest.h>
 
 #include <chrono>
 #include <fstream>
+#include <iterator>
+#include <vector>
 
 #ifndef _WIN32
 
 namespace fs = std::filesystem;
 using raylab::test::ProgramRun;
+using raylab::test::readFile;
 using raylab::test::runProgram;
 
 namespace {
@@ -33,39 +39,83 @@ struct Folders {
         fs::remove_all(root, ignored);
     }
     // Compiles submission/<file> through the guard, which allows the submission folder only (and no
-    // system header: -nostdinc).
-    ProgramRun compile(const std::string& file, const std::string& body) const {
+    // system header: -nostdinc); `confined`: under bubblewrap, else with RAYLAB_SANDBOX=none.
+    ProgramRun compile(const std::string& file, const std::string& body, bool confined = false) const {
         std::ofstream(submission / file) << body;
-        return runProgram({(fs::path(RAYLAB_GRADING_BIN) / "raylab-build-guard").string(), "--allow", submission.string(),
-                           "--", RAYLAB_CXX_COMPILER, "-nostdinc", "-MD", "-MF", (root / "file.d").string(), "-c",
-                           (submission / file).string(), "-o", (root / "file.o").string()},
-                          root / "output.txt");
+        std::vector<std::string> argv{"/usr/bin/env", confined ? "RAYLAB_SANDBOX=bubblewrap" : "RAYLAB_SANDBOX=none",
+                                      (fs::path(RAYLAB_GRADING_BIN) / "raylab-build-guard").string(),
+                                      "--allow", submission.string(), "--", RAYLAB_CXX_COMPILER, "-nostdinc", "-MD", "-MF",
+                                      (root / "file.d").string(), "-c", (submission / file).string(), "-o",
+                                      (root / "file.o").string()};
+        return runProgram(argv, root / "output.txt", root);
     }
     bool objectExists() const { return fs::exists(root / "file.o"); }
+    std::string object() const { return readFile(root / "file.o"); }
 };
+
+// The modes this system has: the dependency file's check always, bubblewrap when it works here.
+std::vector<bool> modes() {
+    if (raylab::grader::bubblewrapMissing().empty()) return {false, true};
+    MESSAGE("bubblewrap cannot run here: only the dependency file's check is tested");
+    return {false};
+}
+
+const std::string kSecret = "the reference answer, which no submission may read";
 
 } // namespace
 
 TEST_SUITE("build guard") {
 
 TEST_CASE("a file that includes only its own folder's files compiles") {
-    const Folders f;
-    const ProgramRun run = f.compile("honest.cpp", "#include \"own.h\"\nint f() { return own(); }\n");
-    CHECK_MESSAGE(run.status == 0, run.output);
-    CHECK(f.objectExists());
+    for (bool confined : modes()) {
+        CAPTURE(confined);
+        const Folders f;
+        const ProgramRun run = f.compile("honest.cpp", "#include \"own.h\"\nint f() { return own(); }\n", confined);
+        CHECK_MESSAGE(run.status == 0, run.output);
+        CHECK(f.objectExists());
+        CHECK(readFile(f.root / "file.d").find("own.h") != std::string::npos); // the dependency file is where the build expects it
+        CHECK(std::distance(fs::directory_iterator(f.root), fs::directory_iterator()) == 5); // no private folder left
+    }
 }
 
 TEST_CASE("including a file outside the allowed folders is refused, through .., an absolute path or a symlink") {
-    const Folders f;
-    fs::create_symlink(f.secret / "answer.h", f.submission / "link.h");
-    for (const std::string& include :
-         {std::string("../solutions/answer.h"), (f.secret / "answer.h").string(), std::string("link.h")}) {
-        CAPTURE(include);
-        const ProgramRun run = f.compile("sneaky.cpp", "#include \"" + include + "\"\nint f() { return answer(); }\n");
-        CHECK(run.status == 1);
-        CHECK_MESSAGE(run.output.find("raylab-build-guard: outside: ") != std::string::npos, run.output);
-        CHECK(run.output.find(fs::canonical(f.secret / "answer.h").string()) != std::string::npos);
-        CHECK_FALSE(f.objectExists());
+    for (bool confined : modes()) {
+        const Folders f;
+        fs::create_symlink(f.secret / "answer.h", f.submission / "link.h");
+        for (const std::string& include :
+             {std::string("../solutions/answer.h"), (f.secret / "answer.h").string(), std::string("link.h")}) {
+            CAPTURE(confined);
+            CAPTURE(include);
+            const ProgramRun run = f.compile("sneaky.cpp", "#include \"" + include + "\"\nint f() { return answer(); }\n", confined);
+            CHECK(run.status == 1);
+            CHECK_FALSE(f.objectExists());
+            if (confined) { // the file is not there for the compiler
+                CHECK_MESSAGE(run.output.find("No such file") != std::string::npos, run.output);
+            } else { // the dependency file names it
+                CHECK_MESSAGE(run.output.find("raylab-build-guard: outside: ") != std::string::npos, run.output);
+                CHECK(run.output.find(fs::canonical(f.secret / "answer.h").string()) != std::string::npos);
+            }
+        }
+    }
+}
+
+TEST_CASE("the assembler's .incbin of a file outside: under bubblewrap it does not compile; the dependency file does not "
+          "see it") {
+    for (bool confined : modes()) {
+        CAPTURE(confined);
+        const Folders f;
+        std::ofstream(f.secret / "answer.txt") << kSecret;
+        const ProgramRun run = f.compile(
+            "incbin.cpp", "asm(\".section .rodata\\n.incbin \\\"" + (f.secret / "answer.txt").string() + "\\\"\\n.text\");\n", confined);
+        CHECK(run.output.find(kSecret) == std::string::npos);
+        if (confined) {
+            CHECK(run.status == 1);
+            CHECK_MESSAGE(run.output.find("file not found") != std::string::npos, run.output);
+            CHECK_FALSE(f.objectExists());
+        } else { // why the compiler must be confined: the second wall alone lets it through
+            CHECK(run.status == 0);
+            CHECK(f.object().find(kSecret) != std::string::npos);
+        }
     }
 }
 

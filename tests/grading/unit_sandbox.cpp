@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -82,6 +83,33 @@ std::uintmax_t sizeOf(const fs::path& file) {
 }
 
 // True when `file` (a probe's heartbeat) stops growing: what wrote it is gone.
+// Its first megabyte (/dev/zero has no end).
+std::string readAll(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::string text(1 << 20, '\0');
+    in.read(text.data(), std::streamsize(text.size()));
+    text.resize(std::size_t(in.gcount()));
+    return text;
+}
+
+// Whether anything the grader keeps of `run` holds one of the lines of `secret` (20 characters or more).
+bool leaks(const AgentRun& run, const std::string& secret) {
+    std::istringstream lines(secret);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.size() < 20) continue;
+        if (run.stderrTail.find(line) != std::string::npos || run.describe().find(line) != std::string::npos) return true;
+        for (const std::string& l : run.lines)
+            if (l.find(line) != std::string::npos) return true;
+    }
+    return false;
+}
+
+bool violated(const AgentRun& run, const std::string& file) {
+    for (const std::string& v : run.violations)
+        if (v.find("replaced its output file " + file) != std::string::npos) return true;
+    return false;
+}
+
 bool heartbeatStopped(const fs::path& file) {
     const std::uintmax_t before = sizeOf(file);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
@@ -290,6 +318,58 @@ TEST_CASE("bubblewrap: nothing outside its scratch folder can be read, written o
     fs::remove_all(root);
 }
 
+TEST_CASE("a stderr.txt replaced with a link is not followed: the run is an attack, and no byte of the target is read") {
+    const fs::path solution = fs::path(RAYLAB_SOURCE_DIR) / "solutions" / "lab3_sphere" / "sphere_geometry.cpp";
+    REQUIRE(readAll(solution).size() > 100);
+    std::vector<fs::path> targets{solution, "/dev/zero"}; // /dev/zero would grow the grader without end
+    if (readAll("/etc/shadow").size() > 0) targets.push_back("/etc/shadow");
+    for (bool bwrap : sandboxes())
+        for (const fs::path& target : targets) {
+            CAPTURE(bwrap);
+            CAPTURE(target);
+            const AgentRun run = probe("replace-stderr", bwrap, {}, {"symlink:" + target.string()});
+            REQUIRE(hasLine(run, R"("made":0)"));
+            CHECK(violated(run, "stderr.txt"));
+            CHECK(run.describe().find("replaced its output file stderr.txt") != std::string::npos);
+            CHECK(run.stderrTail.empty());
+            CHECK_FALSE(leaks(run, readAll(target)));
+            CHECK(fs::is_symlink(scratchFor("replace-stderr", bwrap) / "stderr.txt")); // left as it was, unread
+        }
+}
+
+TEST_CASE("a stderr.txt replaced with a FIFO does not block the grader: the run is an attack") {
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        const AgentRun run = probe("replace-stderr", bwrap, {}, {"fifo"}); // a read of it would wait for ever
+        REQUIRE(hasLine(run, R"("made":0)"));
+        CHECK(violated(run, "stderr.txt"));
+    }
+}
+
+TEST_CASE("without bubblewrap, a stderr.txt hard-linked to a file of the grader's is neither read nor cut") {
+    const fs::path secret = fs::temp_directory_path() / "raylab-sandbox-test-secret.txt";
+    std::string text;
+    for (int k = 0; k < 4000; ++k) text += "secret line number " + std::to_string(k) + " of the grader's\n"; // > the kept size
+    std::ofstream(secret, std::ios::binary) << text;
+    const AgentRun run = probe("replace-stderr", false, {}, {"hardlink:" + secret.string()});
+    REQUIRE(hasLine(run, R"("made":0)"));
+    CHECK(violated(run, "stderr.txt"));
+    CHECK_FALSE(leaks(run, text));
+    CHECK(readAll(secret) == text); // not cut down to the kept size
+    fs::remove(scratchFor("replace-stderr", false) / "stderr.txt");
+    fs::remove(secret);
+}
+
+TEST_CASE("an honest error output is read back for the report") {
+    for (bool bwrap : sandboxes()) {
+        CAPTURE(bwrap);
+        const AgentRun run = probe("replace-stderr", bwrap, {}, {"keep"});
+        CHECK(run.violations.empty());
+        CHECK(run.exitCode == 1);
+        CHECK(run.stderrTail == "an honest line of error output\n");
+    }
+}
+
 TEST_CASE("a crash is reported as a crash") {
     for (bool bwrap : sandboxes()) {
         CAPTURE(bwrap);
@@ -307,7 +387,8 @@ TEST_CASE("output beyond the file size limit stops the child") {
         limits.fileBytes = 1 << 20;
         const AgentRun run = probe("spam", bwrap, limits);
         CHECK(run.signal == SIGXFSZ);
-        CHECK(fs::file_size(scratchFor("spam", bwrap) / "stdout.txt") <= (1u << 20));
+        // Cut down to what a run keeps, on disk too: the spam does not stay in the grader's folders.
+        CHECK(fs::file_size(scratchFor("spam", bwrap) / "stdout.txt") == kOutputKeptBytes);
     }
 }
 

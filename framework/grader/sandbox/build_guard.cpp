@@ -1,10 +1,14 @@
 // raylab-build-guard: the compiler launcher of a submission's lab files (POSIX; see
 // framework/grader/CMakeLists.txt). A submission is code we compile before any sandbox runs it, so
 // the compiler is where it can reach what it must not:
-//  - `#include "raylab/../../../solutions/lab3_sphere/sphere_geometry.cpp"` (or a classmate's
-//    file) would grade the reference as the student's work: every file the compiler read must lie
-//    in an allowed folder (the submission, the stubs, the include folders of the command line, the
-//    compiler's own), checked on the dependency file the compiler writes, after symlinks;
+//  - `#include "raylab/../../../solutions/lab3_sphere/sphere_geometry.cpp"`, `#embed` or the
+//    assembler's `.incbin` of a solution (or a classmate's file) would grade the reference as the
+//    student's work, or throw its bytes into the report: on Linux with bubblewrap the compiler runs
+//    confined (confined_compile.h), seeing only the allowed folders (the submission, the stubs, the
+//    include folders of the command line) and the system; RAYLAB_SANDBOX=none in the environment
+//    turns that off. Then, a second wall, every file the compiler read must lie in an allowed folder
+//    or the compiler's own, checked on the dependency file it writes, after symlinks (`.incbin` is
+//    not in it: only the sandbox stops that);
 //  - `#include "/dev/zero"` or a template that never ends would stall a class run: the compiler runs
 //    under CPU, memory and file-size limits and a wall-clock limit, in a process group of its own
 //    that is killed whole.
@@ -12,6 +16,10 @@
 // A refusal is one line `raylab-build-guard: <why>: <source>[ <- <file read>]` on stderr, <why> one of `outside`,
 // `stopped`, `no-depfile` (the grader says it in the student's language, grader/submission.cpp),
 // and exit status 1, with the object file removed.
+#include "grader/sandbox/confined_compile.h"
+#include "grader/sandbox/sandbox_internal.h"
+#include "grader/sandbox/scratch_file.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
@@ -19,8 +27,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +47,7 @@ constexpr rlim_t kCpuSeconds = 120;
 constexpr unsigned kWallSeconds = 300; // --wall-seconds N (the tests)
 constexpr rlim_t kMemoryBytes = rlim_t(2) << 30;
 constexpr rlim_t kFileBytes = rlim_t(1) << 30;
+constexpr std::size_t kDepfileBytes = std::size_t(16) << 20; // a lab file's lists a few hundred headers
 
 volatile std::sig_atomic_t g_compiler = 0; // the compiler's process group, once started
 volatile std::sig_atomic_t g_timedOut = 0;
@@ -100,9 +107,7 @@ std::optional<Command> parse(int argc, char** argv) {
 }
 
 // The files a Make-style dependency file lists after its target: `obj: a.cpp b.h \` ...
-std::vector<std::string> dependencies(const std::string& depfile) {
-    std::ifstream in(depfile, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+std::vector<std::string> dependencies(const std::string& text) {
     std::vector<std::string> files;
     std::string word;
     bool pastTarget = false;
@@ -177,6 +182,13 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
+// The compiler runs under bubblewrap whenever it can make its namespaces here, unless the grader says
+// RAYLAB_SANDBOX=none (`--no-sandbox`); the dependency file is checked in both cases, a second wall.
+bool confinedWithBubblewrap() {
+    const char* mode = std::getenv("RAYLAB_SANDBOX");
+    return !(mode && std::strcmp(mode, "none") == 0);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -193,15 +205,23 @@ int main(int argc, char** argv) {
     std::string source = command->object.empty() ? command->compiler.front() : command->object;
     for (std::size_t i = 0; i + 1 < command->compiler.size(); ++i)
         if (command->compiler[i] == "-c") source = command->compiler[i + 1];
-    const int status = compile(command->compiler, command->wallSeconds);
+    const fs::path bwrap = confinedWithBubblewrap() ? raylab::grader::detail::bubblewrap() : fs::path();
+    std::optional<raylab::grader::ConfinedCompile> confined;
+    if (!bwrap.empty()) confined.emplace(bwrap, command->compiler, command->allowed);
+    int status = compile(confined ? confined->command() : command->compiler, command->wallSeconds);
+    if (confined && (status == 128 + SIGXCPU || status == 128 + SIGKILL)) status = -1; // bwrap passes a signal on so
     if (status < 0)
         return refuse("stopped", source, command->object);
     if (status != 0) return status;
+    if (confined && !confined->deliver()) return refuse("no-depfile", source, command->object);
     if (command->depfile.empty()) return refuse("no-depfile", source, command->object);
+    // Read as any file an untrusted build wrote: not through a link, not past a cap.
+    const raylab::grader::ScratchFile depfile = raylab::grader::readScratchFile(command->depfile, kDepfileBytes);
+    if (!depfile.found || depfile.refused || depfile.cut) return refuse("no-depfile", source, command->object);
 
     std::vector<fs::path> allowed;
     for (const fs::path& folder : command->allowed) allowed.push_back(resolved(folder));
-    for (const std::string& file : dependencies(command->depfile)) {
+    for (const std::string& file : dependencies(depfile.text)) {
         const fs::path real = resolved(file);
         const bool inside = std::any_of(allowed.begin(), allowed.end(), [&](const fs::path& f) { return isWithin(real, f); });
         if (!inside) return refuse("outside", source, command->object, real.string());

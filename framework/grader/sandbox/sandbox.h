@@ -10,10 +10,12 @@
 // POSIX without bubblewrap: its own session and process group, the grader ignores (and records)
 // signals from it, and every process it started is killed when it ends. Both: rlimits on CPU,
 // memory and file size, a wall-clock limit per item, and results read from a pipe the parent
-// opened (its stdout goes to a capped file nobody trusts).
+// opened (its stdout goes to a capped file nobody trusts; what the parent reads back from its scratch
+// folder is read without following links, see scratch_file.h).
 // Windows: a plain child process with a result file and none of these limits (the student's own
 // machine, grading the student's own code).
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -31,6 +33,10 @@ struct SandboxLimits {
     bool bubblewrap = true; // use it when it is installed (false: `--no-sandbox`)
 };
 
+// What a run keeps of its stdout.txt and stderr.txt, on disk too (their last bytes): the file size
+// limit bounds them while it runs, this once it has ended.
+constexpr std::size_t kOutputKeptBytes = 64u << 10;
+
 struct AgentCommand {
     std::filesystem::path program;
     std::vector<std::string> args;
@@ -45,7 +51,8 @@ struct AgentRun {
     bool timedOut = false;
     int exitCode = -1; // when it exited
     int signal = 0;    // when a signal ended it
-    std::vector<std::string> violations; // what it tried against the grader ("sent signal 15 to the grader")
+    std::vector<std::string> violations; // what it tried against the grader ("sent signal 15 to the grader",
+                                         // "replaced its output file stderr.txt with a link or a special file")
     std::string stderrTail; // the end of its error output, for the report
     std::string describe() const; // "killed after 180 s", "exited with status 3", "crashed (signal 11)"
 };

@@ -1,0 +1,81 @@
+#include "grader/sandbox/confined_compile.h"
+
+#include "grader/sandbox/sandbox_internal.h"
+
+#include <cstdlib>
+#include <unistd.h>
+
+namespace raylab::grader {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool isWithinAny(const fs::path& path, const std::vector<fs::path>& folders) {
+    for (const fs::path& folder : folders) {
+        const fs::path relative = path.lexically_relative(folder);
+        if (!relative.empty() && *relative.begin() != "..") return true;
+    }
+    return false;
+}
+
+// A folder of its own beside `object`, made with mkdtemp: no other compile shares it.
+fs::path makePrivateFolder(const fs::path& object) {
+    std::string pattern = (object.parent_path() / ".raylab-guard-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) return {};
+    return pattern;
+}
+
+} // namespace
+
+ConfinedCompile::ConfinedCompile(const fs::path& bwrap, const std::vector<std::string>& compiler,
+                                 const std::vector<fs::path>& readable) {
+    std::vector<std::string> command = compiler;
+    std::vector<fs::path> bound;
+    for (std::size_t i = 0; i + 1 < command.size(); ++i) {
+        if (command[i] != "-o" && command[i] != "-MF") continue;
+        const fs::path place = fs::absolute(command[i + 1]);
+        if (m_private.empty()) m_private = makePrivateFolder(place);
+        if (m_private.empty()) break; // no private folder: the outputs stay unwritable, the compile fails
+        const fs::path file = m_private / (std::to_string(m_outputs.size()) + "-" + place.filename().string());
+        m_outputs.emplace_back(file, place);
+        command[i + 1] = file.string();
+    }
+    m_command = detail::bubblewrapSystem(bwrap);
+    const auto bind = [&](const char* how, const fs::path& path) {
+        m_command.insert(m_command.end(), {how, path.string(), path.string()});
+        bound.push_back(path);
+    };
+    for (const fs::path& folder : readable) bind("--ro-bind-try", fs::absolute(folder));
+    // The programs of the command (a launcher, the compiler) when they live outside /usr.
+    for (const std::string& word : compiler) {
+        std::error_code error;
+        const fs::path program(word);
+        if (program.is_absolute() && !isWithinAny(program, {"/usr"}) && fs::is_regular_file(program, error) &&
+            access(program.c_str(), X_OK) == 0)
+            bind("--ro-bind", program);
+    }
+    if (!m_private.empty()) bind("--bind", m_private);
+    // The compile's own folder: its relative paths (a -MT target) are read from there; empty inside.
+    const fs::path cwd = fs::current_path();
+    if (!isWithinAny(cwd, bound)) m_command.insert(m_command.end(), {"--dir", cwd.string()});
+    // ccache, when it is the launcher, compiles without its cache: the cache holds other builds' objects.
+    m_command.insert(m_command.end(), {"--setenv", "CCACHE_DISABLE", "1", "--chdir", cwd.string(), "--"});
+    m_command.insert(m_command.end(), command.begin(), command.end());
+}
+
+ConfinedCompile::~ConfinedCompile() {
+    std::error_code ignored;
+    if (!m_private.empty()) fs::remove_all(m_private, ignored);
+}
+
+bool ConfinedCompile::deliver() const {
+    for (const auto& [file, place] : m_outputs) {
+        std::error_code error;
+        fs::rename(file, place, error);
+        if (error) return false;
+    }
+    return true;
+}
+
+} // namespace raylab::grader
