@@ -1,4 +1,10 @@
 # Finds raylab's libraries. Where one is missing, the error says how to install it on each system.
+#
+# Grading needs only a C++20 compiler, CMake and zlib: the header-only libraries (GLM, stb, toml++,
+# CLI11, nlohmann-json) come from the system when it has them, else from third_party/<name>/include,
+# which `raylab autograder` fills from the instructor's headers (Gradescope's Ubuntu 22.04 has no
+# toml++). The compiled libraries of the tools and tests (cmark, libzip, doctest, yaml-cpp) are not
+# looked for when RAYLAB_GRADING_ONLY is ON.
 
 function(raylab_missing what debian homebrew vcpkg)
   message(FATAL_ERROR "raylab needs ${what}, which was not found. Install it with\n"
@@ -27,31 +33,74 @@ macro(raylab_pkg_check prefix)
   endif()
 endmacro()
 
-raylab_require_package(glm glm::glm "GLM (vector maths)" libglm-dev glm glm)
-raylab_require_package(tomlplusplus tomlplusplus::tomlplusplus "toml++ (scene files)" libtomlplusplus-dev tomlplusplus
-                       tomlplusplus)
+# Where each header-only library was found, for `raylab autograder` to copy into third_party/: lines
+# of framework/cli/third_party_sources.h (generated below).
+set(RAYLAB_THIRD_PARTY_ENTRIES "")
 
-# cmark (the report's Markdown to HTML): pkg-config first, since Debian's libcmark-dev ships a CMake
-# package that also wants the cmark program; elsewhere its CMake package.
-raylab_pkg_check(CMARK IMPORTED_TARGET libcmark)
-add_library(raylab_cmark INTERFACE)
-if(CMARK_FOUND)
-  target_link_libraries(raylab_cmark INTERFACE PkgConfig::CMARK)
-else()
-  raylab_require_package(cmark cmark::cmark "cmark (the report's Markdown)" libcmark-dev cmark cmark)
-  target_link_libraries(raylab_cmark INTERFACE cmark::cmark)
-endif()
+# raylab_record_headers(NAME INCLUDE_DIR DEBIAN ENTRIES...): NAME's headers are ENTRIES (files or
+# folders) of INCLUDE_DIR; its licence is the file its package installed beside them (Debian's
+# copyright, vcpkg's share/<name>/copyright, or a LICENSE at the prefix), empty when none is found.
+function(raylab_record_headers name include_dir debian)
+  set(licence_var RAYLAB_LICENCE_${name})
+  find_file(${licence_var} NAMES copyright LICENSE LICENSE.txt LICENSE.md COPYING LICENCE
+            PATHS ${include_dir}/../share/doc/${debian} ${include_dir}/../../share/doc/${debian}
+                  ${include_dir}/../share/${name} ${include_dir}/../share/licenses/${name} ${include_dir}/..
+            NO_DEFAULT_PATH)
+  set(licence ${${licence_var}})
+  if(NOT licence)
+    set(licence "")
+  endif()
+  list(JOIN ARGN ";" entries)
+  set(RAYLAB_THIRD_PARTY_ENTRIES
+      "${RAYLAB_THIRD_PARTY_ENTRIES}    {\"${name}\", R\"raylab(${include_dir})raylab\", \"${entries}\", R\"raylab(${licence})raylab\"},\n"
+      PARENT_SCOPE)
+endfunction()
 
-raylab_require_package(CLI11 CLI11::CLI11 "CLI11 (command line)" libcli11-dev cli11 cli11)
+# raylab_header_library(NAME PACKAGE TARGET HEADER WHAT DEBIAN HOMEBREW VCPKG ENTRIES...): TARGET from the
+# system's CMake package PACKAGE when there, else an interface target over third_party/NAME/include;
+# HEADER is one of its headers, relative to the include folder.
+function(raylab_header_library name package target header what debian homebrew vcpkg)
+  if(NOT TARGET ${target})
+    find_package(${package} CONFIG QUIET)
+  endif()
+  set(bundled ${CMAKE_SOURCE_DIR}/third_party/${name}/include)
+  if(TARGET ${target})
+    get_target_property(hints ${target} INTERFACE_INCLUDE_DIRECTORIES)
+    find_path(RAYLAB_HEADERS_${name} ${header} HINTS ${hints} NO_CACHE)
+    set(include_dir ${RAYLAB_HEADERS_${name}})
+  elseif(EXISTS ${bundled}/${header})
+    add_library(${target} INTERFACE IMPORTED GLOBAL)
+    set_target_properties(${target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${bundled})
+    set(include_dir ${bundled})
+    message(STATUS "raylab: ${what} from third_party/${name}")
+  else()
+    raylab_missing("${what}" ${debian} ${homebrew} ${vcpkg})
+  endif()
+  raylab_record_headers(${name} "${include_dir}" ${debian} ${ARGN})
+  set(RAYLAB_THIRD_PARTY_ENTRIES "${RAYLAB_THIRD_PARTY_ENTRIES}" PARENT_SCOPE)
+endfunction()
+
+raylab_header_library(glm glm glm::glm glm/glm.hpp "GLM (vector maths)" libglm-dev glm glm glm)
+# Debian's toml++ is a compiled library; the bundled headers are used header-only (toml++'s default).
+raylab_header_library(tomlplusplus tomlplusplus tomlplusplus::tomlplusplus toml++/toml.h "toml++ (scene files)"
+                      libtomlplusplus-dev tomlplusplus tomlplusplus toml++)
+raylab_header_library(cli11 CLI11 CLI11::CLI11 CLI/CLI.hpp "CLI11 (command line)" libcli11-dev cli11 cli11 CLI)
+raylab_header_library(nlohmann_json nlohmann_json nlohmann_json::nlohmann_json nlohmann/json.hpp
+                      "nlohmann-json (grader reports)" nlohmann-json3-dev nlohmann-json nlohmann-json nlohmann)
 
 # stb_image / stb_image_write: only their headers are taken (Debian's pkg-config stb also offers a
 # compiled libstb, not used); framework/src/stb_implementation.cpp compiles them, with zlib as the
 # PNG writer's deflate (docs/performance.md).
 raylab_pkg_check(STB stb)
 find_path(STB_INCLUDE_DIR stb_image_write.h HINTS ${STB_INCLUDE_DIRS} PATH_SUFFIXES stb)
+if(NOT STB_INCLUDE_DIR AND EXISTS ${CMAKE_SOURCE_DIR}/third_party/stb/include/stb_image_write.h)
+  set(STB_INCLUDE_DIR ${CMAKE_SOURCE_DIR}/third_party/stb/include CACHE PATH "stb's headers" FORCE)
+  message(STATUS "raylab: stb (image files) from third_party/stb")
+endif()
 if(NOT STB_INCLUDE_DIR)
   raylab_missing("stb (image files)" libstb-dev "stb" stb)
 endif()
+raylab_record_headers(stb "${STB_INCLUDE_DIR}" libstb-dev stb_image.h stb_image_write.h)
 find_package(ZLIB QUIET)
 if(NOT TARGET ZLIB::ZLIB)
   raylab_missing("zlib (PNG compression)" zlib1g-dev zlib zlib)
@@ -59,6 +108,32 @@ endif()
 add_library(raylab_stb STATIC ${CMAKE_SOURCE_DIR}/framework/src/stb_implementation.cpp)
 target_include_directories(raylab_stb SYSTEM PUBLIC ${STB_INCLUDE_DIR})
 target_link_libraries(raylab_stb PRIVATE ZLIB::ZLIB)
+
+configure_file(${CMAKE_CURRENT_LIST_DIR}/third_party_sources.h.in ${CMAKE_BINARY_DIR}/generated/third_party_sources.h
+               @ONLY)
+
+if(NOT RAYLAB_GRADING_ONLY)
+  # cmark (the report's Markdown to HTML): pkg-config first, since Debian's libcmark-dev ships a CMake
+  # package that also wants the cmark program; elsewhere its CMake package.
+  raylab_pkg_check(CMARK IMPORTED_TARGET libcmark)
+  add_library(raylab_cmark INTERFACE)
+  if(CMARK_FOUND)
+    target_link_libraries(raylab_cmark INTERFACE PkgConfig::CMARK)
+  else()
+    raylab_require_package(cmark cmark::cmark "cmark (the report's Markdown)" libcmark-dev cmark cmark)
+    target_link_libraries(raylab_cmark INTERFACE cmark::cmark)
+  endif()
+
+  # libzip: `raylab autograder gradescope` writes Gradescope's zip with it. Found by pkg-config:
+  # Debian's CMake package for it names programs (zipcmp ...) that libzip-dev does not install.
+  raylab_pkg_check(LIBZIP IMPORTED_TARGET GLOBAL libzip)
+  if(TARGET PkgConfig::LIBZIP)
+    add_library(libzip::zip ALIAS PkgConfig::LIBZIP)
+  else()
+    # Homebrew, vcpkg
+    raylab_require_package(libzip libzip::zip "libzip (the Gradescope autograder's zip)" libzip-dev libzip libzip)
+  endif()
+endif()
 
 if(BUILD_TESTING)
   raylab_require_package(doctest doctest::doctest "doctest (tests; or configure with -DBUILD_TESTING=OFF)" doctest-dev

@@ -6,10 +6,22 @@
 # folder's name) are read here. Sets RAYLAB_LAB_NUMBERS (sorted), RAYLAB_LAB_FOLDER_<n> and
 # RAYLAB_LABS (the folders, in the order of their numbers).
 
-if(EXISTS ${CMAKE_SOURCE_DIR}/solutions)
+#
+# The reference labs are solutions/<lab folder>/*.cpp, or, in Gradescope's image, the objects compiled
+# from them (*.o in the same folders: the zip's setup.sh builds them once, with the target
+# raylab-reference-objects, and deletes the sources). RAYLAB_HAVE_SOLUTIONS: the sources are here;
+# RAYLAB_HAVE_REFERENCE_LABS: the sources or their objects, enough to grade each lab on its own.
+file(GLOB raylab_solution_sources ${CMAKE_SOURCE_DIR}/solutions/lab*/*.cpp)
+file(GLOB raylab_solution_objects ${CMAKE_SOURCE_DIR}/solutions/lab*/*${CMAKE_CXX_OUTPUT_EXTENSION})
+if(raylab_solution_sources)
   set(RAYLAB_HAVE_SOLUTIONS ON)
 else()
   set(RAYLAB_HAVE_SOLUTIONS OFF)
+endif()
+if(raylab_solution_sources OR raylab_solution_objects)
+  set(RAYLAB_HAVE_REFERENCE_LABS ON)
+else()
+  set(RAYLAB_HAVE_REFERENCE_LABS OFF)
 endif()
 
 # raylab_read_lab_key(OUT FILE KEY REGEX): the value of FILE's top-level line `KEY = value` (the
@@ -61,6 +73,15 @@ function(raylab_lab_target out n origin)
   set(target raylab_lab${n}_${origin})
   if(NOT TARGET ${target})
     file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/${origin}/${folder}/*.cpp)
+    file(GLOB objects ${CMAKE_SOURCE_DIR}/${origin}/${folder}/*${CMAKE_CXX_OUTPUT_EXTENSION})
+    if(NOT sources AND objects AND origin STREQUAL "solutions")
+      # The reference compiled by the zip's setup.sh, its sources deleted.
+      add_library(${target} OBJECT IMPORTED GLOBAL)
+      set_target_properties(${target} PROPERTIES IMPORTED_OBJECTS "${objects}")
+      target_link_libraries(${target} INTERFACE raylab_framework)
+      set(${out} ${target} PARENT_SCOPE)
+      return()
+    endif()
     if(NOT sources)
       message(FATAL_ERROR "${origin}/${folder} has no .cpp file")
     endif()
@@ -81,7 +102,7 @@ function(raylab_link_labs target)
   set(origins "")
   foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
     if(n IN_LIST reference_labs)
-      if(NOT RAYLAB_HAVE_SOLUTIONS)
+      if(NOT RAYLAB_HAVE_REFERENCE_LABS)
         message(FATAL_ERROR "${target}: lab ${n} is asked from solutions/, but this tree has no solutions/")
       endif()
       set(origin solutions)
@@ -95,4 +116,27 @@ function(raylab_link_labs target)
   string(STRIP "${origins}" origins)
   target_link_libraries(${target} PRIVATE raylab_framework)
   target_compile_definitions(${target} PRIVATE RAYLAB_LAB_ORIGINS="${origins}")
+endfunction()
+
+# raylab_add_reference_objects_target(): `raylab-reference-objects` copies the compiled reference labs
+# beside their sources (solutions/<lab folder>/*.o), for the zip's setup.sh, which then deletes the
+# sources: the students' labs are graded each with the others' reference, which they cannot read.
+function(raylab_add_reference_objects_target)
+  set(commands "")
+  set(targets "")
+  foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
+    set(target raylab_lab${n}_solutions)
+    if(TARGET ${target})
+      get_target_property(imported ${target} IMPORTED)
+      if(NOT imported)
+        list(APPEND commands COMMAND ${CMAKE_COMMAND} -E copy $<TARGET_OBJECTS:${target}>
+             ${CMAKE_SOURCE_DIR}/solutions/${RAYLAB_LAB_FOLDER_${n}}/)
+        list(APPEND targets ${target})
+      endif()
+    endif()
+  endforeach()
+  if(targets)
+    add_custom_target(raylab-reference-objects ${commands} COMMAND_EXPAND_LISTS VERBATIM)
+    add_dependencies(raylab-reference-objects ${targets})
+  endif()
 endfunction()

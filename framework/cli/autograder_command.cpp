@@ -9,8 +9,16 @@
 #include "grader/sandbox/process.h"
 #include "grader/course/grade_reports.h"
 #include "src/atomic_file.h"
+#include "src/messages.h"
+#include "third_party_sources.h"
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <filesystem>
 #include <memory>
 #include <random>
@@ -23,39 +31,113 @@ namespace {
 namespace fs = std::filesystem;
 using namespace raylab::grader;
 
-int writeGradescopeZip(const fs::path& zip) {
+#ifndef RAYLAB_GRADING_ONLY // the instructors' side: a grading-only build has neither libzip nor distribute
+// The header-only libraries this program was built with, as third_party/<name>/ of the tree it writes
+// (include/ and the licence): Gradescope's Ubuntu 22.04 lacks toml++, and the zip's setup.sh installs
+// nothing but a compiler, CMake, make and zlib (cmake/RaylabDependencies.cmake takes them from there).
+std::vector<ZipEntry> thirdPartyEntries() {
+    std::vector<ZipEntry> entries;
+    for (const build::ThirdPartySource& library : build::kThirdPartySources) {
+        const std::string folder = std::string("raylab/third_party/") + library.name + "/";
+        const fs::path licence = library.licence;
+        if (licence.empty() || !fs::is_regular_file(licence))
+            throw std::runtime_error(tr("autograder.no_licence", {{"library", library.name}, {"folder", library.includeDir}}));
+        entries.push_back({folder + licence.filename().string(), licence, {}, false});
+        const fs::path include = library.includeDir;
+        std::string list = library.entries;
+        for (std::size_t start = 0; start <= list.size();) {
+            const std::size_t end = std::min(list.find(';', start), list.size());
+            const fs::path entry = list.substr(start, end - start);
+            start = end + 1;
+            const auto add = [&](const fs::path& file) {
+                entries.push_back({folder + "include/" + file.lexically_relative(include).generic_string(), file, {}, false});
+            };
+            if (fs::is_regular_file(include / entry)) add(include / entry);
+            else if (fs::is_directory(include / entry)) {
+                for (const auto& file : fs::recursive_directory_iterator(include / entry))
+                    if (file.is_regular_file()) add(file.path());
+            } else {
+                throw std::runtime_error(tr("autograder.no_header", {{"library", library.name}, {"path", (include / entry).string()}}));
+            }
+        }
+    }
+    return entries;
+}
+
+// The reference labs (solutions/<lab folder>/*.cpp): the zip's setup.sh compiles them once and deletes
+// them, so that each lab of a submission is graded with the others' reference.
+std::vector<ZipEntry> referenceLabEntries(const fs::path& source, const LabCatalog& catalog) {
+    std::vector<ZipEntry> entries;
+    for (const LabDescription& lab : catalog.labs) {
+        const fs::path folder = source / "solutions" / lab.id;
+        std::error_code error;
+        for (const auto& file : fs::directory_iterator(folder, error))
+            if (file.is_regular_file() && file.path().extension() == ".cpp")
+                entries.push_back({"raylab/solutions/" + lab.id + "/" + file.path().filename().string(), file.path(), {}, false});
+        if (error || entries.empty()) throw std::runtime_error(tr("autograder.no_reference", {{"folder", folder.string()}}));
+    }
+    return entries;
+}
+
+int writeGradescopeZip(const fs::path& zip, const Context& context) {
     std::vector<ZipEntry> entries{{"setup.sh", {}, gradescopeSetupScript(), true},
                                   {"run_autograder", {}, gradescopeRunScript(), true}};
     const fs::path source = fs::canonical(build::kSourceDir);
     for (const fs::path& relative : studentTreeFiles(source)) {
+        if (relative.begin()->string() == "third_party") continue; // written again below
         const fs::perms perms = fs::status(source / relative).permissions();
         entries.push_back({"raylab/" + relative.generic_string(), source / relative, {},
                            (perms & fs::perms::owner_exec) != fs::perms::none});
     }
+    for (ZipEntry& e : thirdPartyEntries()) entries.push_back(std::move(e));
+    for (ZipEntry& e : referenceLabEntries(source, loadLabCatalog(labsFolder(), context.scenes))) entries.push_back(std::move(e));
     if (zip.has_parent_path()) fs::create_directories(zip.parent_path());
     writeZip(zip, entries);
-    std::printf("raylab autograder gradescope: %s (setup.sh, run_autograder and the students' tree, %zu files)\n"
-                "  upload it as the assignment's autograder (Ubuntu 24.04 image); see docs/instructors.md\n",
-                zip.string().c_str(), entries.size() - 2);
+    std::printf("%s\n", tr("autograder.zip_written", {{"zip", zip.string()}, {"files", std::to_string(entries.size() - 2)}}).c_str());
     return 0;
 }
 
 int writeClassroomTree(const fs::path& out, const Context& context) {
     const LabCatalog catalog = loadLabCatalog(labsFolder(), context.scenes);
+    const std::string workflowText = classroomWorkflow(catalog); // refuses points Classroom cannot count, before any file
     const int files = writeStudentTree(build::kSourceDir, out);
     const fs::path workflow = out / ".github" / "workflows" / "classroom.yml";
     fs::create_directories(workflow.parent_path());
-    writeFileAtomically(workflow, classroomWorkflow(catalog));
-    std::printf("raylab autograder github: %d files and %s (%zu graded steps) -> %s\n"
-                "  push it as the assignment's template repository; see docs/instructors.md\n",
-                files, workflow.lexically_relative(out).generic_string().c_str(), classroomSteps(catalog).size(),
-                out.string().c_str());
+    writeFileAtomically(workflow, workflowText);
+    std::printf("%s\n", tr("autograder.classroom_written",
+                            {{"files", std::to_string(files)},
+                             {"workflow", workflow.lexically_relative(out).generic_string()},
+                             {"steps", std::to_string(classroomSteps(catalog).size())},
+                             {"folder", out.string()}})
+                             .c_str());
     return 0;
+}
+#endif
+
+// Gradescope's display fields, added to the results.json `raylab grade` wrote: its texts are plain
+// text (Gradescope's default would read them as simple_format), and the run's duration in seconds.
+// False when the file is not a JSON object (then nothing is kept).
+bool addGradescopeFields(const fs::path& resultsJson, double seconds) {
+    nlohmann::json results;
+    try {
+        std::ifstream in(resultsJson);
+        results = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception&) {
+        return false;
+    }
+    if (!results.is_object()) return false;
+    results["output_format"] = "text";
+    results["test_output_format"] = "text";
+    results["execution_time"] = std::max(0L, std::lround(seconds));
+    writeFileAtomically(resultsJson, results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    return true;
 }
 
 // Inside Gradescope's container: the submission's labs into the tree, `raylab grade --labs` on them
 // (its own process: whatever happens to it, results.json is written), results.json into results/.
 int runGradescope(const Context& context) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     const fs::path root = autograderRoot(), results = root / "results";
     const fs::path tree = build::kSourceDir, submitted = tree / "submission";
     fs::create_directories(results);
@@ -70,7 +152,7 @@ int runGradescope(const Context& context) {
                                        submitted.string(), "--build-dir", (tree / "build").string(), "--report",
                                        results.string()})
                                .exitCode;
-        if (fs::exists(results / "results.json", error)) return 0;
+        if (fs::exists(results / "results.json", error) && addGradescopeFields(results / "results.json", elapsed())) return 0;
         why = "the grader stopped (exit status " + std::to_string(status) + ") before it wrote the results";
     } catch (const std::exception& e) {
         why = e.what();
@@ -81,6 +163,7 @@ int runGradescope(const Context& context) {
     GradeResult nothing = gradeBuildFailure(loadGradeSetup(referencesFolder(), labsFolder(), context.scenes, scratch), why);
     fs::remove_all(scratch, error);
     writeGradescopeJson(nothing, results / "results.json");
+    addGradescopeFields(results / "results.json", elapsed());
     return 0;
 }
 
@@ -90,17 +173,19 @@ void addAutograderCommand(CLI::App& app, Context& context) {
     CLI::App* autograder = app.add_subcommand("autograder", "instructors: grade on Gradescope or GitHub Classroom");
     autograder->require_subcommand(1);
 
+#ifndef RAYLAB_GRADING_ONLY
     auto zip = std::make_shared<std::string>();
     CLI::App* gradescope =
         autograder->add_subcommand("gradescope", "write Gradescope's autograder zip (setup.sh, run_autograder, the tree)");
     gradescope->add_option("OUT.zip", *zip, "the zip to write")->required();
-    gradescope->callback([&context, zip] { context.exitStatus = writeGradescopeZip(*zip); });
+    gradescope->callback([&context, zip] { context.exitStatus = writeGradescopeZip(*zip, context); });
 
     auto out = std::make_shared<std::string>();
     CLI::App* github = autograder->add_subcommand(
         "github", "write the students' tree with GitHub Classroom's workflow (.github/workflows/classroom.yml)");
     github->add_option("OUT_DIR", *out, "the folder to create")->required();
     github->callback([&context, out] { context.exitStatus = writeClassroomTree(*out, context); });
+#endif
 
     CLI::App* run = autograder->add_subcommand(
         "run", "inside Gradescope (run_autograder): grade $RAYLAB_AUTOGRADER_ROOT/submission (default /autograder)");

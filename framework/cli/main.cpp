@@ -139,16 +139,22 @@ int main(int argc, char** argv) {
     // The student commands (figures, lab, render, grade, report) describe themselves in the reader's
     // language; the instructors' (references, distribute, autograder, study, numerics, bench,
     // bench-effects, grade-class) stay English.
+#ifndef RAYLAB_GRADING_ONLY // a build for grading alone (RAYLAB_GRADING_ONLY, framework/CMakeLists.txt)
     cli::addFigureCommands(app, context);
     cli::addBenchCommand(app, context);
+#endif
     cli::addGradeCommands(app, context);
+#ifndef RAYLAB_GRADING_ONLY
     cli::addReferencesCommand(app, context);
     cli::addDistributeCommand(app, context);
+#endif
     cli::addAutograderCommand(app, context);
+#ifndef RAYLAB_GRADING_ONLY
     cli::addStudyAntialiasingCommand(app, context);
     cli::addBenchEffectsCommand(app, context);
     cli::addNumericsCommands(app, context);
     cli::addReportCommand(app, context);
+#endif
     groupHelpFlags(app);
     if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
         std::fprintf(stderr, "%s\n", raylab::tr("cli.error", {{"what", unknown}}).c_str());

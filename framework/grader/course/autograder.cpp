@@ -1,15 +1,14 @@
 #include "grader/course/autograder.h"
 
 #include "grader/course/submission_copy.h"
+#include "src/messages.h"
 
 #include <nlohmann/json.hpp>
-#include <zip.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <memory>
-#include <random>
 #include <set>
 #include <stdexcept>
 
@@ -48,17 +47,6 @@ std::string shellQuote(const std::string& text) {
     std::string quoted = "'";
     for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return quoted + "'";
-}
-
-struct ZipArchive {
-    zip_t* archive = nullptr;
-    ~ZipArchive() {
-        if (archive) zip_discard(archive);
-    }
-};
-
-[[noreturn]] void zipFailure(zip_t* archive, const std::string& what) {
-    throw std::runtime_error(what + ": " + zip_strerror(archive));
 }
 
 } // namespace
@@ -111,28 +99,31 @@ std::string classroomCommand(const ClassroomStep& step) {
 
 std::string classroomWorkflow(const LabCatalog& catalog) {
     const std::vector<ClassroomStep> steps = classroomSteps(catalog);
+    for (const ClassroomStep& s : steps) // the reporter reads max-score with parseInt: 0.5 would count 0
+        if (!std::isfinite(s.points) || s.points != std::floor(s.points) || s.points < 0.)
+            throw std::invalid_argument(tr("autograder.points_not_integer", {{"item", s.name}, {"points", formatNumber(s.points, 6)}}));
+    // Every step after the build runs `if: always()`: a lab that does not compile fails the build step
+    // (built with -k, so the rest is built), and the items that were built are still graded.
     std::string yaml =
         "# Written by `raylab autograder github`: GitHub Classroom's autograding, one step per check and\n"
         "# figure of labs/*/lab.toml with its points (a step earns all or nothing), after one build.\n"
         "name: Autograding Tests\n"
-        "'on':\n- push\n- repository_dispatch\n"
+        "'on':\n- push\n- workflow_dispatch\n- repository_dispatch\n"
         "permissions:\n  checks: write\n  actions: read\n  contents: read\n"
         "jobs:\n  run-autograding-tests:\n    runs-on: ubuntu-latest\n"
         "    if: github.actor != 'github-classroom[bot]'\n    steps:\n"
         "    - name: Checkout code\n      uses: actions/checkout@v4\n"
-        "    - name: Build\n      run: scripts/setup.sh && cmake --preset default -DBUILD_TESTING=OFF && cmake --build build\n";
+        "    - name: Build\n      run: " + yamlString(classroomBuildCommand()) + "\n";
     for (const ClassroomStep& s : steps) {
-        char points[32];
-        std::snprintf(points, sizeof points, "%g", s.points);
         yaml += "    - name: " + yamlString(s.name) + "\n      id: " + s.id +
-                "\n      uses: classroom-resources/autograding-command-grader@v1\n      with:\n        test-name: " +
+                "\n      if: always()\n      uses: classroom-resources/autograding-command-grader@v1\n      with:\n        test-name: " +
                 yamlString(s.name) + "\n        setup-command: ''\n        command: " + yamlString(classroomCommand(s)) +
-                "\n        timeout: 10\n        max-score: " + points + "\n";
+                "\n        timeout: 10\n        max-score: " + std::to_string(std::lround(s.points)) + "\n";
     }
     yaml += "    - name: HTML report\n      if: always()\n      run: build/bin/raylab grade --report out/report || true\n"
             "    - name: Upload the HTML report\n      if: always()\n      uses: actions/upload-artifact@v4\n"
             "      with:\n        name: raylab-report\n        path: out/report\n"
-            "    - name: Autograding Reporter\n      uses: classroom-resources/autograding-grading-reporter@v1\n"
+            "    - name: Autograding Reporter\n      if: always()\n      uses: classroom-resources/autograding-grading-reporter@v1\n"
             "      env:\n";
     std::string runners;
     for (const ClassroomStep& s : steps) {
@@ -140,6 +131,13 @@ std::string classroomWorkflow(const LabCatalog& catalog) {
         runners += (runners.empty() ? "" : ",") + s.id;
     }
     return yaml + "      with:\n        runners: " + runners + "\n";
+}
+
+std::string classroomBuildCommand() {
+    // Only what grading needs, without link-time optimisation, on every core; -k: past a lab that
+    // does not compile, so that the others are built.
+    return "scripts/setup.sh && cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DRAYLAB_GRADING_ONLY=ON "
+           "-DRAYLAB_LTO=OFF && cmake --build build -j \"$(nproc)\" -- -k";
 }
 
 fs::path autograderRoot() {
@@ -150,21 +148,42 @@ fs::path autograderRoot() {
 std::string gradescopeSetupScript() {
     return R"script(#!/usr/bin/env bash
 # Written by `raylab autograder gradescope`. Gradescope runs it once, when it builds the autograder's
-# image: it installs the packages the students' tree needs, then builds raylab and the grading agent
-# (the stubs standing in for a submission), so that each submission only recompiles its lab files.
+# image (Ubuntu 22.04 or newer, Debian 12): it installs a compiler, CMake, make and zlib when they are
+# missing (the header-only libraries are in raylab/third_party/), compiles the reference labs once and
+# deletes their sources, then builds what grading needs (raylab and the grading agents, the stubs
+# standing in for a submission), without link-time optimisation, so that each submission only
+# recompiles its lab files and each of its labs is linked with the others' reference.
 # RAYLAB_AUTOGRADER_ROOT moves /autograder; RAYLAB_SKIP_PACKAGES=1 skips the installation.
 set -euo pipefail
 root="${RAYLAB_AUTOGRADER_ROOT:-/autograder}"
 tree="$root/source/raylab"
 if [ "${RAYLAB_SKIP_PACKAGES:-0}" != "1" ]; then
-  "$tree/scripts/setup.sh"
+  missing=()
+  for package in cmake g++ make zlib1g-dev; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+  done
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  if ((${#missing[@]})); then apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null; fi
+  # The grader's sandbox; without it (or where it cannot start) the grader confines the agents itself.
+  apt-get install -y -qq --no-install-recommends bubblewrap >/dev/null || echo "setup.sh: bubblewrap could not be installed"
+fi
+# A C++20 compiler: $CXX, else c++, else the newest g++ (11 or later) or clang++ (14 or later).
+if [ -z "${CXX:-}" ] && ! command -v c++ >/dev/null; then
+  for candidate in g++-14 g++-13 g++-12 g++-11 clang++-18 clang++-17 clang++-16 clang++-15 clang++-14; do
+    if command -v "$candidate" >/dev/null; then export CXX="$candidate"; break; fi
+  done
 fi
 rm -rf "$tree/submission"
 cp -R "$tree/labs" "$tree/submission"
-# Without link-time optimisation, as raylab grade builds a submission: the same pictures, quicker links.
-cmake -S "$tree" -B "$tree/build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
-  -DRAYLAB_SUBMISSION_DIR="$tree/submission" -DRAYLAB_LTO=OFF
-cmake --build "$tree/build" -j "$(nproc)"
+options=(-DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DRAYLAB_GRADING_ONLY=ON -DRAYLAB_LTO=OFF
+         "-DRAYLAB_SUBMISSION_DIR=$tree/submission")
+jobs="$(nproc)"
+cmake -S "$tree" -B "$tree/build" "${options[@]}"
+cmake --build "$tree/build" -j "$jobs" --target raylab-reference-objects
+find "$tree/solutions" -name '*.cpp' -delete
+cmake -S "$tree" -B "$tree/build" "${options[@]}"
+cmake --build "$tree/build" -j "$jobs"
 )script";
 }
 
@@ -178,43 +197,6 @@ set -euo pipefail
 root="${RAYLAB_AUTOGRADER_ROOT:-/autograder}"
 exec "$root/source/raylab/build/bin/raylab" autograder run
 )script";
-}
-
-void writeZip(const fs::path& zip, const std::vector<ZipEntry>& entries) {
-    std::random_device random;
-    const fs::path temporary = zip.string() + ".tmp-" + std::to_string(random());
-    int code = 0;
-    ZipArchive archive;
-    archive.archive = zip_open(temporary.string().c_str(), ZIP_CREATE | ZIP_TRUNCATE, &code);
-    if (!archive.archive) {
-        zip_error_t error;
-        zip_error_init_with_code(&error, code);
-        const std::string message = zip_error_strerror(&error);
-        zip_error_fini(&error);
-        throw std::runtime_error("cannot write " + temporary.string() + ": " + message);
-    }
-    for (const ZipEntry& e : entries) {
-        zip_source_t* source = e.file.empty()
-                                   ? zip_source_buffer(archive.archive, e.content.data(), e.content.size(), 0)
-                                   : zip_source_file(archive.archive, e.file.string().c_str(), 0, -1);
-        if (!source) zipFailure(archive.archive, e.name);
-        const zip_int64_t index = zip_file_add(archive.archive, e.name.c_str(), source, ZIP_FL_ENC_UTF_8);
-        if (index < 0) {
-            zip_source_free(source);
-            zipFailure(archive.archive, e.name);
-        }
-        const zip_uint32_t mode = 0100000u | (e.executable ? 0755u : 0644u); // a regular file
-        if (zip_file_set_external_attributes(archive.archive, zip_uint64_t(index), 0, ZIP_OPSYS_UNIX, mode << 16) < 0)
-            zipFailure(archive.archive, e.name);
-    }
-    if (zip_close(archive.archive) < 0) {
-        const std::string message = zip_strerror(archive.archive);
-        std::error_code error;
-        fs::remove(temporary, error);
-        throw std::runtime_error("cannot write " + zip.string() + ": " + message);
-    }
-    archive.archive = nullptr;
-    fs::rename(temporary, zip);
 }
 
 } // namespace raylab::grader

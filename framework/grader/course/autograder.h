@@ -44,9 +44,16 @@ std::vector<ClassroomStep> classroomSteps(const LabCatalog& catalog);
 // The command a step runs in the students' repository (POSIX shell).
 std::string classroomCommand(const ClassroomStep& step);
 
-// .github/workflows/classroom.yml: checkout, one build step, a command-grader step per item, the
-// HTML report uploaded as an artifact, then the grading reporter over every step.
+// .github/workflows/classroom.yml (on push, workflow_dispatch and repository_dispatch): checkout,
+// one build step, a command-grader step per item, the HTML report uploaded as an artifact, then the
+// grading reporter over every step; every step after the build runs even when the build failed.
+// Throws std::invalid_argument when an item's points are not a whole number (the reporter reads
+// them with parseInt).
 std::string classroomWorkflow(const LabCatalog& catalog);
+
+// The workflow's build: only what grading needs, without link-time optimisation, on every core,
+// past the files that do not compile (POSIX shell).
+std::string classroomBuildCommand();
 
 // --- Gradescope ----------------------------------------------------------------------------------
 
@@ -54,7 +61,8 @@ std::string classroomWorkflow(const LabCatalog& catalog);
 inline constexpr const char* kAutograderRootVariable = "RAYLAB_AUTOGRADER_ROOT";
 std::filesystem::path autograderRoot();
 
-// The zip's two scripts. The students' tree is the zip's raylab/ folder, so /autograder/source/raylab.
+// The zip's two scripts. The students' tree is the zip's raylab/ folder, so /autograder/source/raylab;
+// it carries the reference labs (solutions/) and the header-only libraries (third_party/).
 std::string gradescopeSetupScript();
 std::string gradescopeRunScript();
 
