@@ -182,12 +182,13 @@ int gradeClass(const ClassRunOptions& run, const GradeOptions& o, const Context&
         GradeOptions student = o;
         student.labs = work.submission.string();
         const fs::path buildDir = o.buildDir.empty() ? work.folder / "build" : fs::path(o.buildDir) / work.folder.filename();
+        const std::string title = "raylab grade " + printableName(work.name);
         GradeResult result;
         try {
-            result = gradeCodeOnce(student, setup, toolchain(true), buildDir, "raylab grade " + work.name);
+            result = gradeCodeOnce(student, setup, toolchain(true), buildDir, title);
         } catch (const std::exception& e) { // one student's trouble never stops the class
             result = gradeBuildFailure(setup, e.what());
-            result.title = "raylab grade " + work.name;
+            result.title = title;
         }
         writeReports(result, setup.references, work.folder / "report");
         std::printf("%-20s %g / %g\n", printableName(work.name).c_str(), result.score(), result.maxScore());

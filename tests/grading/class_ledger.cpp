@@ -2,6 +2,7 @@
 // a second run on the same --out refuses (or waits); hostile folder names each get their own row.
 // The students are graded by a prebuilt agent (--agent), so no test here runs CMake.
 #include "support/files.h"
+#include "grader/course/class_run.h"
 #include "grading_support.h"
 #include "support/read_csv.h"
 
@@ -152,11 +153,13 @@ TEST_CASE("a second grade-class on the same --out refuses, naming the lock and t
     CHECK_MESSAGE(after.finish() == 0, after.text());
 }
 
-TEST_CASE("hostile folder names each get their own row with the real name and full points; odd entries are skipped") {
+TEST_CASE("hostile folder names each get their own row with their printable name and full points; formulas are "
+          "defused; odd entries are skipped") {
     const fs::path root = freshFolder("raylab-ledger-names");
     const std::vector<std::string> names{"x$(touch PWNED)", "back`touch PWNED`tick", "double\"quote", "it's", "with space",
                                          "-leading-dash", "ünïcödé 名前", "a,b", "new\nline", "grades.csv", "build",
-                                         "students", "%41", "A"};
+                                         "students", "%41", "A", "=1+2*3", "=HYPERLINK(\"evil\",\"click\")", "bad\xFEname",
+                                         "bad\xFFname", "esc\x1B[2J"};
     const fs::path classDir = makeClass(root, names);
     std::ofstream(classDir / "notes.txt") << "not a submission";
     fs::create_directories(classDir / "empty");
@@ -173,6 +176,9 @@ TEST_CASE("hostile folder names each get their own row with the real name and fu
     CHECK_MESSAGE(lines.find("\nskipped 'link': a symbolic link") != std::string::npos, output);
     CHECK_MESSAGE(lines.find("\nskipped 'loop': a symbolic link") != std::string::npos, output);
     CHECK_MESSAGE(output.find("new\\nline") != std::string::npos, output); // one line in the terminal
+    CHECK_MESSAGE(output.find("bad\\xFEname") != std::string::npos, output);
+    CHECK_MESSAGE(output.find("esc\\x1B[2J") != std::string::npos, output);
+    CHECK_MESSAGE(output.find('\x1B') == std::string::npos, output);
 
     const auto rows = readCsv(readFile(root / "out" / "grades.csv"));
     REQUIRE(!rows.empty());
@@ -182,11 +188,20 @@ TEST_CASE("hostile folder names each get their own row with the real name and fu
     const std::size_t total = std::size_t(std::find(header.begin(), header.end(), "total") - header.begin());
     REQUIRE(total + 1 < header.size());
     CHECK(rows.size() == names.size() + 1);
+    // A spreadsheet reads a formula as text; two names that differ in bytes that are not UTF-8 differ.
+    const auto shownInCsv = [](const std::string& name) {
+        const std::string shown = raylab::grader::printableName(name);
+        return std::string("=+-@").find(shown[0]) != std::string::npos ? "'" + shown : shown;
+    };
+    CHECK(shownInCsv("=1+2*3") == "'=1+2*3");
+    CHECK(shownInCsv("-leading-dash") == "'-leading-dash");
+    CHECK(shownInCsv("bad\xFEname") == "bad\\xFEname");
+    CHECK(shownInCsv("new\nline") == "new\\nline");
     for (const std::string& name : names) {
-        CAPTURE(name);
+        CAPTURE(raylab::grader::printableName(name));
         int found = 0;
         for (const auto& row : rows)
-            if (row[0] == name) {
+            if (row[0] == shownInCsv(name)) {
                 ++found;
                 REQUIRE(row.size() == header.size());
                 CHECK(row[total] == row[total + 1]); // total == max

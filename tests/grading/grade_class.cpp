@@ -2,6 +2,7 @@
 // for the labs that do not build, with the compiler's message.
 #include "support/files.h"
 #include "grading_support.h"
+#include "grader/course/class_run.h"
 #include "grader/sandbox/process.h"
 #include "support/read_csv.h"
 #include "support/run_program.h"
@@ -82,7 +83,8 @@ TEST_CASE("grade-class builds and grades each student in its own folder: hostile
     CHECK(rows[0] == std::vector<std::string>{"student", "lab1", "lab2", "lab3", "lab4", "lab5", "total", "max", "problems"});
     for (const std::string& name : kHostileNames) {
         CAPTURE(name);
-        CHECK(std::count_if(rows.begin(), rows.end(), [&](const auto& row) { return row[0] == name; }) == 1);
+        const std::string shown = raylab::grader::printableName(name); // one line in grades.csv
+        CHECK(std::count_if(rows.begin(), rows.end(), [&](const auto& row) { return row[0] == shown; }) == 1);
     }
     for (const auto& row : rows) {
         CAPTURE(row[0]);

@@ -1,7 +1,9 @@
-// The class ledger's pieces: a safe folder name for any student name, one to one; CSV cells that a
-// real CSV reader reads back as they were; the problems cell, short and whole characters.
+// The class ledger's pieces: a safe folder name for any student name, one to one; a printable name,
+// one to one too; CSV cells that a real CSV reader reads back as they were, formulas defused; the
+// problems cell, short and whole characters.
 #include "grader/course/class_run.h"
 #include "src/csv.h"
+#include "src/text.h"
 #include "support/read_csv.h"
 
 #include <doctest/doctest.h>
@@ -45,10 +47,37 @@ TEST_CASE("safe student names: one to one, file names of plain characters that n
     CHECK(safeStudentName("a%2Cb") == "a%252Cb");
 }
 
-TEST_CASE("printable names: one line, control characters shown") {
+TEST_CASE("printable names: one line of UTF-8, control characters and bytes that are not UTF-8 shown, one to one") {
     CHECK(printableName("new\nline") == "new\\nline");
     CHECK(printableName("tab\there\x01") == "tab\\there\\x01");
-    CHECK(printableName("ünïcödé") == "ünïcödé");
+    CHECK(printableName("ünïcödé 名前 😀") == "ünïcödé 名前 😀");
+    CHECK(printableName("bad\xFEname") == "bad\\xFEname");
+    CHECK(printableName("bad\xFFname") == "bad\\xFFname");
+    CHECK(printableName("esc\x1B[31m, del\x7F, csi\xC2\x9B") == "esc\\x1B[31m, del\\x7F, csi\\xC2\\x9B");
+    CHECK(printableName("overlong\xC0\xAF, surrogate\xED\xA0\x80, cut\xE2\x82") ==
+          "overlong\\xC0\\xAF, surrogate\\xED\\xA0\\x80, cut\\xE2\\x82");
+    CHECK(printableName("nonchar\xEF\xBF\xBF") == "nonchar\\xEF\\xBF\\xBF");
+    CHECK(printableName("back\\slash") == "back\\\\slash");
+    // Two names never print alike: a byte and the text that shows it, U+FFFD and a bad byte.
+    std::set<std::string> shown;
+    for (const std::string& name : std::vector<std::string>{"bad\xFEname", "bad\xFFname", "bad\\xFEname", "bad\xEF\xBF\xBDname", "new\nline",
+                                   "new\\nline", std::string("nul\0", 4), "nul\\x00"})
+        CHECK_MESSAGE(shown.insert(printableName(name)).second, printableName(name));
+}
+
+TEST_CASE("printable messages keep their lines and tabs, and are UTF-8 whatever the bytes") {
+    CHECK(raylab::printableText("a\nb\tc\r\n") == "a\nb\tc\r\n");
+    CHECK(raylab::printableText("\x1B[2Jcleared \xFE") == "\\x1B[2Jcleared \\xFE");
+    CHECK(raylab::printableText("C:\\path") == "C:\\path");
+}
+
+TEST_CASE("CSV cells a spreadsheet would run as a formula read as text; numbers stay numbers") {
+    const std::vector<std::string> cells{"=1+2*3", "=HYPERLINK(\"http://x\",\"y\")", "+1+1", "-1+1", "@SUM(A1)", "\tx",
+                                         "\rx", "-", "-1.5", "+2", "3e-4", "-.5", "x=1", ""};
+    const auto rows = raylab::test::readCsv(raylab::csvLine(cells));
+    REQUIRE(rows.size() == 1);
+    CHECK(rows[0] == std::vector<std::string>{"'=1+2*3", "'=HYPERLINK(\"http://x\",\"y\")", "'+1+1", "'-1+1", "'@SUM(A1)",
+                                              "'\tx", "'\rx", "'-", "-1.5", "+2", "3e-4", "-.5", "x=1", ""});
 }
 
 TEST_CASE("CSV lines read back by a CSV reader as the cells they were written from") {

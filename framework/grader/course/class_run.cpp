@@ -2,6 +2,7 @@
 
 #include "src/atomic_file.h"
 #include "src/csv.h"
+#include "src/text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -45,7 +46,7 @@ std::string recordJson(const StudentRecord& record) {
     nlohmann::json cells = nlohmann::json::array();
     for (const auto& [column, value] : record.cells) cells.push_back({{"column", column}, {"value", value}});
     const nlohmann::json root{{"student", record.student}, {"cells", cells}};
-    // A name that is not UTF-8 is kept in the folder's safe name; here it reads with U+FFFD.
+    // Printable text is UTF-8 already: the handler only guards a hand-made record.
     return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
@@ -91,7 +92,7 @@ void writeGrades(const fs::path& out, const std::map<std::string, StudentRecord>
         for (const std::string& column : columns) {
             const auto cell = std::find_if(record->cells.begin(), record->cells.end(),
                                            [&](const auto& c) { return c.first == column; });
-            line.push_back(cell != record->cells.end() ? cell->second : "");
+            line.push_back(cell != record->cells.end() ? printableText(cell->second) : "");
         }
         csv += csvLine(line);
     }
@@ -253,7 +254,8 @@ public:
 enum class Outcome { Graded, Stopped, Failed };
 
 void gradeAndRecord(const StudentWork& work, const GradeStudent& grade) {
-    const StudentRecord record = grade(work);
+    StudentRecord record = grade(work);
+    record.student = printableName(work.name); // the row's name, whatever the grading called it
     writeFileAtomically(work.folder / kResultFile, recordJson(record)); // last: the grading finished
 }
 
@@ -355,20 +357,7 @@ std::string safeStudentName(const std::string& folderName) {
     return cut;
 }
 
-std::string printableName(const std::string& folderName) {
-    std::string shown;
-    for (char ch : folderName) {
-        const unsigned char c = static_cast<unsigned char>(ch);
-        if (c == '\n') shown += "\\n";
-        else if (c == '\t') shown += "\\t";
-        else if (c < 0x20 || c == 0x7f) {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "\\x%02X", c);
-            shown += hex;
-        } else shown += ch;
-    }
-    return shown;
-}
+std::string printableName(const std::string& folderName) { return printableText(folderName, TextForm::Name); }
 
 int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
     const fs::path& out = options.out;

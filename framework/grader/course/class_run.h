@@ -13,7 +13,8 @@
 
 namespace raylab::grader {
 
-// A student's row of grades.csv: the real folder name and the cells after it, by column.
+// A student's row of grades.csv: the folder's name as printableName shows it, and the cells after
+// it, by column.
 struct StudentRecord {
     std::string student;
     std::vector<std::pair<std::string, std::string>> cells; // column, value
@@ -46,7 +47,8 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade);
 // 160 bytes is cut and ends with '~' and a 64-bit hash of the whole name.
 std::string safeStudentName(const std::string& folderName);
 
-// The name as one line of a terminal: control characters as \n, \t or \xHH.
+// The name as one line of UTF-8 for the terminal, grades.csv and the reports, one to one: control
+// characters as \n, \t, \r or \xHH, bytes that are not UTF-8 as \xHH, a backslash as \\.
 std::string printableName(const std::string& folderName);
 
 // A problem as a cell of grades.csv: its first line and its first three error lines (a build
