@@ -6,6 +6,7 @@
 #include "grader/course/class_run.h"
 #include "grader/judge/grade.h"
 #include "grader/course/grade_reports.h"
+#include "grader/course/run_scratch.h"
 #include "grader/sandbox/process.h"
 #include "grader/sandbox/sandbox.h"
 #include "grader/course/submission.h"
@@ -174,10 +175,13 @@ void requireBubblewrapForClass(const GradeOptions& o) {
 #endif
 }
 
-int gradeClass(const ClassRunOptions& run, const GradeOptions& o, const Context& context) {
+int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& context) {
     requireBubblewrapForClass(o);
-    const fs::path scratch = scratchFolder("class");
-    const GradeSetup setup = setupFor(o, context, scratch);
+    const RunScratch scratch("class"); // and the scratch folders of runs killed with SIGKILL removed
+    for (const fs::path& removed : scratch.removedAtStart())
+        std::printf("%s\n", tr("grade.abandoned_scratch_removed", {{"folder", removed.string()}}).c_str());
+    run.runOnlyDescriptors.push_back(scratch.lockDescriptor());
+    const GradeSetup setup = setupFor(o, context, scratch.path());
     const int status = runClass(run, [&](const StudentWork& work) {
         GradeOptions student = o;
         student.labs = work.submission.string();
@@ -194,7 +198,6 @@ int gradeClass(const ClassRunOptions& run, const GradeOptions& o, const Context&
         std::printf("%-20s %g / %g\n", printableName(work.name).c_str(), result.score(), result.maxScore());
         return classRecord(work.name, result);
     });
-    fs::remove_all(scratch);
     return status;
 }
 

@@ -1,5 +1,6 @@
 // raylab grade-class as a ledger: interrupted at random points it resumes to the CSV of a quiet run;
-// a second run on the same --out refuses (or waits); hostile folder names each get their own row.
+// killed with SIGKILL it leaves nothing that stops the next run; a second run on the same --out
+// refuses (or waits); hostile folder names each get their own row.
 // The students are graded by a prebuilt agent (--agent), so no test here runs CMake.
 #include "support/files.h"
 #include "grader/course/class_run.h"
@@ -19,6 +20,10 @@
 #if defined(__unix__) || defined(__APPLE__)
 #include "program_process.h"
 #define RAYLAB_LEDGER_TESTS 1
+#endif
+#ifdef __linux__
+#include <sstream>
+#include <sys/prctl.h>
 #endif
 
 using namespace raylab::test;
@@ -152,6 +157,86 @@ TEST_CASE("a second grade-class on the same --out refuses, naming the lock and t
     ProgramProcess after = startRaylab(classArgs(classDir, root / "out"), root / "after.txt");
     CHECK_MESSAGE(after.finish() == 0, after.text());
 }
+
+#ifdef __linux__
+// The processes of ours that are alive (not zombies): a subreaper adopts every orphan of its tree.
+std::vector<pid_t> liveChildren() {
+    std::vector<pid_t> alive;
+    for (const auto& entry : fs::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        const std::string stat = readFile(entry.path() / "stat"); // pid (comm) state ppid ...
+        const std::size_t close = stat.rfind(')');
+        if (close == std::string::npos) continue;
+        std::istringstream fields(stat.substr(close + 1));
+        char state = 0;
+        pid_t parent = 0;
+        fields >> state >> parent;
+        if (parent != getpid()) continue;
+        if (state == 'Z') waitpid(pid_t(std::stol(name)), nullptr, WNOHANG);
+        else alive.push_back(pid_t(std::stol(name)));
+    }
+    return alive;
+}
+
+std::vector<fs::path> scratchFolders(const fs::path& temporary) {
+    std::vector<fs::path> found;
+    for (const auto& entry : fs::directory_iterator(temporary))
+        if (entry.path().filename().string().rfind("raylab-class-", 0) == 0) found.push_back(entry.path());
+    return found;
+}
+
+TEST_CASE("grade-class killed with SIGKILL while grading: no process of it is left, the next run resumes at once and "
+          "removes its scratch folder") {
+    const fs::path root = freshFolder("raylab-ledger-sigkill");
+    const fs::path classDir = makeClass(root, kSix);
+    const fs::path temporary = root / "tmp"; // the runs' scratch folders, and only theirs
+    fs::create_directories(temporary);
+    const std::vector<std::string> environment{"TMPDIR=" + temporary.string()};
+    ProgramProcess quiet = startProgram(binDir() / "raylab", classArgs(classDir, root / "quiet"), root / "quiet.txt", 0, environment);
+    REQUIRE_MESSAGE(quiet.finish() == 0, quiet.text());
+    CHECK(scratchFolders(temporary).empty()); // a run that ends removes its own
+
+    // Every process raylab leaves behind becomes ours, to be seen.
+    REQUIRE(prctl(PR_SET_CHILD_SUBREAPER, 1) == 0);
+    ProgramProcess killed = startProgram(binDir() / "raylab", classArgs(classDir, root / "out"), root / "killed.txt", 0, environment);
+    // Killed while a student is being graded: their folder is made just before their process starts,
+    // and their result written when it ends.
+    std::string beingGraded;
+    for (int k = 0; k < 6000 && beingGraded.empty(); ++k) {
+        if (fs::exists(root / "out" / "students"))
+            for (const auto& entry : fs::directory_iterator(root / "out" / "students"))
+                if (!fs::exists(entry.path() / "result.json")) beingGraded = entry.path().filename().string();
+        if (beingGraded.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    REQUIRE_MESSAGE(!beingGraded.empty(), killed.text());
+    kill(killed.pid, SIGKILL);
+    CHECK(killed.finish() == 128 + SIGKILL);
+    CHECK(scratchFolders(temporary).size() == 1); // left: nobody could remove it
+    // Whatever it had started died with it (the bound only ends a failing test), before that
+    // student's grading could finish.
+    std::vector<pid_t> left = liveChildren();
+    for (int k = 0; k < 1000 && !left.empty(); ++k) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        left = liveChildren();
+    }
+    CHECK_MESSAGE(left.empty(), left.size() << " processes of the killed run are still alive");
+    for (pid_t pid : left) kill(pid, SIGKILL);
+    CHECK_FALSE(fs::exists(root / "out" / "students" / beingGraded / "result.json"));
+
+    // The next run takes the lock at once and removes the dead run's scratch folder.
+    ProgramProcess next = startProgram(binDir() / "raylab", classArgs(classDir, root / "out"), root / "next.txt", 0, environment);
+    const int nextStatus = next.finish();
+    const std::string output = next.text();
+    CHECK_MESSAGE(nextStatus == 0, output);
+    CHECK_MESSAGE(output.find("another grade-class run") == std::string::npos, output);
+    CHECK_MESSAGE(output.find("the scratch folder of a grade-class run that was killed") != std::string::npos, output);
+    CHECK(scratchFolders(temporary).empty());
+    CHECK(readFile(root / "out" / "grades.csv") == readFile(root / "quiet" / "grades.csv"));
+    prctl(PR_SET_CHILD_SUBREAPER, 0);
+    liveChildren(); // reaps
+}
+#endif
 
 TEST_CASE("hostile folder names each get their own row with their printable name and full points; formulas are "
           "defused; odd entries are skipped") {

@@ -2,17 +2,28 @@
 // one to one too; CSV cells that a real CSV reader reads back as they were, formulas defused; the
 // problems cell, short and whole characters.
 #include "grader/course/class_run.h"
+#include "grader/course/run_scratch.h"
 #include "src/csv.h"
 #include "src/text.h"
 #include "support/read_csv.h"
 
 #include <doctest/doctest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
+#if defined(__unix__) || defined(__APPLE__)
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+#endif
 
+namespace fs = std::filesystem;
 using raylab::grader::printableName;
+using raylab::grader::removeAbandonedScratch;
+using raylab::grader::RunScratch;
 using raylab::grader::problemSummary;
 using raylab::grader::safeStudentName;
 
@@ -105,3 +116,38 @@ TEST_CASE("problem summaries: the first line and three error lines, cut at a wor
 }
 
 } // TEST_SUITE
+
+#if defined(__unix__) || defined(__APPLE__)
+TEST_SUITE("class run") {
+
+TEST_CASE("scratch folders: a dead run's is removed; a live run's, and a folder that is no run's, are kept") {
+    const fs::path temporary = fs::temp_directory_path() / "raylab-unit-scratch";
+    fs::remove_all(temporary);
+    fs::create_directories(temporary / "raylab-class-not-a-run" / "inside"); // a user's or a test's folder
+    fs::create_directories(temporary / "raylab-class-dead");
+    std::ofstream(temporary / "raylab-class-dead" / ".raylab-run") << ""; // its holder is gone: no lock
+    std::ofstream(temporary / "raylab-class-dead" / "agent.txt") << "left";
+    fs::create_directories(temporary / "raylab-grade-dead");
+    std::ofstream(temporary / "raylab-grade-dead" / ".raylab-run") << ""; // another kind of run
+    {
+        const RunScratch live("class"); // in the real temporary folder: its own, locked
+        fs::create_directories(temporary / "raylab-class-live");
+        fs::copy_file(live.path() / ".raylab-run", temporary / "raylab-class-live" / ".raylab-run");
+        const int held = ::open((temporary / "raylab-class-live" / ".raylab-run").c_str(), O_RDONLY | O_CLOEXEC);
+        REQUIRE(held >= 0);
+        REQUIRE(::flock(held, LOCK_EX | LOCK_NB) == 0); // as a live run holds its mark
+        const auto removed = removeAbandonedScratch(temporary, "class");
+        CHECK(removed == std::vector<fs::path>{temporary / "raylab-class-dead"});
+        CHECK(fs::exists(temporary / "raylab-class-live"));
+        CHECK(fs::exists(temporary / "raylab-class-not-a-run" / "inside"));
+        CHECK(fs::exists(temporary / "raylab-grade-dead"));
+        CHECK(fs::exists(live.path()));
+        ::close(held);
+        CHECK(removeAbandonedScratch(temporary, "class") == std::vector<fs::path>{temporary / "raylab-class-live"});
+        CHECK(fs::exists(live.path())); // still held by `live`
+    }
+    fs::remove_all(temporary);
+}
+
+} // TEST_SUITE
+#endif

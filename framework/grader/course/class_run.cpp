@@ -27,6 +27,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #endif
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 
 namespace raylab::grader {
 
@@ -222,6 +225,7 @@ public:
         }
         return true;
     }
+    int descriptor() const { return m_fd; }
     RunLock() = default;
     ~RunLock() {
         if (m_fd >= 0) ::close(m_fd); // releases the lock; the file stays, harmless, for the next run
@@ -245,6 +249,7 @@ private:
 class RunLock { // elsewhere: no lock (one instructor's machine)
 public:
     bool acquire(const fs::path&, bool, std::string&) { return true; }
+    int descriptor() const { return -1; }
 };
 
 #endif
@@ -266,19 +271,42 @@ std::string describeStatus(int status) {
     return "its grading process exited with status " + std::to_string(WEXITSTATUS(status));
 }
 
+// The run is gone (SIGKILL, SIGHUP, a crash: the kernel sends the student's process SIGTERM) or
+// stops it: its whole group goes, the build guard first given a moment to stop its compiler's group.
+extern "C" void onRunGone(int) {
+    std::signal(SIGTERM, SIG_IGN);
+    kill(0, SIGTERM);
+    const timespec moment{0, 100'000'000};
+    nanosleep(&moment, nullptr);
+    kill(0, SIGKILL); // and ourselves
+}
+
+// In the student's process, first: it holds none of the run's locks and dies with the run.
+void bindToRun(pid_t run, const std::vector<int>& runOnlyDescriptors) {
+    setpgid(0, 0);
+    for (int fd : runOnlyDescriptors)
+        if (fd >= 0) ::close(fd);
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, onRunGone);
+#ifdef __linux__
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+#endif
+    if (getppid() != run) onRunGone(SIGTERM); // the run died before prctl: no signal will come
+}
+
 // The student is graded in a process of its own, in its own process group with every build tool
 // it starts (the agents die with it), so that a stop ends them all and a crash costs one student.
-Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, std::string& why) {
+Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const std::vector<int>& runOnlyDescriptors,
+                          std::string& why) {
     std::fflush(nullptr); // or the child would print our buffered lines again
+    const pid_t run = getpid();
     const pid_t pid = fork();
     if (pid < 0) {
         why = std::string("cannot start a process: ") + std::strerror(errno);
         return Outcome::Failed;
     }
     if (pid == 0) {
-        setpgid(0, 0);
-        std::signal(SIGINT, SIG_DFL);
-        std::signal(SIGTERM, SIG_DFL);
+        bindToRun(run, runOnlyDescriptors);
         int status = 0;
         try {
             gradeAndRecord(work, grade);
@@ -308,7 +336,7 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, st
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20)); // a signal cuts it short
     }
-    if (stoppedAt != Clock::time_point{}) kill(-pid, SIGKILL); // whatever of its group is left
+    kill(-pid, SIGKILL); // whatever of its group is left (its pid is not reused while the group lives)
     std::error_code error;
     if (fs::exists(work.folder / kResultFile, error)) return Outcome::Graded; // written whole, even if stopped just after
     if (g_stopSignal != 0) return Outcome::Stopped;
@@ -318,7 +346,7 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, st
 
 #else
 
-Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, std::string& why) {
+Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const std::vector<int>&, std::string& why) {
     try {
         gradeAndRecord(work, grade);
         return Outcome::Graded;
@@ -385,7 +413,9 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
         }
         fs::create_directories(work.folder);
         std::string why;
-        const Outcome outcome = gradeInOwnProcess(work, grade, why);
+        std::vector<int> runOnly = options.runOnlyDescriptors;
+        runOnly.push_back(lock.descriptor());
+        const Outcome outcome = gradeInOwnProcess(work, grade, runOnly, why);
         if (outcome == Outcome::Stopped) {
             std::printf("%-20s interrupted: not graded (the next run grades them)\n", shown.c_str());
             break;

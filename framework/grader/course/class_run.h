@@ -3,7 +3,8 @@
 // result.json is written atomically when, and only when, that student's grading finished; grades.csv
 // is regenerated from those results, so an interrupted run resumes where it stopped and never
 // duplicates or loses a row. One run at a time per OUT (a lock); SIGINT and SIGTERM stop the run
-// cleanly: the student being graded is left ungraded and the next run grades them.
+// cleanly: the student being graded is left ungraded and the next run grades them. No process of a
+// run outlives it, and only the run holds the lock, so the next run starts at once after a SIGKILL.
 
 #include <filesystem>
 #include <functional>
@@ -28,13 +29,16 @@ struct StudentWork {
 };
 
 // Grades one student (building in work.folder / "build", reports in work.folder / "report") and
-// returns their row. On POSIX it runs in a process of its own, which the run stops when interrupted.
+// returns their row. On POSIX it runs in a process of its own, in its own process group with all it
+// starts: the run stops it when interrupted, kills the group when it ends, and it dies with the run
+// (killed with SIGKILL too).
 using GradeStudent = std::function<StudentRecord(const StudentWork& work)>;
 
 struct ClassRunOptions {
     std::filesystem::path classFolder; // one folder per student
     std::filesystem::path out;         // grades.csv, students/, the lock
     bool wait = false;                 // another run holds OUT: wait for it instead of refusing
+    std::vector<int> runOnlyDescriptors; // locks the run holds: each student's process closes them
 };
 
 // Grades every student of the class not graded yet. Returns the exit status: 0; 1 when OUT is held
