@@ -9,5 +9,6 @@ inline constexpr const char* kScenesDir = RAYLAB_SCENES_DIR;    // the scenes/ f
 inline constexpr const char* kSourceDir = RAYLAB_SOURCE_DIR;
 inline constexpr const char* kBinaryDir = RAYLAB_BINARY_DIR;    // where the raylab programs are
 inline constexpr const char* kBuildType = RAYLAB_BUILD_TYPE;    // "Release", "Debug"... (CMake's config)
+inline constexpr const char* kVersion = RAYLAB_VERSION;        // the project's version (CMakeLists.txt)
 
 } // namespace raylab::build

@@ -163,6 +163,20 @@ StudentRecord classRecord(const std::string& name, const GradeResult& result) {
     return record;
 }
 
+// What makes a student's result: another value of any of them and the student is graded again.
+Settings resultSettings(const GradeOptions& o, const GradeSetup& setup) {
+    std::string agents;
+    for (const std::string& a : o.agents) agents += (agents.empty() ? "" : " ") + fs::absolute(a).string();
+    std::ostringstream timeout;
+    timeout << o.timeout;
+    return {{"grader", std::string("raylab ") + build::kVersion},
+            {"labs", o.lab == 0 ? "all" : std::to_string(o.lab)},
+            {"timeout", timeout.str()},
+            {"sandbox", sandboxKind(setup.limits)},
+            {"references", fs::absolute(o.references.empty() ? referencesFolder() : fs::path(o.references)).lexically_normal().string()},
+            {"agents", agents.empty() ? "built from each submission" : agents}};
+}
+
 // On Linux a class is graded under bubblewrap, or without it only when --no-sandbox says so: the
 // students' code could otherwise read the references and each other's folders.
 void requireBubblewrapForClass(const GradeOptions& o) {
@@ -182,6 +196,7 @@ int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& contex
         std::printf("%s\n", tr("grade.abandoned_scratch_removed", {{"folder", removed.string()}}).c_str());
     run.runOnlyDescriptors.push_back(scratch.lockDescriptor());
     const GradeSetup setup = setupFor(o, context, scratch.path());
+    run.madeBy = resultSettings(o, setup);
     const int status = runClass(run, [&](const StudentWork& work) {
         GradeOptions student = o;
         student.labs = work.submission.string();

@@ -7,6 +7,8 @@
 #include "grading_support.h"
 #include "support/read_csv.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <csignal>
@@ -120,6 +122,62 @@ TEST_CASE("grade-class interrupted 5 times at random points (SIGINT, SIGTERM) re
     ProgramProcess last = startRaylab(classArgs(classDir, root / "stopped"), root / "stopped.txt");
     REQUIRE_MESSAGE(last.finish() == 0, last.text());
     CHECK(readFile(root / "stopped" / "grades.csv") == expected);
+}
+
+TEST_CASE("a result says what made it: grade-class --lab 1, then every lab, then another timeout grades each student "
+          "again; the same settings do not") {
+    const fs::path root = freshFolder("raylab-ledger-settings");
+    const std::vector<std::string> two{"ann", "bob"};
+    const fs::path classDir = makeClass(root, two);
+    const auto run = [&](std::vector<std::string> args, const std::string& name) {
+        ProgramProcess process = startRaylab(args, root / (name + ".txt"));
+        const int status = process.finish();
+        CHECK_MESSAGE(status == 0, process.text());
+        return process.text();
+    };
+    const auto withoutLabOption = [](std::vector<std::string> args) {
+        const auto lab = std::find(args.begin(), args.end(), "--lab");
+        args.erase(lab, lab + 2);
+        return args;
+    };
+    const fs::path out = root / "out";
+    run(classArgs(classDir, out), "lab1");
+    const nlohmann::json result = nlohmann::json::parse(readFile(out / "students" / "ann" / "result.json"));
+    std::map<std::string, std::string> madeBy;
+    for (const auto& setting : result.at("made_by")) madeBy[setting.at("name")] = setting.at("value");
+    CHECK(madeBy.at("labs") == "1");
+    CHECK(madeBy.at("timeout") == "60");
+    CHECK(madeBy.at("grader") == "raylab " RAYLAB_VERSION);
+    CHECK(madeBy.at("sandbox") == (bubblewrapMissing().empty() ? "bubblewrap" : "process group"));
+    CHECK(madeBy.at("agents") == (binDir() / "raylab-agent-reference").string());
+    const auto labOneOnly = readCsv(readFile(out / "grades.csv"));
+    REQUIRE(labOneOnly.size() == 3);
+    const auto column = [](const std::vector<std::vector<std::string>>& rows, const std::string& name) {
+        return std::size_t(std::find(rows[0].begin(), rows[0].end(), name) - rows[0].begin());
+    };
+    CHECK(labOneOnly[1][column(labOneOnly, "lab2")] == "0"); // lab 1 alone was graded
+
+    const std::string all = run(withoutLabOption(classArgs(classDir, out)), "all");
+    for (const std::string& name : two)
+        CHECK_MESSAGE(all.find(name + std::string(20 - name.size(), ' ') + " graded again: its result was made with other "
+                                                                            "settings (labs 1, now all)") != std::string::npos,
+                      all);
+    const auto rows = readCsv(readFile(out / "grades.csv"));
+    REQUIRE(rows.size() == 3);
+    for (const auto& row : {rows[1], rows[2]}) {
+        CAPTURE(row[0]);
+        for (const char* lab : {"lab1", "lab2", "lab3", "lab4", "lab5"}) CHECK(std::stod(row[column(rows, lab)]) > 0.);
+        CHECK(row[column(rows, "total")] == row[column(rows, "max")]);
+    }
+
+    const std::string same = run(withoutLabOption(classArgs(classDir, out)), "same");
+    CHECK_MESSAGE(same.find("graded again") == std::string::npos, same);
+    CHECK_MESSAGE(same.find("already graded") != std::string::npos, same);
+    std::vector<std::string> longer = withoutLabOption(classArgs(classDir, out));
+    *(std::find(longer.begin(), longer.end(), "--timeout") + 1) = "90";
+    const std::string other = run(longer, "timeout");
+    CHECK_MESSAGE(other.find("graded again: its result was made with other settings (timeout 60, now 90)") != std::string::npos, other);
+    CHECK(readCsv(readFile(out / "grades.csv")) == rows); // the same grades, made again
 }
 
 TEST_CASE("a second grade-class on the same --out refuses, naming the lock and the first run's pid; --wait waits") {

@@ -48,10 +48,17 @@ TEST_SUITE("commands") {
 
 TEST_CASE("grade-class resumes: students with a result are not graded again, the CSV is made from the results") {
     const fs::path root = makeClass("raylab-class-resume");
+    // Made as this run makes them: every lab, the default timeout, this grader, its sandbox.
+    const std::string sandbox = bubblewrapMissing().empty() ? "bubblewrap" : "process group";
+    const std::string madeBy = R"([{"name": "grader", "value": "raylab )" RAYLAB_VERSION R"("}, {"name": "labs", "value": "all"},
+        {"name": "timeout", "value": "180"}, {"name": "sandbox", "value": ")" + sandbox + R"("},
+        {"name": "references", "value": ")" + referencesDir().lexically_normal().string() + R"("},
+        {"name": "agents", "value": "built from each submission"}])";
     for (const char* name : {"alice", "bob"}) {
         fs::create_directories(root / "out" / "students" / name);
         std::ofstream(root / "out" / "students" / name / "result.json")
-            << R"({"student": ")" << name << R"(", "cells": [{"column": "lab1", "value": "1"}, {"column": "total", "value": "1"}]})";
+            << R"({"student": ")" << name << R"(", "cells": [{"column": "lab1", "value": "1"}, {"column": "total", "value": "1"}], )"
+            << R"("made_by": )" << madeBy << "}";
     }
     CHECK(gradeClass(root / "class", root / "out", root / "build") == 0);
     CHECK(readFile(root / "out" / "grades.csv") == "student,lab1,total\nalice,1,1\nbob,1,1\n");

@@ -2,6 +2,7 @@
 
 #include "src/atomic_file.h"
 #include "src/csv.h"
+#include "src/messages.h"
 #include "src/text.h"
 
 #include <nlohmann/json.hpp>
@@ -48,7 +49,9 @@ fs::path studentsFolder(const fs::path& out) { return out / "students"; }
 std::string recordJson(const StudentRecord& record) {
     nlohmann::json cells = nlohmann::json::array();
     for (const auto& [column, value] : record.cells) cells.push_back({{"column", column}, {"value", value}});
-    const nlohmann::json root{{"student", record.student}, {"cells", cells}};
+    nlohmann::json madeBy = nlohmann::json::array();
+    for (const auto& [name, value] : record.madeBy) madeBy.push_back({{"name", name}, {"value", value}});
+    const nlohmann::json root{{"student", record.student}, {"cells", cells}, {"made_by", madeBy}};
     // Printable text is UTF-8 already: the handler only guards a hand-made record.
     return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
@@ -61,10 +64,28 @@ std::optional<StudentRecord> readRecord(const fs::path& file) {
         StudentRecord record{root.at("student").get<std::string>(), {}};
         for (const nlohmann::json& cell : root.at("cells"))
             record.cells.emplace_back(cell.at("column").get<std::string>(), cell.at("value").get<std::string>());
+        if (root.contains("made_by")) // a result written before results said what made them has none
+            for (const nlohmann::json& setting : root.at("made_by"))
+                record.madeBy.emplace_back(setting.at("name").get<std::string>(), setting.at("value").get<std::string>());
         return record;
     } catch (const nlohmann::json::exception&) {
         return std::nullopt; // never half-written (atomic), so only a hand-edited file: graded again
     }
+}
+
+// "timeout 60 (now 180), labs 1 (now all)": the settings of `then` that `now` does not share.
+std::string settingsChanged(const Settings& then, const Settings& now) {
+    std::string changed;
+    const auto valueIn = [](const Settings& settings, const std::string& name) -> std::string {
+        for (const auto& [n, v] : settings)
+            if (n == name) return v;
+        return "?";
+    };
+    for (const auto& [name, value] : now)
+        if (valueIn(then, name) != value)
+            changed += (changed.empty() ? "" : "; ") +
+                       tr("grade.setting_changed", {{"name", name}, {"then", valueIn(then, name)}, {"now", value}});
+    return changed;
 }
 
 // The results in OUT, by safe name.
@@ -258,9 +279,10 @@ public:
 
 enum class Outcome { Graded, Stopped, Failed };
 
-void gradeAndRecord(const StudentWork& work, const GradeStudent& grade) {
+void gradeAndRecord(const StudentWork& work, const GradeStudent& grade, const Settings& madeBy) {
     StudentRecord record = grade(work);
     record.student = printableName(work.name); // the row's name, whatever the grading called it
+    record.madeBy = madeBy;
     writeFileAtomically(work.folder / kResultFile, recordJson(record)); // last: the grading finished
 }
 
@@ -296,8 +318,8 @@ void bindToRun(pid_t run, const std::vector<int>& runOnlyDescriptors) {
 
 // The student is graded in a process of its own, in its own process group with every build tool
 // it starts (the agents die with it), so that a stop ends them all and a crash costs one student.
-Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const std::vector<int>& runOnlyDescriptors,
-                          std::string& why) {
+Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const Settings& madeBy,
+                          const std::vector<int>& runOnlyDescriptors, std::string& why) {
     std::fflush(nullptr); // or the child would print our buffered lines again
     const pid_t run = getpid();
     const pid_t pid = fork();
@@ -309,7 +331,7 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, co
         bindToRun(run, runOnlyDescriptors);
         int status = 0;
         try {
-            gradeAndRecord(work, grade);
+            gradeAndRecord(work, grade, madeBy);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "raylab: error: grading %s: %s\n", printableName(work.name).c_str(), e.what());
             status = 1;
@@ -346,9 +368,10 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, co
 
 #else
 
-Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const std::vector<int>&, std::string& why) {
+Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const Settings& madeBy, const std::vector<int>&,
+                          std::string& why) {
     try {
-        gradeAndRecord(work, grade);
+        gradeAndRecord(work, grade, madeBy);
         return Outcome::Graded;
     } catch (const std::exception& e) {
         why = e.what();
@@ -398,7 +421,14 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
         std::fprintf(stderr, "raylab: error: %s\n", problem.c_str());
         return 1;
     }
-    std::map<std::string, StudentRecord> ledger = readLedger(out);
+    std::map<std::string, StudentRecord> ledger = readLedger(out), madeOtherwise;
+    for (auto it = ledger.begin(); it != ledger.end();) // not this run's: graded again, out of the CSV until then
+        if (it->second.madeBy != options.madeBy) {
+            madeOtherwise.insert(*it);
+            it = ledger.erase(it);
+        } else {
+            ++it;
+        }
     writeGrades(out, ledger); // the CSV of every finished student, even if a last run stopped before it
     const ClassEntries entries = listClass(options.classFolder, out);
     for (const std::string& line : entries.skipped) std::printf("%s\n", line.c_str());
@@ -411,11 +441,14 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
             std::printf("%-20s already graded (%s)\n", shown.c_str(), (work.folder / kResultFile).string().c_str());
             continue;
         }
+        if (const auto old = madeOtherwise.find(safe); old != madeOtherwise.end())
+            std::printf("%-20s %s\n", shown.c_str(),
+                        tr("grade.graded_again", {{"changes", settingsChanged(old->second.madeBy, options.madeBy)}}).c_str());
         fs::create_directories(work.folder);
         std::string why;
         std::vector<int> runOnly = options.runOnlyDescriptors;
         runOnly.push_back(lock.descriptor());
-        const Outcome outcome = gradeInOwnProcess(work, grade, runOnly, why);
+        const Outcome outcome = gradeInOwnProcess(work, grade, options.madeBy, runOnly, why);
         if (outcome == Outcome::Stopped) {
             std::printf("%-20s interrupted: not graded (the next run grades them)\n", shown.c_str());
             break;

@@ -14,11 +14,14 @@
 
 namespace raylab::grader {
 
+using Settings = std::vector<std::pair<std::string, std::string>>; // name, value
+
 // A student's row of grades.csv: the folder's name as printableName shows it, and the cells after
-// it, by column.
+// it, by column; and what made it (the run's `madeBy`).
 struct StudentRecord {
     std::string student;
     std::vector<std::pair<std::string, std::string>> cells; // column, value
+    Settings madeBy = {};
 };
 
 // Where a student is graded.
@@ -38,6 +41,10 @@ struct ClassRunOptions {
     std::filesystem::path classFolder; // one folder per student
     std::filesystem::path out;         // grades.csv, students/, the lock
     bool wait = false;                 // another run holds OUT: wait for it instead of refusing
+    // What makes a result (labs, timeout, grader version, sandbox...): written in each result, and a
+    // result made otherwise is not this run's: that student is graded again, and left out of
+    // grades.csv until they are.
+    Settings madeBy;
     std::vector<int> runOnlyDescriptors; // locks the run holds: each student's process closes them
 };
 
