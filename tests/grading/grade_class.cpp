@@ -90,7 +90,8 @@ TEST_CASE("grade-class builds and grades each student in its own folder: hostile
     CHECK(rows[0] == std::vector<std::string>{"student", "lab1", "lab2", "lab3", "lab4", "lab5", "total", "max", "problems"});
     for (const std::string& name : kHostileNames) {
         CAPTURE(name);
-        const std::string shown = raylab::grader::printableName(name); // one line in grades.csv
+        std::string shown = raylab::grader::printableName(name); // one line in grades.csv, a formula defused
+        if (std::string("=+-@").find(shown[0]) != std::string::npos) shown = "'" + shown;
         CHECK(std::count_if(rows.begin(), rows.end(), [&](const auto& row) { return row[0] == shown; }) == 1);
     }
     for (const auto& row : rows) {
