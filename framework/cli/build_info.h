@@ -10,5 +10,6 @@ inline constexpr const char* kSourceDir = RAYLAB_SOURCE_DIR;
 inline constexpr const char* kBinaryDir = RAYLAB_BINARY_DIR;    // where the raylab programs are
 inline constexpr const char* kBuildDir = RAYLAB_BUILD_DIR;      // the build folder (`cmake --build` it)
 inline constexpr const char* kBuildType = RAYLAB_BUILD_TYPE;    // "Release", "Debug"... (CMake's config)
+inline constexpr const char* kVersion = RAYLAB_VERSION;        // the project's version (CMakeLists.txt)
 
 } // namespace raylab::build

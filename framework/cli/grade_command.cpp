@@ -6,6 +6,7 @@
 #include "grader/course/class_run.h"
 #include "grader/judge/grade.h"
 #include "grader/course/grade_reports.h"
+#include "grader/course/run_scratch.h"
 #include "grader/sandbox/process.h"
 #include "grader/sandbox/sandbox.h"
 #include "grader/course/submission.h"
@@ -181,6 +182,20 @@ StudentRecord classRecord(const std::string& name, const GradeResult& result) {
     return record;
 }
 
+// What makes a student's result: another value of any of them and the student is graded again.
+Settings resultSettings(const GradeOptions& o, const GradeSetup& setup) {
+    std::string agents;
+    for (const std::string& a : o.agents) agents += (agents.empty() ? "" : " ") + fs::absolute(a).string();
+    std::ostringstream timeout;
+    timeout << o.timeout;
+    return {{"grader", std::string("raylab ") + build::kVersion},
+            {"labs", o.lab == 0 ? "all" : std::to_string(o.lab)},
+            {"timeout", timeout.str()},
+            {"sandbox", sandboxKind(setup.limits)},
+            {"references", fs::absolute(o.references.empty() ? referencesFolder() : fs::path(o.references)).lexically_normal().string()},
+            {"agents", agents.empty() ? "built from each submission" : agents}};
+}
+
 // On Linux a class is graded under bubblewrap, or without it only when --no-sandbox says so: the
 // students' code could otherwise read the references and each other's folders.
 void requireBubblewrapForClass(const GradeOptions& o) {
@@ -193,26 +208,30 @@ void requireBubblewrapForClass(const GradeOptions& o) {
 #endif
 }
 
-int gradeClass(const ClassRunOptions& run, const GradeOptions& o, const Context& context) {
+int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& context) {
     requireBubblewrapForClass(o);
-    const fs::path scratch = scratchFolder("class");
-    const GradeSetup setup = setupFor(o, context, scratch);
+    const RunScratch scratch("class"); // and the scratch folders of runs killed with SIGKILL removed
+    for (const fs::path& removed : scratch.removedAtStart())
+        std::printf("%s\n", tr("grade.abandoned_scratch_removed", {{"folder", removed.string()}}).c_str());
+    run.runOnlyDescriptors.push_back(scratch.lockDescriptor());
+    const GradeSetup setup = setupFor(o, context, scratch.path());
+    run.madeBy = resultSettings(o, setup);
     const int status = runClass(run, [&](const StudentWork& work) {
         GradeOptions student = o;
         student.labs = work.submission.string();
         const fs::path buildDir = o.buildDir.empty() ? work.folder / "build" : fs::path(o.buildDir) / work.folder.filename();
+        const std::string title = "raylab grade " + printableName(work.name);
         GradeResult result;
         try {
-            result = gradeCodeOnce(student, setup, toolchain(true), buildDir, "raylab grade " + work.name);
+            result = gradeCodeOnce(student, setup, toolchain(true), buildDir, title);
         } catch (const std::exception& e) { // one student's trouble never stops the class
             result = gradeBuildFailure(setup, e.what());
-            result.title = "raylab grade " + work.name;
+            result.title = title;
         }
         writeReports(result, setup.references, work.folder / "report");
         std::printf("%-20s %g / %g\n", printableName(work.name).c_str(), result.score(), result.maxScore());
         return classRecord(work.name, result);
     });
-    fs::remove_all(scratch);
     return status;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // CSV as spreadsheets and RFC 4180 read it: a cell holding a comma, a quote or a line break is
-// quoted, its quotes doubled; any other cell is written as it is.
+// quoted, its quotes doubled. A cell a spreadsheet would run as a formula (it starts with = + - @,
+// a tab or a carriage return, and is not a plain number) is written with a leading ' (OWASP's
+// advice against CSV injection), so a student named "=HYPERLINK(...)" reads as text.
 
 #include <string>
 #include <vector>

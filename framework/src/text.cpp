@@ -1,5 +1,6 @@
 #include "src/text.h"
 
+#include <cstdio>
 #include <sstream>
 
 namespace raylab {
@@ -16,6 +17,62 @@ std::string showVector(const glm::vec3& v) {
     out.precision(9);
     out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
     return out.str();
+}
+
+namespace {
+
+// The length of the well-formed UTF-8 character at `at` (Unicode's table 3-7: no overlong form, no
+// surrogate, nothing past U+10FFFF), or 0.
+std::size_t characterLength(std::string_view text, std::size_t at) {
+    const auto byte = [&](std::size_t k) { return at + k < text.size() ? static_cast<unsigned char>(text[at + k]) : 0u; };
+    const auto tail = [&](std::size_t k, unsigned low = 0x80, unsigned high = 0xBF) { return byte(k) >= low && byte(k) <= high; };
+    const unsigned lead = byte(0);
+    if (lead < 0x80) return 1;
+    if (lead >= 0xC2 && lead <= 0xDF) return tail(1) ? 2 : 0;
+    if (lead == 0xE0) return tail(1, 0xA0) && tail(2) ? 3 : 0;
+    if (lead == 0xED) return tail(1, 0x80, 0x9F) && tail(2) ? 3 : 0;
+    if (lead >= 0xE1 && lead <= 0xEF) return tail(1) && tail(2) ? 3 : 0;
+    if (lead == 0xF0) return tail(1, 0x90) && tail(2) && tail(3) ? 4 : 0;
+    if (lead >= 0xF1 && lead <= 0xF3) return tail(1) && tail(2) && tail(3) ? 4 : 0;
+    if (lead == 0xF4) return tail(1, 0x80, 0x8F) && tail(2) && tail(3) ? 4 : 0;
+    return 0;
+}
+
+// C0 and DEL (one byte), C1 (U+0080 to U+009F: C2 80 to C2 9F), U+FFFE and U+FFFF (EF BF BE/BF).
+bool isControlOrNonCharacter(std::string_view c) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(c[k]); };
+    if (c.size() == 1) return byte(0) < 0x20 || byte(0) == 0x7F;
+    if (c.size() == 2) return byte(0) == 0xC2 && byte(1) <= 0x9F;
+    return c.size() == 3 && byte(0) == 0xEF && byte(1) == 0xBF && byte(2) >= 0xBE;
+}
+
+void appendHex(std::string& out, std::string_view bytes) {
+    for (const char b : bytes) {
+        char hex[5];
+        std::snprintf(hex, sizeof hex, "\\x%02X", static_cast<unsigned char>(b));
+        out += hex;
+    }
+}
+
+} // namespace
+
+std::string printableText(std::string_view text, TextForm form) {
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t length = characterLength(text, at);
+        const std::string_view c = text.substr(at, length == 0 ? 1 : length);
+        at += c.size();
+        const char first = c[0];
+        if (form == TextForm::Message && (first == '\n' || first == '\t' || first == '\r')) out += first;
+        else if (form == TextForm::Name && first == '\n') out += "\\n";
+        else if (form == TextForm::Name && first == '\t') out += "\\t";
+        else if (form == TextForm::Name && first == '\r') out += "\\r";
+        else if (form == TextForm::Name && first == '\\') out += "\\\\";
+        else if (length == 0 || isControlOrNonCharacter(c)) appendHex(out, c);
+        else out += c;
+    }
+    return out;
 }
 
 } // namespace raylab

@@ -1,13 +1,26 @@
 #pragma once
-// Numbers and vectors as error messages show them: shortest form, "(1, 2, 3)", "nan", "inf".
+// Numbers and vectors as error messages show them: shortest form, "(1, 2, 3)", "nan", "inf"; and
+// text from outside (a folder's name, a compiler's or an agent's message) as a reader may see it.
 
 #include <glm/vec3.hpp>
 
 #include <string>
+#include <string_view>
 
 namespace raylab {
 
 std::string showNumber(double value);
 std::string showVector(const glm::vec3& v);
+
+enum class TextForm {
+    Message, // line breaks and tabs kept
+    Name,    // one line that tells any two byte strings apart: also \n, \t, \r and \\ escaped
+};
+
+// `text` as well-formed UTF-8 that no terminal, XML parser or spreadsheet misreads: each byte that
+// is not part of a well-formed UTF-8 character, each control character (C0, DEL, C1) and the
+// non-characters U+FFFE and U+FFFF are written \xHH, byte by byte; so two names that differ in
+// their bytes never print alike, as they would with U+FFFD.
+std::string printableText(std::string_view text, TextForm form = TextForm::Message);
 
 } // namespace raylab

@@ -1,9 +1,13 @@
 // raylab grade-class as a ledger: interrupted at random points it resumes to the CSV of a quiet run;
-// a second run on the same --out refuses (or waits); hostile folder names each get their own row.
+// killed with SIGKILL it leaves nothing that stops the next run; a second run on the same --out
+// refuses (or waits); hostile folder names each get their own row.
 // The students are graded by a prebuilt agent (--agent), so no test here runs CMake.
 #include "support/files.h"
+#include "grader/course/class_run.h"
 #include "grading_support.h"
 #include "support/read_csv.h"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -18,6 +22,10 @@
 #if defined(__unix__) || defined(__APPLE__)
 #include "program_process.h"
 #define RAYLAB_LEDGER_TESTS 1
+#endif
+#ifdef __linux__
+#include <sstream>
+#include <sys/prctl.h>
 #endif
 
 using namespace raylab::test;
@@ -116,6 +124,62 @@ TEST_CASE("grade-class interrupted 5 times at random points (SIGINT, SIGTERM) re
     CHECK(readFile(root / "stopped" / "grades.csv") == expected);
 }
 
+TEST_CASE("a result says what made it: grade-class --lab 1, then every lab, then another timeout grades each student "
+          "again; the same settings do not") {
+    const fs::path root = freshFolder("raylab-ledger-settings");
+    const std::vector<std::string> two{"ann", "bob"};
+    const fs::path classDir = makeClass(root, two);
+    const auto run = [&](std::vector<std::string> args, const std::string& name) {
+        ProgramProcess process = startRaylab(args, root / (name + ".txt"));
+        const int status = process.finish();
+        CHECK_MESSAGE(status == 0, process.text());
+        return process.text();
+    };
+    const auto withoutLabOption = [](std::vector<std::string> args) {
+        const auto lab = std::find(args.begin(), args.end(), "--lab");
+        args.erase(lab, lab + 2);
+        return args;
+    };
+    const fs::path out = root / "out";
+    run(classArgs(classDir, out), "lab1");
+    const nlohmann::json result = nlohmann::json::parse(readFile(out / "students" / "ann" / "result.json"));
+    std::map<std::string, std::string> madeBy;
+    for (const auto& setting : result.at("made_by")) madeBy[setting.at("name")] = setting.at("value");
+    CHECK(madeBy.at("labs") == "1");
+    CHECK(madeBy.at("timeout") == "60");
+    CHECK(madeBy.at("grader") == "raylab " RAYLAB_VERSION);
+    CHECK(madeBy.at("sandbox") == (bubblewrapMissing().empty() ? "bubblewrap" : "process group"));
+    CHECK(madeBy.at("agents") == (binDir() / "raylab-agent-reference").string());
+    const auto labOneOnly = readCsv(readFile(out / "grades.csv"));
+    REQUIRE(labOneOnly.size() == 3);
+    const auto column = [](const std::vector<std::vector<std::string>>& rows, const std::string& name) {
+        return std::size_t(std::find(rows[0].begin(), rows[0].end(), name) - rows[0].begin());
+    };
+    CHECK(labOneOnly[1][column(labOneOnly, "lab2")] == "0"); // lab 1 alone was graded
+
+    const std::string all = run(withoutLabOption(classArgs(classDir, out)), "all");
+    for (const std::string& name : two)
+        CHECK_MESSAGE(all.find(name + std::string(20 - name.size(), ' ') + " graded again: its result was made with other "
+                                                                            "settings (labs 1, now all)") != std::string::npos,
+                      all);
+    const auto rows = readCsv(readFile(out / "grades.csv"));
+    REQUIRE(rows.size() == 3);
+    for (const auto& row : {rows[1], rows[2]}) {
+        CAPTURE(row[0]);
+        for (const char* lab : {"lab1", "lab2", "lab3", "lab4", "lab5"}) CHECK(std::stod(row[column(rows, lab)]) > 0.);
+        CHECK(row[column(rows, "total")] == row[column(rows, "max")]);
+    }
+
+    const std::string same = run(withoutLabOption(classArgs(classDir, out)), "same");
+    CHECK_MESSAGE(same.find("graded again") == std::string::npos, same);
+    CHECK_MESSAGE(same.find("already graded") != std::string::npos, same);
+    std::vector<std::string> longer = withoutLabOption(classArgs(classDir, out));
+    *(std::find(longer.begin(), longer.end(), "--timeout") + 1) = "90";
+    const std::string other = run(longer, "timeout");
+    CHECK_MESSAGE(other.find("graded again: its result was made with other settings (timeout 60, now 90)") != std::string::npos, other);
+    CHECK(readCsv(readFile(out / "grades.csv")) == rows); // the same grades, made again
+}
+
 TEST_CASE("a second grade-class on the same --out refuses, naming the lock and the first run's pid; --wait waits") {
     const fs::path root = freshFolder("raylab-ledger-twice");
     const fs::path classDir = makeClass(root, kSix);
@@ -152,11 +216,93 @@ TEST_CASE("a second grade-class on the same --out refuses, naming the lock and t
     CHECK_MESSAGE(after.finish() == 0, after.text());
 }
 
-TEST_CASE("hostile folder names each get their own row with the real name and full points; odd entries are skipped") {
+#ifdef __linux__
+// The processes of ours that are alive (not zombies): a subreaper adopts every orphan of its tree.
+std::vector<pid_t> liveChildren() {
+    std::vector<pid_t> alive;
+    for (const auto& entry : fs::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        const std::string stat = readFile(entry.path() / "stat"); // pid (comm) state ppid ...
+        const std::size_t close = stat.rfind(')');
+        if (close == std::string::npos) continue;
+        std::istringstream fields(stat.substr(close + 1));
+        char state = 0;
+        pid_t parent = 0;
+        fields >> state >> parent;
+        if (parent != getpid()) continue;
+        if (state == 'Z') waitpid(pid_t(std::stol(name)), nullptr, WNOHANG);
+        else alive.push_back(pid_t(std::stol(name)));
+    }
+    return alive;
+}
+
+std::vector<fs::path> scratchFolders(const fs::path& temporary) {
+    std::vector<fs::path> found;
+    for (const auto& entry : fs::directory_iterator(temporary))
+        if (entry.path().filename().string().rfind("raylab-class-", 0) == 0) found.push_back(entry.path());
+    return found;
+}
+
+TEST_CASE("grade-class killed with SIGKILL while grading: no process of it is left, the next run resumes at once and "
+          "removes its scratch folder") {
+    const fs::path root = freshFolder("raylab-ledger-sigkill");
+    const fs::path classDir = makeClass(root, kSix);
+    const fs::path temporary = root / "tmp"; // the runs' scratch folders, and only theirs
+    fs::create_directories(temporary);
+    const std::vector<std::string> environment{"TMPDIR=" + temporary.string()};
+    ProgramProcess quiet = startProgram(binDir() / "raylab", classArgs(classDir, root / "quiet"), root / "quiet.txt", 0, environment);
+    REQUIRE_MESSAGE(quiet.finish() == 0, quiet.text());
+    CHECK(scratchFolders(temporary).empty()); // a run that ends removes its own
+
+    // Every process raylab leaves behind becomes ours, to be seen.
+    REQUIRE(prctl(PR_SET_CHILD_SUBREAPER, 1) == 0);
+    ProgramProcess killed = startProgram(binDir() / "raylab", classArgs(classDir, root / "out"), root / "killed.txt", 0, environment);
+    // Killed while a student is being graded: their folder is made just before their process starts,
+    // and their result written when it ends.
+    std::string beingGraded;
+    for (int k = 0; k < 6000 && beingGraded.empty(); ++k) {
+        if (fs::exists(root / "out" / "students"))
+            for (const auto& entry : fs::directory_iterator(root / "out" / "students"))
+                if (!fs::exists(entry.path() / "result.json")) beingGraded = entry.path().filename().string();
+        if (beingGraded.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    REQUIRE_MESSAGE(!beingGraded.empty(), killed.text());
+    kill(killed.pid, SIGKILL);
+    CHECK(killed.finish() == 128 + SIGKILL);
+    CHECK(scratchFolders(temporary).size() == 1); // left: nobody could remove it
+    // Whatever it had started died with it (the bound only ends a failing test), before that
+    // student's grading could finish.
+    std::vector<pid_t> left = liveChildren();
+    for (int k = 0; k < 1000 && !left.empty(); ++k) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        left = liveChildren();
+    }
+    CHECK_MESSAGE(left.empty(), left.size() << " processes of the killed run are still alive");
+    for (pid_t pid : left) kill(pid, SIGKILL);
+    CHECK_FALSE(fs::exists(root / "out" / "students" / beingGraded / "result.json"));
+
+    // The next run takes the lock at once and removes the dead run's scratch folder.
+    ProgramProcess next = startProgram(binDir() / "raylab", classArgs(classDir, root / "out"), root / "next.txt", 0, environment);
+    const int nextStatus = next.finish();
+    const std::string output = next.text();
+    CHECK_MESSAGE(nextStatus == 0, output);
+    CHECK_MESSAGE(output.find("another grade-class run") == std::string::npos, output);
+    CHECK_MESSAGE(output.find("the scratch folder of a grade-class run that was killed") != std::string::npos, output);
+    CHECK(scratchFolders(temporary).empty());
+    CHECK(readFile(root / "out" / "grades.csv") == readFile(root / "quiet" / "grades.csv"));
+    prctl(PR_SET_CHILD_SUBREAPER, 0);
+    liveChildren(); // reaps
+}
+#endif
+
+TEST_CASE("hostile folder names each get their own row with their printable name and full points; formulas are "
+          "defused; odd entries are skipped") {
     const fs::path root = freshFolder("raylab-ledger-names");
     const std::vector<std::string> names{"x$(touch PWNED)", "back`touch PWNED`tick", "double\"quote", "it's", "with space",
                                          "-leading-dash", "ünïcödé 名前", "a,b", "new\nline", "grades.csv", "build",
-                                         "students", "%41", "A"};
+                                         "students", "%41", "A", "=1+2*3", "=HYPERLINK(\"evil\",\"click\")", "bad\xFEname",
+                                         "bad\xFFname", "esc\x1B[2J"};
     const fs::path classDir = makeClass(root, names);
     std::ofstream(classDir / "notes.txt") << "not a submission";
     fs::create_directories(classDir / "empty");
@@ -173,6 +319,9 @@ TEST_CASE("hostile folder names each get their own row with the real name and fu
     CHECK_MESSAGE(lines.find("\nskipped 'link': a symbolic link") != std::string::npos, output);
     CHECK_MESSAGE(lines.find("\nskipped 'loop': a symbolic link") != std::string::npos, output);
     CHECK_MESSAGE(output.find("new\\nline") != std::string::npos, output); // one line in the terminal
+    CHECK_MESSAGE(output.find("bad\\xFEname") != std::string::npos, output);
+    CHECK_MESSAGE(output.find("esc\\x1B[2J") != std::string::npos, output);
+    CHECK_MESSAGE(output.find('\x1B') == std::string::npos, output);
 
     const auto rows = readCsv(readFile(root / "out" / "grades.csv"));
     REQUIRE(!rows.empty());
@@ -182,11 +331,20 @@ TEST_CASE("hostile folder names each get their own row with the real name and fu
     const std::size_t total = std::size_t(std::find(header.begin(), header.end(), "total") - header.begin());
     REQUIRE(total + 1 < header.size());
     CHECK(rows.size() == names.size() + 1);
+    // A spreadsheet reads a formula as text; two names that differ in bytes that are not UTF-8 differ.
+    const auto shownInCsv = [](const std::string& name) {
+        const std::string shown = raylab::grader::printableName(name);
+        return std::string("=+-@").find(shown[0]) != std::string::npos ? "'" + shown : shown;
+    };
+    CHECK(shownInCsv("=1+2*3") == "'=1+2*3");
+    CHECK(shownInCsv("-leading-dash") == "'-leading-dash");
+    CHECK(shownInCsv("bad\xFEname") == "bad\\xFEname");
+    CHECK(shownInCsv("new\nline") == "new\\nline");
     for (const std::string& name : names) {
-        CAPTURE(name);
+        CAPTURE(raylab::grader::printableName(name));
         int found = 0;
         for (const auto& row : rows)
-            if (row[0] == name) {
+            if (row[0] == shownInCsv(name)) {
                 ++found;
                 REQUIRE(row.size() == header.size());
                 CHECK(row[total] == row[total + 1]); // total == max

@@ -1,16 +1,29 @@
-// The class ledger's pieces: a safe folder name for any student name, one to one; CSV cells that a
-// real CSV reader reads back as they were; the problems cell, short and whole characters.
+// The class ledger's pieces: a safe folder name for any student name, one to one; a printable name,
+// one to one too; CSV cells that a real CSV reader reads back as they were, formulas defused; the
+// problems cell, short and whole characters.
 #include "grader/course/class_run.h"
+#include "grader/course/run_scratch.h"
 #include "src/csv.h"
+#include "src/text.h"
 #include "support/read_csv.h"
 
 #include <doctest/doctest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
+#if defined(__unix__) || defined(__APPLE__)
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+#endif
 
+namespace fs = std::filesystem;
 using raylab::grader::printableName;
+using raylab::grader::removeAbandonedScratch;
+using raylab::grader::RunScratch;
 using raylab::grader::problemSummary;
 using raylab::grader::safeStudentName;
 
@@ -45,10 +58,37 @@ TEST_CASE("safe student names: one to one, file names of plain characters that n
     CHECK(safeStudentName("a%2Cb") == "a%252Cb");
 }
 
-TEST_CASE("printable names: one line, control characters shown") {
+TEST_CASE("printable names: one line of UTF-8, control characters and bytes that are not UTF-8 shown, one to one") {
     CHECK(printableName("new\nline") == "new\\nline");
     CHECK(printableName("tab\there\x01") == "tab\\there\\x01");
-    CHECK(printableName("ünïcödé") == "ünïcödé");
+    CHECK(printableName("ünïcödé 名前 😀") == "ünïcödé 名前 😀");
+    CHECK(printableName("bad\xFEname") == "bad\\xFEname");
+    CHECK(printableName("bad\xFFname") == "bad\\xFFname");
+    CHECK(printableName("esc\x1B[31m, del\x7F, csi\xC2\x9B") == "esc\\x1B[31m, del\\x7F, csi\\xC2\\x9B");
+    CHECK(printableName("overlong\xC0\xAF, surrogate\xED\xA0\x80, cut\xE2\x82") ==
+          "overlong\\xC0\\xAF, surrogate\\xED\\xA0\\x80, cut\\xE2\\x82");
+    CHECK(printableName("nonchar\xEF\xBF\xBF") == "nonchar\\xEF\\xBF\\xBF");
+    CHECK(printableName("back\\slash") == "back\\\\slash");
+    // Two names never print alike: a byte and the text that shows it, U+FFFD and a bad byte.
+    std::set<std::string> shown;
+    for (const std::string& name : std::vector<std::string>{"bad\xFEname", "bad\xFFname", "bad\\xFEname", "bad\xEF\xBF\xBDname", "new\nline",
+                                   "new\\nline", std::string("nul\0", 4), "nul\\x00"})
+        CHECK_MESSAGE(shown.insert(printableName(name)).second, printableName(name));
+}
+
+TEST_CASE("printable messages keep their lines and tabs, and are UTF-8 whatever the bytes") {
+    CHECK(raylab::printableText("a\nb\tc\r\n") == "a\nb\tc\r\n");
+    CHECK(raylab::printableText("\x1B[2Jcleared \xFE") == "\\x1B[2Jcleared \\xFE");
+    CHECK(raylab::printableText("C:\\path") == "C:\\path");
+}
+
+TEST_CASE("CSV cells a spreadsheet would run as a formula read as text; numbers stay numbers") {
+    const std::vector<std::string> cells{"=1+2*3", "=HYPERLINK(\"http://x\",\"y\")", "+1+1", "-1+1", "@SUM(A1)", "\tx",
+                                         "\rx", "-", "-1.5", "+2", "3e-4", "-.5", "x=1", ""};
+    const auto rows = raylab::test::readCsv(raylab::csvLine(cells));
+    REQUIRE(rows.size() == 1);
+    CHECK(rows[0] == std::vector<std::string>{"'=1+2*3", "'=HYPERLINK(\"http://x\",\"y\")", "'+1+1", "'-1+1", "'@SUM(A1)",
+                                              "'\tx", "'\rx", "'-", "-1.5", "+2", "3e-4", "-.5", "x=1", ""});
 }
 
 TEST_CASE("CSV lines read back by a CSV reader as the cells they were written from") {
@@ -76,3 +116,38 @@ TEST_CASE("problem summaries: the first line and three error lines, cut at a wor
 }
 
 } // TEST_SUITE
+
+#if defined(__unix__) || defined(__APPLE__)
+TEST_SUITE("class run") {
+
+TEST_CASE("scratch folders: a dead run's is removed; a live run's, and a folder that is no run's, are kept") {
+    const fs::path temporary = fs::temp_directory_path() / "raylab-unit-scratch";
+    fs::remove_all(temporary);
+    fs::create_directories(temporary / "raylab-class-not-a-run" / "inside"); // a user's or a test's folder
+    fs::create_directories(temporary / "raylab-class-dead");
+    std::ofstream(temporary / "raylab-class-dead" / ".raylab-run") << ""; // its holder is gone: no lock
+    std::ofstream(temporary / "raylab-class-dead" / "agent.txt") << "left";
+    fs::create_directories(temporary / "raylab-grade-dead");
+    std::ofstream(temporary / "raylab-grade-dead" / ".raylab-run") << ""; // another kind of run
+    {
+        const RunScratch live("class"); // in the real temporary folder: its own, locked
+        fs::create_directories(temporary / "raylab-class-live");
+        fs::copy_file(live.path() / ".raylab-run", temporary / "raylab-class-live" / ".raylab-run");
+        const int held = ::open((temporary / "raylab-class-live" / ".raylab-run").c_str(), O_RDONLY | O_CLOEXEC);
+        REQUIRE(held >= 0);
+        REQUIRE(::flock(held, LOCK_EX | LOCK_NB) == 0); // as a live run holds its mark
+        const auto removed = removeAbandonedScratch(temporary, "class");
+        CHECK(removed == std::vector<fs::path>{temporary / "raylab-class-dead"});
+        CHECK(fs::exists(temporary / "raylab-class-live"));
+        CHECK(fs::exists(temporary / "raylab-class-not-a-run" / "inside"));
+        CHECK(fs::exists(temporary / "raylab-grade-dead"));
+        CHECK(fs::exists(live.path()));
+        ::close(held);
+        CHECK(removeAbandonedScratch(temporary, "class") == std::vector<fs::path>{temporary / "raylab-class-live"});
+        CHECK(fs::exists(live.path())); // still held by `live`
+    }
+    fs::remove_all(temporary);
+}
+
+} // TEST_SUITE
+#endif

@@ -2,6 +2,8 @@
 
 #include "src/atomic_file.h"
 #include "src/csv.h"
+#include "src/messages.h"
+#include "src/text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +28,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #endif
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 
 namespace raylab::grader {
 
@@ -44,8 +49,10 @@ fs::path studentsFolder(const fs::path& out) { return out / "students"; }
 std::string recordJson(const StudentRecord& record) {
     nlohmann::json cells = nlohmann::json::array();
     for (const auto& [column, value] : record.cells) cells.push_back({{"column", column}, {"value", value}});
-    const nlohmann::json root{{"student", record.student}, {"cells", cells}};
-    // A name that is not UTF-8 is kept in the folder's safe name; here it reads with U+FFFD.
+    nlohmann::json madeBy = nlohmann::json::array();
+    for (const auto& [name, value] : record.madeBy) madeBy.push_back({{"name", name}, {"value", value}});
+    const nlohmann::json root{{"student", record.student}, {"cells", cells}, {"made_by", madeBy}};
+    // Printable text is UTF-8 already: the handler only guards a hand-made record.
     return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
@@ -57,10 +64,28 @@ std::optional<StudentRecord> readRecord(const fs::path& file) {
         StudentRecord record{root.at("student").get<std::string>(), {}};
         for (const nlohmann::json& cell : root.at("cells"))
             record.cells.emplace_back(cell.at("column").get<std::string>(), cell.at("value").get<std::string>());
+        if (root.contains("made_by")) // a result written before results said what made them has none
+            for (const nlohmann::json& setting : root.at("made_by"))
+                record.madeBy.emplace_back(setting.at("name").get<std::string>(), setting.at("value").get<std::string>());
         return record;
     } catch (const nlohmann::json::exception&) {
         return std::nullopt; // never half-written (atomic), so only a hand-edited file: graded again
     }
+}
+
+// "timeout 60 (now 180), labs 1 (now all)": the settings of `then` that `now` does not share.
+std::string settingsChanged(const Settings& then, const Settings& now) {
+    std::string changed;
+    const auto valueIn = [](const Settings& settings, const std::string& name) -> std::string {
+        for (const auto& [n, v] : settings)
+            if (n == name) return v;
+        return "?";
+    };
+    for (const auto& [name, value] : now)
+        if (valueIn(then, name) != value)
+            changed += (changed.empty() ? "" : "; ") +
+                       tr("grade.setting_changed", {{"name", name}, {"then", valueIn(then, name)}, {"now", value}});
+    return changed;
 }
 
 // The results in OUT, by safe name.
@@ -91,7 +116,7 @@ void writeGrades(const fs::path& out, const std::map<std::string, StudentRecord>
         for (const std::string& column : columns) {
             const auto cell = std::find_if(record->cells.begin(), record->cells.end(),
                                            [&](const auto& c) { return c.first == column; });
-            line.push_back(cell != record->cells.end() ? cell->second : "");
+            line.push_back(cell != record->cells.end() ? printableText(cell->second) : "");
         }
         csv += csvLine(line);
     }
@@ -221,6 +246,7 @@ public:
         }
         return true;
     }
+    int descriptor() const { return m_fd; }
     RunLock() = default;
     ~RunLock() {
         if (m_fd >= 0) ::close(m_fd); // releases the lock; the file stays, harmless, for the next run
@@ -244,6 +270,7 @@ private:
 class RunLock { // elsewhere: no lock (one instructor's machine)
 public:
     bool acquire(const fs::path&, bool, std::string&) { return true; }
+    int descriptor() const { return -1; }
 };
 
 #endif
@@ -252,8 +279,10 @@ public:
 
 enum class Outcome { Graded, Stopped, Failed };
 
-void gradeAndRecord(const StudentWork& work, const GradeStudent& grade) {
-    const StudentRecord record = grade(work);
+void gradeAndRecord(const StudentWork& work, const GradeStudent& grade, const Settings& madeBy) {
+    StudentRecord record = grade(work);
+    record.student = printableName(work.name); // the row's name, whatever the grading called it
+    record.madeBy = madeBy;
     writeFileAtomically(work.folder / kResultFile, recordJson(record)); // last: the grading finished
 }
 
@@ -264,22 +293,45 @@ std::string describeStatus(int status) {
     return "its grading process exited with status " + std::to_string(WEXITSTATUS(status));
 }
 
+// The run is gone (SIGKILL, SIGHUP, a crash: the kernel sends the student's process SIGTERM) or
+// stops it: its whole group goes, the build guard first given a moment to stop its compiler's group.
+extern "C" void onRunGone(int) {
+    std::signal(SIGTERM, SIG_IGN);
+    kill(0, SIGTERM);
+    const timespec moment{0, 100'000'000};
+    nanosleep(&moment, nullptr);
+    kill(0, SIGKILL); // and ourselves
+}
+
+// In the student's process, first: it holds none of the run's locks and dies with the run.
+void bindToRun(pid_t run, const std::vector<int>& runOnlyDescriptors) {
+    setpgid(0, 0);
+    for (int fd : runOnlyDescriptors)
+        if (fd >= 0) ::close(fd);
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, onRunGone);
+#ifdef __linux__
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+#endif
+    if (getppid() != run) onRunGone(SIGTERM); // the run died before prctl: no signal will come
+}
+
 // The student is graded in a process of its own, in its own process group with every build tool
 // it starts (the agents die with it), so that a stop ends them all and a crash costs one student.
-Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, std::string& why) {
+Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const Settings& madeBy,
+                          const std::vector<int>& runOnlyDescriptors, std::string& why) {
     std::fflush(nullptr); // or the child would print our buffered lines again
+    const pid_t run = getpid();
     const pid_t pid = fork();
     if (pid < 0) {
         why = std::string("cannot start a process: ") + std::strerror(errno);
         return Outcome::Failed;
     }
     if (pid == 0) {
-        setpgid(0, 0);
-        std::signal(SIGINT, SIG_DFL);
-        std::signal(SIGTERM, SIG_DFL);
+        bindToRun(run, runOnlyDescriptors);
         int status = 0;
         try {
-            gradeAndRecord(work, grade);
+            gradeAndRecord(work, grade, madeBy);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "raylab: error: grading %s: %s\n", printableName(work.name).c_str(), e.what());
             status = 1;
@@ -306,7 +358,7 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, st
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20)); // a signal cuts it short
     }
-    if (stoppedAt != Clock::time_point{}) kill(-pid, SIGKILL); // whatever of its group is left
+    kill(-pid, SIGKILL); // whatever of its group is left (its pid is not reused while the group lives)
     std::error_code error;
     if (fs::exists(work.folder / kResultFile, error)) return Outcome::Graded; // written whole, even if stopped just after
     if (g_stopSignal != 0) return Outcome::Stopped;
@@ -316,9 +368,10 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, st
 
 #else
 
-Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, std::string& why) {
+Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const Settings& madeBy, const std::vector<int>&,
+                          std::string& why) {
     try {
-        gradeAndRecord(work, grade);
+        gradeAndRecord(work, grade, madeBy);
         return Outcome::Graded;
     } catch (const std::exception& e) {
         why = e.what();
@@ -355,20 +408,7 @@ std::string safeStudentName(const std::string& folderName) {
     return cut;
 }
 
-std::string printableName(const std::string& folderName) {
-    std::string shown;
-    for (char ch : folderName) {
-        const unsigned char c = static_cast<unsigned char>(ch);
-        if (c == '\n') shown += "\\n";
-        else if (c == '\t') shown += "\\t";
-        else if (c < 0x20 || c == 0x7f) {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "\\x%02X", c);
-            shown += hex;
-        } else shown += ch;
-    }
-    return shown;
-}
+std::string printableName(const std::string& folderName) { return printableText(folderName, TextForm::Name); }
 
 int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
     const fs::path& out = options.out;
@@ -381,7 +421,14 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
         std::fprintf(stderr, "raylab: error: %s\n", problem.c_str());
         return 1;
     }
-    std::map<std::string, StudentRecord> ledger = readLedger(out);
+    std::map<std::string, StudentRecord> ledger = readLedger(out), madeOtherwise;
+    for (auto it = ledger.begin(); it != ledger.end();) // not this run's: graded again, out of the CSV until then
+        if (it->second.madeBy != options.madeBy) {
+            madeOtherwise.insert(*it);
+            it = ledger.erase(it);
+        } else {
+            ++it;
+        }
     writeGrades(out, ledger); // the CSV of every finished student, even if a last run stopped before it
     const ClassEntries entries = listClass(options.classFolder, out);
     for (const std::string& line : entries.skipped) std::printf("%s\n", line.c_str());
@@ -394,9 +441,14 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
             std::printf("%-20s already graded (%s)\n", shown.c_str(), (work.folder / kResultFile).string().c_str());
             continue;
         }
+        if (const auto old = madeOtherwise.find(safe); old != madeOtherwise.end())
+            std::printf("%-20s %s\n", shown.c_str(),
+                        tr("grade.graded_again", {{"changes", settingsChanged(old->second.madeBy, options.madeBy)}}).c_str());
         fs::create_directories(work.folder);
         std::string why;
-        const Outcome outcome = gradeInOwnProcess(work, grade, why);
+        std::vector<int> runOnly = options.runOnlyDescriptors;
+        runOnly.push_back(lock.descriptor());
+        const Outcome outcome = gradeInOwnProcess(work, grade, options.madeBy, runOnly, why);
         if (outcome == Outcome::Stopped) {
             std::printf("%-20s interrupted: not graded (the next run grades them)\n", shown.c_str());
             break;

@@ -3,7 +3,8 @@
 // result.json is written atomically when, and only when, that student's grading finished; grades.csv
 // is regenerated from those results, so an interrupted run resumes where it stopped and never
 // duplicates or loses a row. One run at a time per OUT (a lock); SIGINT and SIGTERM stop the run
-// cleanly: the student being graded is left ungraded and the next run grades them.
+// cleanly: the student being graded is left ungraded and the next run grades them. No process of a
+// run outlives it, and only the run holds the lock, so the next run starts at once after a SIGKILL.
 
 #include <filesystem>
 #include <functional>
@@ -13,10 +14,14 @@
 
 namespace raylab::grader {
 
-// A student's row of grades.csv: the real folder name and the cells after it, by column.
+using Settings = std::vector<std::pair<std::string, std::string>>; // name, value
+
+// A student's row of grades.csv: the folder's name as printableName shows it, and the cells after
+// it, by column; and what made it (the run's `madeBy`).
 struct StudentRecord {
     std::string student;
     std::vector<std::pair<std::string, std::string>> cells; // column, value
+    Settings madeBy = {};
 };
 
 // Where a student is graded.
@@ -27,13 +32,20 @@ struct StudentWork {
 };
 
 // Grades one student (building in work.folder / "build", reports in work.folder / "report") and
-// returns their row. On POSIX it runs in a process of its own, which the run stops when interrupted.
+// returns their row. On POSIX it runs in a process of its own, in its own process group with all it
+// starts: the run stops it when interrupted, kills the group when it ends, and it dies with the run
+// (killed with SIGKILL too).
 using GradeStudent = std::function<StudentRecord(const StudentWork& work)>;
 
 struct ClassRunOptions {
     std::filesystem::path classFolder; // one folder per student
     std::filesystem::path out;         // grades.csv, students/, the lock
     bool wait = false;                 // another run holds OUT: wait for it instead of refusing
+    // What makes a result (labs, timeout, grader version, sandbox...): written in each result, and a
+    // result made otherwise is not this run's: that student is graded again, and left out of
+    // grades.csv until they are.
+    Settings madeBy;
+    std::vector<int> runOnlyDescriptors; // locks the run holds: each student's process closes them
 };
 
 // Grades every student of the class not graded yet. Returns the exit status: 0; 1 when OUT is held
@@ -46,7 +58,8 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade);
 // 160 bytes is cut and ends with '~' and a 64-bit hash of the whole name.
 std::string safeStudentName(const std::string& folderName);
 
-// The name as one line of a terminal: control characters as \n, \t or \xHH.
+// The name as one line of UTF-8 for the terminal, grades.csv and the reports, one to one: control
+// characters as \n, \t, \r or \xHH, bytes that are not UTF-8 as \xHH, a backslash as \\.
 std::string printableName(const std::string& folderName);
 
 // A problem as a cell of grades.csv: its first line and its first three error lines (a build

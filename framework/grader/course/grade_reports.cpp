@@ -5,6 +5,7 @@
 #include "src/atomic_file.h"
 #include "src/markup.h"
 #include "src/messages.h"
+#include "src/text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -45,63 +46,67 @@ std::string itemOutput(const FigureOutcome& f) {
     return text;
 }
 
+// Text from outside (a compiler's, an agent's message) in markup: well-formed UTF-8 without the
+// characters XML 1.0 forbids (an ESC from an exception message), then escaped.
+std::string markupText(const std::string& text) { return escapeMarkup(printableText(text)); }
+
 } // namespace
 
 void writeHtmlReport(const GradeResult& result, const ReferenceSet& references, const fs::path& folder) {
     const fs::path images = folder / "images";
     fs::create_directories(images);
     std::ostringstream out;
-    out << "<!doctype html>\n<html lang=\"" << languageCode(language()) << "\"><head><meta charset=\"utf-8\"><title>" << escapeMarkup(result.title)
+    out << "<!doctype html>\n<html lang=\"" << languageCode(language()) << "\"><head><meta charset=\"utf-8\"><title>" << markupText(result.title)
         << "</title>\n<style>body{font-family:sans-serif;max-width:1400px;margin:auto}"
            "img{width:300px;image-rendering:pixelated;border:1px solid #ccc}.pass{color:#080}.fail{color:#b00}"
            "td,th{padding:4px 8px;vertical-align:top;text-align:left}pre{white-space:pre-wrap;margin:0}</style>"
            "</head><body>\n<h1>"
-        << escapeMarkup(result.title) << "</h1>\n<p>"
+        << markupText(result.title) << "</h1>\n<p>"
         << tr("report.html.score", {{"score", "<b>" + number(result.score()) + " / " + number(result.maxScore()) + "</b>"}})
         << "</p>\n<table><tr><th>" << tr("report.html.lab") << "</th><th>" << tr("report.html.points") << "</th><th>"
         << tr("report.html.notes") << "</th></tr>\n";
     for (const LabOutcome& lab : result.labs) {
         std::string notes;
-        for (const std::string& n : lab.notes) notes += escapeMarkup(n) + "<br>";
+        for (const std::string& n : lab.notes) notes += markupText(n) + "<br>";
         out << "<tr><td>" << tr("report.lab", {{"lab", std::to_string(lab.lab)}}) << "</td><td>" << number(lab.points) << " / " << number(lab.maxPoints)
             << "</td><td>" << notes << "</td></tr>\n";
     }
     out << "</table>\n";
-    for (const std::string& p : result.problems) out << "<p class=\"fail\"><pre>" << escapeMarkup(p) << "</pre></p>\n";
+    for (const std::string& p : result.problems) out << "<p class=\"fail\"><pre>" << markupText(p) << "</pre></p>\n";
     out << "<h2>" << tr("report.html.figures") << "</h2>\n<table><tr><th>" << tr("report.html.figure") << "</th><th>"
         << tr("report.html.reference") << "</th><th>" << tr("report.html.yours") << "</th><th>"
         << tr("report.html.difference") << "</th><th>" << tr("report.html.verdict") << "</th></tr>\n";
     for (const FigureOutcome& f : result.figures) {
         const FigureReference* reference = references.find(f.id);
-        out << "<tr><td>" << escapeMarkup(f.id) << "<br>" << tr("report.lab", {{"lab", std::to_string(f.lab)}}) << "<br>" << number(f.points) << " / "
+        out << "<tr><td>" << markupText(f.id) << "<br>" << tr("report.lab", {{"lab", std::to_string(f.lab)}}) << "<br>" << number(f.points) << " / "
             << number(f.maxPoints) << "</td><td>";
         if (reference) {
             writePng(images / (f.id + ".reference.png"), reference->image);
-            out << "<img src=\"images/" << escapeMarkup(f.id) << ".reference.png\">";
+            out << "<img src=\"images/" << markupText(f.id) << ".reference.png\">";
         }
         out << "</td><td>";
         if (!f.studentImage.empty()) {
             copyFileAtomically(f.studentImage, images / (f.id + ".student.png"));
-            out << "<img src=\"images/" << escapeMarkup(f.id) << ".student.png\">";
+            out << "<img src=\"images/" << markupText(f.id) << ".student.png\">";
         }
         out << "</td><td>";
         if (!f.verdict.error.empty()) {
             const bool statistical = reference && reference->stats;
             writePng(images / (f.id + ".diff.png"), heatMap(f.verdict, statistical ? 6.f : 64.f));
-            out << "<img src=\"images/" << escapeMarkup(f.id) << ".diff.png\"><br><small>"
-                << escapeMarkup(tr(statistical ? "report.html.scale_z" : "report.html.scale_lsb")) << "</small>";
+            out << "<img src=\"images/" << markupText(f.id) << ".diff.png\"><br><small>"
+                << markupText(tr(statistical ? "report.html.scale_z" : "report.html.scale_lsb")) << "</small>";
         }
         out << "</td><td><b class=\"" << (f.passed ? "pass" : "fail") << "\">" << verdict(f.passed) << "</b><pre>"
-            << escapeMarkup(itemOutput(f)) << "</pre></td></tr>\n";
+            << markupText(itemOutput(f)) << "</pre></td></tr>\n";
     }
     out << "</table>\n<h2>" << tr("report.html.checks") << "</h2>\n<table><tr><th>" << tr("report.html.lab")
         << "</th><th>" << tr("report.html.check") << "</th><th>" << tr("report.html.points") << "</th><th>"
         << tr("report.html.verdict") << "</th></tr>\n";
     for (const CheckOutcome& c : result.checks)
         out << "<tr><td>" << tr("report.lab", {{"lab", std::to_string(c.lab)}}) << "</td><td>"
-            << escapeMarkup(titleInLanguage(c.name)) << "</td><td>" << number(c.points) << " / " << number(c.maxPoints)
+            << markupText(titleInLanguage(c.name)) << "</td><td>" << number(c.points) << " / " << number(c.maxPoints)
             << "</td><td><b class=\"" << (c.passed ? "pass" : "fail") << "\">" << verdict(c.passed) << "</b><pre>"
-            << escapeMarkup(c.message) << "</pre></td></tr>\n";
+            << markupText(c.message) << "</pre></td></tr>\n";
     out << "</table>\n</body></html>\n";
     writeFileAtomically(folder / "index.html", out.str());
 }
@@ -115,11 +120,11 @@ void writeGradescopeJson(const GradeResult& result, const fs::path& file) {
                          {"score", points},
                          {"max_score", maxPoints},
                          {"status", passed ? "passed" : "failed"},
-                         {"output", output},
+                         {"output", printableText(output)},
                          {"visibility", "visible"}});
     };
     for (const CheckOutcome& c : result.checks)
-        test("lab" + std::to_string(c.lab) + ": " + c.name, c.points, c.maxPoints, c.passed, c.message);
+        test("lab" + std::to_string(c.lab) + ": " + printableText(c.name), c.points, c.maxPoints, c.passed, c.message);
     for (const FigureOutcome& f : result.figures)
         test("lab" + std::to_string(f.lab) + ": figure " + f.id, f.points, f.maxPoints, f.passed, itemOutput(f));
     std::string output = "Total: " + number(result.score()) + " / " + number(result.maxScore()) + "\n";
@@ -129,7 +134,7 @@ void writeGradescopeJson(const GradeResult& result, const fs::path& file) {
     }
     for (const std::string& p : result.problems) output += p + "\n";
     const nlohmann::json root{{"score", result.score()},
-                              {"output", output},
+                              {"output", printableText(output)},
                               {"visibility", "visible"},
                               {"stdout_visibility", "visible"},
                               {"extra_data", {{"max_score", result.maxScore()}}},
@@ -139,18 +144,18 @@ void writeGradescopeJson(const GradeResult& result, const fs::path& file) {
 
 void writeJUnitXml(const GradeResult& result, const fs::path& file) {
     std::ostringstream out;
-    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"" << escapeMarkup(result.title) << "\">\n";
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"" << markupText(result.title) << "\">\n";
     for (const LabOutcome& outcome : result.labs) {
         const int lab = outcome.lab;
         std::ostringstream cases;
         int tests = 0, failures = 0;
         auto item = [&](const std::string& name, bool passed, const std::string& message) {
             ++tests;
-            cases << "  <testcase classname=\"lab" << lab << "\" name=\"" << escapeMarkup(name) << "\">";
+            cases << "  <testcase classname=\"lab" << lab << "\" name=\"" << markupText(name) << "\">";
             if (!passed) {
                 ++failures;
-                cases << "<failure message=\"" << escapeMarkup(message.substr(0, message.find('\n'))) << "\">"
-                      << escapeMarkup(message) << "</failure>";
+                cases << "<failure message=\"" << markupText(message.substr(0, message.find('\n'))) << "\">"
+                      << markupText(message) << "</failure>";
             }
             cases << "</testcase>\n";
         };
@@ -204,7 +209,7 @@ std::string terminalSummary(const GradeResult& result) {
     }
     for (const std::string& p : result.problems) out << "  " << tr("report.problem", {{"problem", p}}) << "\n";
     out << "  " << tr("report.total", {{"score", number(result.score())}, {"max", number(result.maxScore())}}) << "\n";
-    return out.str();
+    return printableText(out.str()); // no escape sequence of a message reaches the terminal
 }
 
 } // namespace raylab::grader

@@ -131,6 +131,13 @@ void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                               for (const auto& [sx, sy] : rendered.points)
                                   offsets.back().emplace_back(sx * p.width - p.i, sy * p.height - p.j);
                           }
+                          // Offsets need samples: a pixel that traces no ray (or too few) has none to differ.
+                          for (std::size_t k = 0; k < twoPixels.size(); ++k)
+                              if (!judge.expectTrue(tr("what.lab5.rays_traced", {{"pixel", twoPixels[k].name()}}),
+                                                    offsets[k].size() == std::size_t(twoPixels[k].samples),
+                                                    std::to_string(twoPixels[k].samples), std::to_string(offsets[k].size()),
+                                                    tr("hint.lab5.one_ray")))
+                                  return;
                           // (i + x) / W in float, read back: the same x within 1e-5 pixel at these sizes.
                           bool same = offsets[0].size() == offsets[1].size() && !offsets[0].empty();
                           for (std::size_t k = 0; same && k < offsets[0].size(); ++k)
