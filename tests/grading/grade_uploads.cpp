@@ -16,7 +16,8 @@ using namespace raylab::test;
 
 namespace {
 
-const fs::path kRoot = fs::temp_directory_path() / "raylab-uploads";
+// In this build's folder: a fixed name in the temporary folder was shared with every other tree's run.
+const fs::path kRoot = binDir().parent_path() / "grading-uploads";
 
 // A submission folder of its own, made empty.
 fs::path submission(const std::string& name) {

@@ -5,6 +5,7 @@
 #   cmake -DRAYLAB=<raylab program> -DSOLUTIONS=<solutions/> -DWORK=<scratch folder> [-DGENERATOR=...]
 #         [-DCCACHE=<ccache>] -P tests/labs/students_tree.cmake
 # Every program runs from an argument vector (execute_process), never through a shell.
+cmake_minimum_required(VERSION 3.22) # if(IN_LIST)
 
 foreach(var RAYLAB SOLUTIONS WORK)
   if(NOT ${var})
