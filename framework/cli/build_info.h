@@ -1,10 +1,11 @@
 #pragma once
-// What this raylab program was built from; CMake sets these (framework/cli/CMakeLists.txt).
+// What this raylab program was built from; CMake sets these (framework/CMakeLists.txt).
 
 namespace raylab::build {
 
-inline constexpr const char* kImpl = RAYLAB_IMPL;               // "student" or "reference"
-inline constexpr const char* kLabOrigins = RAYLAB_LAB_ORIGINS;  // e.g. "lab1=labs lab2=solutions ..."
+// Which program this is: program_identity.cpp, compiled for each (the rest of the tool is shared).
+extern const char* const kImpl;       // "student" or "reference"
+extern const char* const kLabOrigins; // e.g. "lab1=labs lab2=solutions ..."
 inline constexpr const char* kScenesDir = RAYLAB_SCENES_DIR;    // the scenes/ folder of the source tree
 inline constexpr const char* kSourceDir = RAYLAB_SOURCE_DIR;
 inline constexpr const char* kBinaryDir = RAYLAB_BINARY_DIR;    // where the raylab programs are

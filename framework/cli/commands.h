@@ -56,7 +56,7 @@ std::filesystem::path newerLabFile(const std::vector<std::filesystem::path>& lab
 // When a lab file is newer than `program`, builds `targets` first: the files this program takes from
 // labs/ when it is the `runningProgram`, which is then run again in this process's place with the
 // same arguments (the call returns only when nothing changed or the build failed); else every lab
-// file of labs/ (the agents').
+// file of labs/ (the agents'), which are also built when `program` does not exist yet.
 FreshBuild ensureFreshBuild(const Context& context, const std::filesystem::path& program,
                             const std::vector<std::string>& targets, bool runningProgram);
 

@@ -68,6 +68,11 @@ fs::path newerLabFile(const std::vector<fs::path>& labFolders, const fs::path& p
 
 FreshBuild ensureFreshBuild(const Context& context, const fs::path& program, const std::vector<std::string>& targets,
                             bool runningProgram) {
+    std::error_code error;
+    if (!runningProgram && !fs::exists(program, error)) { // the figures' build makes raylab alone
+        std::printf("%s\n", tr("cli.building_agents").c_str());
+        return rebuild(targets) ? FreshBuild::Rebuilt : FreshBuild::BuildFailed;
+    }
     // The running program is built from this build's labs; the agents (the other programs) from labs/ alone.
     const fs::path changed = newerLabFile(studentLabFolders(!runningProgram), program);
     if (changed.empty()) return FreshBuild::Fresh;

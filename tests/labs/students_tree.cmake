@@ -1,6 +1,7 @@
-# The students' tree stays green: `raylab distribute` writes it, and its own test suite (the one its
-# README tells students to run) passes with no lab written (each lab skipped), with lab 1 written
-# (lab 1 passes, the others skipped) and with every lab written (all pass, none skipped).
+# The students' tree stays green: `raylab distribute` writes it; its figures build alone, and
+# `raylab grade` then builds what it needs; its own test suite (the one its README tells students to
+# run) passes with no lab written (each lab skipped), with lab 1 written (lab 1 passes, the others
+# skipped) and with every lab written (all pass, none skipped).
 #
 #   cmake -DRAYLAB=<raylab program> -DSOLUTIONS=<solutions/> -DWORK=<scratch folder> [-DGENERATOR=...]
 #         [-DCCACHE=<ccache>] -P tests/labs/students_tree.cmake
@@ -15,22 +16,8 @@ endforeach()
 set(tree ${WORK}/tree)
 set(build ${WORK}/build)
 
-function(run name expected)
-  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  string(REPLACE ";" " " shown "${ARGN}")
-  message(STATUS "students' tree: ${shown} -> ${status}")
-  if(NOT status EQUAL expected)
-    message(FATAL_ERROR "students' tree: `${shown}` exited with ${status}, expected ${expected}:\n${out}${err}")
-  endif()
-  set(${name} "${out}${err}" PARENT_SCOPE)
-endfunction()
-
-function(expect text needle what)
-  string(FIND "${text}" "${needle}" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "students' tree: ${what}: no \"${needle}\" in:\n${text}")
-  endif()
-endfunction()
+set(STEP_PREFIX "students' tree")
+include(${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake)
 
 # ctest of the students' tree: it must pass, with `passed` labs passed and the others skipped.
 function(suite_passes passed)
@@ -70,6 +57,18 @@ if(CCACHE)
   list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CCACHE})
 endif()
 run(output 0 ${configure})
+
+# The README's first command builds the figures alone (raylab, no grading program): `raylab grade`
+# then builds the grading programs first.
+run(output 0 ${CMAKE_COMMAND} --build ${build} --target figures -j 2)
+if(EXISTS ${build}/bin/raylab-agent)
+  message(FATAL_ERROR "students' tree: building the figures built the grading programs too")
+endif()
+run(output 3 ${build}/bin/raylab --lang en grade --lab 1)
+expect("${output}" "building the grading programs first" "raylab grade after the figures' build")
+if(NOT EXISTS ${build}/bin/raylab-agent)
+  message(FATAL_ERROR "students' tree: raylab grade did not build its grading programs")
+endif()
 
 suite_passes("")
 

@@ -16,25 +16,8 @@ set(tree ${WORK}/tree)
 set(build ${WORK}/build)
 set(bin ${build}/bin)
 
-# run(NAME EXPECTED_STATUS COMMAND...): runs COMMAND in WORK, fails unless it exits with
-# EXPECTED_STATUS ("nonzero" for any failure); its output is in the variable NAME.
-function(run name expected)
-  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  string(REPLACE ";" " " shown "${ARGN}")
-  message(STATUS "toy lab: ${shown} -> ${status}\n${out}${err}")
-  if((expected STREQUAL "nonzero" AND status EQUAL 0) OR (NOT expected STREQUAL "nonzero" AND NOT status EQUAL expected))
-    message(FATAL_ERROR "toy lab: `${shown}` exited with ${status}, expected ${expected}:\n${out}${err}")
-  endif()
-  set(${name} "${out}${err}" PARENT_SCOPE)
-endfunction()
-
-# expect(TEXT NEEDLE WHAT): fails unless TEXT contains NEEDLE.
-function(expect text needle what)
-  string(FIND "${text}" "${needle}" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "toy lab: ${what}: no \"${needle}\" in:\n${text}")
-  endif()
-endfunction()
+set(STEP_PREFIX "toy lab")
+include(${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake)
 
 # 1. The copy of the tree (no build folders, no out/, no tests/), and the toy lab added to it.
 file(REMOVE_RECURSE ${WORK})
