@@ -1,6 +1,7 @@
 // raylab distribute: writes the tree students receive: everything but the reference solutions and
 // what would give them away (the mistakes, valid variants and bad submissions of tests/ are patches
-// against the solutions, which show their lines). It builds, runs and self-grades on its own: the
+// against the solutions, which show their lines; the studies and tests that hold a lab's answer are
+// built only where solutions/ is). It builds, runs and self-grades on its own: the
 // labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's references
 // (framework/grader/data/references/) go with it. tests/grading/distribute_ships_no_solution.cpp
 // checks what it writes.
@@ -25,7 +26,16 @@ namespace fs = std::filesystem;
 const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/variants", "tests/grading/bad_submissions",
                                       ".git", "out", "compile_commands.json", ".cache",
                                       // raylab bench's yardstick writes the solutions' formulas out
-                                      "framework/study/yardstick.cpp"};
+                                      "framework/study/yardstick.cpp",
+                                      // lab 3's intersection, written out for raylab numerics and study
+                                      // intersection (built only where solutions/ is), and what needs it
+                                      "framework/study/sphere_formulas.h", "framework/study/numerics_study.h",
+                                      "framework/study/intersection_study.cpp", "framework/study/image_study.cpp",
+                                      "framework/study/accumulation_study.cpp", "framework/cli/numerics_command.cpp",
+                                      "tests/numerics",
+                                      // a complete lab 3 sphere that counts its calls, and its test
+                                      "tests/study/counting_sphere.cpp", "tests/study/counting_sphere.h",
+                                      "tests/study/test_render_work.cpp"};
 
 bool withheld(const fs::path& relative) {
     const std::string text = relative.generic_string();
@@ -67,7 +77,8 @@ namespace {
 
 int distribute(const fs::path& source, const fs::path& out) {
     const int files = writeStudentTree(source, out);
-    std::printf("raylab distribute: %d files -> %s (without solutions/, tests/mistakes/, tests/variants/)\n"
+    std::printf("raylab distribute: %d files -> %s (without solutions/, tests/mistakes/, tests/variants/ and the "
+                "code that holds a lab's answer)\n"
                 "  students build it with: cmake --workflow --preset test, and grade themselves with: "
                 "build/bin/raylab grade\n",
                 files, out.string().c_str());

@@ -18,7 +18,6 @@
 #include <filesystem>
 #include <map>
 #include <memory>
-#include <random>
 #include <sstream>
 
 namespace raylab::cli {
@@ -41,21 +40,18 @@ struct GradeOptions {
 // lab's own stubs): the students' tree's ctest reports such a lab as skipped, not failed.
 constexpr int kNothingWrittenStatus = 3;
 
-// A fresh folder of our own for the agents' files.
-fs::path scratchFolder(const std::string& what) {
-    std::random_device random;
-    const fs::path folder = fs::temp_directory_path() / ("raylab-" + what + "-" + std::to_string(random()));
-    fs::create_directories(folder);
-    return folder;
+// Names the scratch folders that runs killed with SIGKILL left and that `scratch` removed as it was
+// made (a live run's never: its lock is held); `command` says whose they were.
+void noteRemovedScratch(const RunScratch& scratch, const std::string& command) {
+    for (const fs::path& removed : scratch.removedAtStart())
+        std::printf("%s\n", tr("grade.abandoned_scratch_removed", {{"folder", removed.string()}, {"command", command}}).c_str());
 }
 
 GradeSetup setupFor(const GradeOptions& o, const Context& context, const fs::path& scratch) {
     GradeSetup setup = loadGradeSetup(o.references.empty() ? referencesFolder() : fs::path(o.references), labsFolder(),
                                       context.scenes, scratch);
-    if (o.lab != 0 && setup.labs.lab(o.lab) == nullptr) {
-        fs::remove_all(scratch);
+    if (o.lab != 0 && setup.labs.lab(o.lab) == nullptr)
         throw std::invalid_argument(tr("grade.no_such_lab", {{"lab", std::to_string(o.lab)}, {"labs", labList(setup.labs)}}));
-    }
     setup.limits.wallSeconds = o.timeout;
     setup.limits.bubblewrap = !o.noSandbox;
     setup.threads = context.threads;
@@ -71,8 +67,9 @@ Toolchain toolchain(bool forClass) {
 
 // --images: a line per figure; 0 only when every figure found passes.
 int gradeImageFolder(const GradeOptions& o, const Context& context) {
-    const fs::path scratch = scratchFolder("images");
-    const GradeSetup setup = setupFor(o, context, scratch);
+    const RunScratch scratch("images"); // removed at its end, even on an exception
+    noteRemovedScratch(scratch, "grade --images");
+    const GradeSetup setup = setupFor(o, context, scratch.path());
     GradeResult result = gradeImages(setup, o.images);
     result.title = "raylab grade --images " + o.images;
     int found = 0, failed = 0;
@@ -90,7 +87,6 @@ int gradeImageFolder(const GradeOptions& o, const Context& context) {
                                                    {"missing", std::to_string(result.figures.size() - std::size_t(found))},
                                                    {"report", o.report + "/index.html"}})
                             .c_str());
-    fs::remove_all(scratch);
     return found > 0 && failed == 0 ? 0 : 1;
 }
 
@@ -143,14 +139,10 @@ int gradeLabs(GradeOptions o, const Context& context) {
         std::printf("%s\n", tr("cli.build_failed_grading_copy").c_str());
         o.labs = labsFolder().string();
     }
-    const fs::path scratch = scratchFolder("grade");
-    const GradeSetup setup = setupFor(o, context, scratch);
-    if (!o.item.empty()) try { // its lab is graded, the item alone kept
-            o.lab = labOfItem(setup.labs, o.item);
-        } catch (const std::invalid_argument&) {
-            fs::remove_all(scratch);
-            throw;
-        }
+    const RunScratch scratch("grade"); // removed at its end, even on an exception
+    noteRemovedScratch(scratch, "grade");
+    const GradeSetup setup = setupFor(o, context, scratch.path());
+    if (!o.item.empty()) o.lab = labOfItem(setup.labs, o.item); // its lab is graded, the item alone kept
     const fs::path buildDir = o.buildDir.empty() ? fs::path("out/grade-build") : fs::path(o.buildDir);
     GradeResult result =
         gradeCodeOnce(o, setup, toolchain(false), buildDir, "raylab grade " + (o.labs.empty() ? std::string("(labs/)") : o.labs));
@@ -158,7 +150,6 @@ int gradeLabs(GradeOptions o, const Context& context) {
     std::printf("%s", terminalSummary(result).c_str());
     writeReports(result, setup.references, o.report);
     std::printf("%s\n", tr("grade.report_written", {{"report", o.report + "/index.html"}}).c_str());
-    fs::remove_all(scratch);
     if (result.allPassed()) return 0;
     const bool nothingWritten = std::all_of(result.labs.begin(), result.labs.end(),
                                             [](const LabOutcome& l) { return l.notStarted || l.maxPoints == 0.; });
@@ -210,9 +201,8 @@ void requireBubblewrapForClass(const GradeOptions& o) {
 
 int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& context) {
     requireBubblewrapForClass(o);
-    const RunScratch scratch("class"); // and the scratch folders of runs killed with SIGKILL removed
-    for (const fs::path& removed : scratch.removedAtStart())
-        std::printf("%s\n", tr("grade.abandoned_scratch_removed", {{"folder", removed.string()}}).c_str());
+    const RunScratch scratch("class"); // removed at its end, even on an exception
+    noteRemovedScratch(scratch, "grade-class");
     run.runOnlyDescriptors.push_back(scratch.lockDescriptor());
     const GradeSetup setup = setupFor(o, context, scratch.path());
     run.madeBy = resultSettings(o, setup);

@@ -26,6 +26,22 @@ std::string unknownCommand(CLI::App& app, int argc, char** argv) {
     return raylab::tr("cli.unknown_command", {{"command", argv[1]}, {"commands", names}});
 }
 
+// The commands a build without solutions/ (the students' tree) does not have, because their code
+// holds a lab's answer: named as the instructors' rather than unknown. Empty when this one is not one.
+std::string instructorsOnlyCommand(int argc, char** argv) {
+#ifdef RAYLAB_HAVE_NUMERICS
+    (void)argc;
+    (void)argv;
+    return "";
+#else
+    const auto is = [&](int k, const char* word) { return argc > k && std::string(argv[k]) == word; };
+    if (is(1, "numerics")) return raylab::tr("cli.instructors_only", {{"command", "raylab numerics"}});
+    if (is(1, "study") && is(2, "intersection"))
+        return raylab::tr("cli.instructors_only", {{"command", "raylab study intersection"}});
+    return "";
+#endif
+}
+
 // CLI11 names an option's value with English words (TEXT:DIR, INT in [1 - 100]): each word the
 // catalogue knows ([cli.type]) is said in the reader's language.
 std::string typeNameInLanguage(const std::string& typeName) {
@@ -152,10 +168,16 @@ int main(int argc, char** argv) {
 #ifndef RAYLAB_GRADING_ONLY
     cli::addStudyAntialiasingCommand(app, context);
     cli::addBenchEffectsCommand(app, context);
+#ifdef RAYLAB_HAVE_NUMERICS
     cli::addNumericsCommands(app, context);
+#endif
     cli::addReportCommand(app, context);
 #endif
     groupHelpFlags(app);
+    if (const std::string absent = instructorsOnlyCommand(argc, argv); !absent.empty()) {
+        std::fprintf(stderr, "%s\n", raylab::tr("cli.error", {{"what", absent}}).c_str());
+        return 1;
+    }
     if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
         std::fprintf(stderr, "%s\n", raylab::tr("cli.error", {{"what", unknown}}).c_str());
         return 1;

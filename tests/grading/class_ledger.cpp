@@ -1,6 +1,6 @@
 // raylab grade-class as a ledger: interrupted at random points it resumes to the CSV of a quiet run;
-// killed with SIGKILL it leaves nothing that stops the next run; a second run on the same --out
-// refuses (or waits); hostile folder names each get their own row.
+// killed with SIGKILL it leaves nothing that stops the next run, and nor does raylab grade; a second
+// run on the same --out refuses (or waits); hostile folder names each get their own row.
 // The students are graded by a prebuilt agent (--agent), so no test here runs CMake.
 #include "support/files.h"
 #include "grader/course/class_run.h"
@@ -26,6 +26,10 @@
 #ifdef __linux__
 #include <sstream>
 #include <sys/prctl.h>
+#endif
+#ifdef RAYLAB_LEDGER_TESTS
+#include <fcntl.h>
+#include <sys/file.h>
 #endif
 
 using namespace raylab::test;
@@ -237,10 +241,10 @@ std::vector<pid_t> liveChildren() {
     return alive;
 }
 
-std::vector<fs::path> scratchFolders(const fs::path& temporary) {
+std::vector<fs::path> scratchFolders(const fs::path& temporary, const std::string& prefix = "raylab-class-") {
     std::vector<fs::path> found;
     for (const auto& entry : fs::directory_iterator(temporary))
-        if (entry.path().filename().string().rfind("raylab-class-", 0) == 0) found.push_back(entry.path());
+        if (entry.path().filename().string().rfind(prefix, 0) == 0) found.push_back(entry.path());
     return found;
 }
 
@@ -295,6 +299,61 @@ TEST_CASE("grade-class killed with SIGKILL while grading: no process of it is le
     liveChildren(); // reaps
 }
 #endif
+
+TEST_CASE("raylab grade killed with SIGKILL leaves its scratch folder, which the next grade removes; a live run's "
+          "stays, and grade --images removes a dead one too") {
+    const fs::path root = freshFolder("raylab-ledger-grade-sigkill");
+    const fs::path temporary = root / "tmp"; // the runs' scratch folders, and only theirs
+    fs::create_directories(temporary);
+    const std::vector<std::string> environment{"TMPDIR=" + temporary.string()};
+    const std::string agent = (binDir() / "raylab-agent-reference").string();
+    ProgramProcess killed = startProgram(binDir() / "raylab", {"grade", "--agent", agent, "--report", (root / "r1").string()},
+                                         root / "killed.txt", 0, environment);
+    // Killed once its scratch folder is made and marked (the bound only ends a failing test).
+    std::vector<fs::path> made;
+    for (int k = 0; k < 12000 && made.empty(); ++k) {
+        for (const fs::path& folder : scratchFolders(temporary, "raylab-grade-"))
+            if (fs::exists(folder / ".raylab-run")) made.push_back(folder);
+        if (made.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    REQUIRE_MESSAGE(made.size() == 1, killed.text());
+    kill(killed.pid, SIGKILL);
+    CHECK(killed.finish() == 128 + SIGKILL);
+    kill(-killed.pid, SIGKILL); // whatever of its group is left
+    CHECK(fs::exists(made[0])); // nobody could remove it
+
+    // A live run's folder: its mark locked by this process, as a running grade holds its own.
+    const fs::path live = temporary / "raylab-grade-live";
+    fs::create_directories(live);
+    std::ofstream(live / ".raylab-run") << "";
+    const int held = ::open((live / ".raylab-run").c_str(), O_RDONLY | O_CLOEXEC);
+    REQUIRE(held >= 0);
+    REQUIRE(::flock(held, LOCK_EX | LOCK_NB) == 0);
+
+    ProgramProcess next = startProgram(binDir() / "raylab", {"grade", "--lab", "1", "--agent", agent, "--report", (root / "r2").string()},
+                                       root / "next.txt", 0, environment);
+    const int nextStatus = next.finish();
+    const std::string output = next.text();
+    CHECK_MESSAGE(nextStatus == 0, output);
+    CHECK_MESSAGE(output.find("removed " + made[0].string() + ": the scratch folder of a grade run that was killed") !=
+                      std::string::npos,
+                  output);
+    CHECK_FALSE(fs::exists(made[0]));
+    CHECK(scratchFolders(temporary, "raylab-grade-") == std::vector<fs::path>{live}); // its own removed at its end too
+    ::close(held);
+
+    // grade --images: the same for its own kind of folder (a mark no process holds is a dead run's).
+    fs::create_directories(temporary / "raylab-images-dead");
+    std::ofstream(temporary / "raylab-images-dead" / ".raylab-run") << "";
+    fs::create_directories(root / "no-images");
+    ProgramProcess images = startProgram(binDir() / "raylab", {"grade", "--images", (root / "no-images").string(), "--report",
+                                                              (root / "r3").string()},
+                                         root / "images.txt", 0, environment);
+    images.finish(); // no image found: it fails, and still sweeps
+    CHECK_MESSAGE(images.text().find("the scratch folder of a grade --images run that was killed") != std::string::npos,
+                  images.text());
+    CHECK(scratchFolders(temporary, "raylab-images-").empty());
+}
 
 TEST_CASE("hostile folder names each get their own row with their printable name and full points; formulas are "
           "defused; odd entries are skipped") {

@@ -1,60 +1,35 @@
-// `raylab distribute` hands out no solution: no file of the students' tree (written just before by
-// the CTest fixture "distributed_tree", tests/grading/CMakeLists.txt) holds a run of kRun tokens
-// equal to a run in the body of a function of solutions/*.cpp. Tokens are C++'s, roughly:
-// identifiers, numbers, string and character literals, one punctuation character each; comments and
-// white space are not tokens, so reformatting or recommenting a body does not hide it.
+// `raylab distribute` hands out no solution (issue 21): no file of the students' tree (written just
+// before by the CTest fixture "distributed_tree", tests/grading/CMakeLists.txt) holds a window of
+// kWindow characters of solutions/ code, comments and white space removed on both sides, so that
+// reformatting or recommenting hides nothing. Windows the stubs of labs/ also hold (the given
+// signatures, includes and calls) are left out: they are handed out on purpose. Windows are hashed
+// into a set, so each file of the tree is read once, in linear time.
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstddef>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::size_t kRun = 25;
-
-struct Token {
-    std::string text;
-    int line = 0;
-};
+constexpr std::size_t kWindow = 60;
 
 std::string readFile(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
-}
-
-bool isWordChar(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
-bool isDigit(char c) {
-    return std::isdigit(static_cast<unsigned char>(c)) != 0;
-}
-
-// The end of the number that starts at `i`: digits, letters (suffixes, hex), '.', digit separators,
-// and the sign of an exponent (1e-9, 0x1p+3).
-std::size_t numberEnd(const std::string& text, std::size_t i) {
-    std::size_t j = i + 1;
-    while (j < text.size()) {
-        const char c = text[j];
-        const char before = text[j - 1];
-        const bool exponentSign =
-            (c == '+' || c == '-') && (before == 'e' || before == 'E' || before == 'p' || before == 'P');
-        if (!isWordChar(c) && c != '.' && c != '\'' && !exponentSign) break;
-        ++j;
-    }
-    return j;
 }
 
 // The end of the literal that starts at `i` with its quote; a literal never spans lines (so an
@@ -67,142 +42,96 @@ std::size_t literalEnd(const std::string& text, std::size_t i) {
     return std::min(j + 1, text.size());
 }
 
-std::vector<Token> tokenize(const std::string& text) {
-    std::vector<Token> tokens;
-    int line = 1;
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+}
+
+// The text without its // and /* */ comments and without white space (kept inside literals, where
+// "//" is not a comment; their spaces go too, as everywhere).
+std::string codeOnly(const std::string& text) {
+    std::string code;
+    code.reserve(text.size());
     std::size_t i = 0;
     while (i < text.size()) {
-        const char c = text[i];
-        std::size_t end = i + 1;
         if (text.compare(i, 2, "//") == 0) {
-            end = std::min(text.find('\n', i), text.size());
+            i = std::min(text.find('\n', i), text.size());
         } else if (text.compare(i, 2, "/*") == 0) {
             const std::size_t close = text.find("*/", i + 2);
-            end = close == std::string::npos ? text.size() : close + 2;
-        } else if (std::isspace(static_cast<unsigned char>(c))) {
-        } else if (isDigit(c) || (c == '.' && i + 1 < text.size() && isDigit(text[i + 1]))) {
-            end = numberEnd(text, i);
-            tokens.push_back({text.substr(i, end - i), line});
-        } else if (isWordChar(c)) {
-            while (end < text.size() && isWordChar(text[end]))
-                ++end;
-            tokens.push_back({text.substr(i, end - i), line});
-        } else if (c == '"' || c == '\'') {
-            end = literalEnd(text, i);
-            tokens.push_back({text.substr(i, end - i), line});
+            i = close == std::string::npos ? text.size() : close + 2;
+        } else if (text[i] == '"' || text[i] == '\'') {
+            const std::size_t end = literalEnd(text, i);
+            for (; i < end; ++i)
+                if (!isSpace(text[i])) code += text[i];
         } else {
-            tokens.push_back({std::string(1, c), line});
+            if (!isSpace(text[i])) code += text[i];
+            ++i;
         }
-        for (std::size_t k = i; k < end; ++k)
-            line += text[k] == '\n';
-        i = end;
     }
-    return tokens;
+    return code;
 }
 
-struct Function {
-    std::string where;             // "solutions/lab3_sphere/sphere_geometry.cpp SphereGeometry::intersect"
-    std::vector<std::string> body; // from its '{' to its '}'
+using Windows = std::unordered_set<std::string_view>;
+
+// Every window of `code` (which must outlive the set).
+void addWindows(Windows& windows, const std::string& code) {
+    for (std::size_t k = 0; k + kWindow <= code.size(); ++k)
+        windows.insert(std::string_view(code).substr(k, kWindow));
+}
+
+std::map<std::string, fs::path> filesUnder(const fs::path& folder) {
+    std::map<std::string, fs::path> files; // sorted, for a stable report
+    for (const auto& entry : fs::recursive_directory_iterator(folder))
+        if (entry.is_regular_file()) files.emplace(entry.path().lexically_relative(folder).generic_string(), entry.path());
+    return files;
+}
+
+// The windows of solutions/ code that the stubs do not share, and the solution file each comes from.
+class SolutionWindows {
+public:
+    SolutionWindows(const SolutionWindows&) = delete; // the windows are views of its own texts
+    SolutionWindows& operator=(const SolutionWindows&) = delete;
+    SolutionWindows(const fs::path& solutions, const fs::path& stubs) {
+        for (const auto& [relative, path] : filesUnder(stubs))
+            if (path.extension() == ".cpp" || path.extension() == ".h")
+                addWindows(m_stubs, m_texts.emplace_back(codeOnly(readFile(path))));
+        for (const auto& [relative, path] : filesUnder(solutions)) {
+            if (path.extension() != ".cpp" && path.extension() != ".h") continue;
+            const std::string& code = m_texts.emplace_back(codeOnly(readFile(path)));
+            for (std::size_t k = 0; k + kWindow <= code.size(); ++k) {
+                const std::string_view window = std::string_view(code).substr(k, kWindow);
+                if (!m_stubs.count(window)) m_from.emplace(window, "solutions/" + relative);
+            }
+        }
+    }
+    std::size_t size() const { return m_from.size(); }
+    // The solution file whose window this is, or nullptr.
+    const std::string* find(std::string_view window) const {
+        const auto hit = m_from.find(window);
+        return hit == m_from.end() ? nullptr : &hit->second;
+    }
+
+private:
+    std::deque<std::string> m_texts; // the windows' storage: a deque never moves what it holds
+    Windows m_stubs;
+    std::unordered_map<std::string_view, std::string> m_from;
 };
 
-// "Class::name" of the function whose body opens at `open`: the name before the first '(' of the
-// declaration, which starts after the previous ';', '{' or '}'.
-std::string functionName(const std::vector<Token>& tokens, std::size_t open) {
-    std::size_t start = open;
-    while (start > 0 && tokens[start - 1].text != ";" && tokens[start - 1].text != "{" && tokens[start - 1].text != "}")
-        --start;
-    std::size_t paren = start;
-    while (paren < open && tokens[paren].text != "(")
-        ++paren;
-    if (paren == start || paren == open) return "?";
-    std::string name = tokens[paren - 1].text;
-    if (paren >= start + 4 && tokens[paren - 2].text == ":" && tokens[paren - 3].text == ":")
-        name = tokens[paren - 4].text + "::" + name;
-    return name;
-}
-
-// The bodies of the functions defined at namespace scope (free functions and members defined out of
-// their class, which is how every lab file is written).
-std::vector<Function> functionBodies(const fs::path& file, const std::string& label) {
-    const std::vector<Token> tokens = tokenize(readFile(file));
-    std::vector<Function> functions;
-    const std::set<std::string> beforeBody{")", "const", "noexcept", "override"};
-    std::vector<bool> namespaceBraces; // one entry an open brace: does it open a namespace?
-    for (std::size_t k = 0; k < tokens.size(); ++k) {
-        const std::string& t = tokens[k].text;
-        if (t == "}" && !namespaceBraces.empty()) namespaceBraces.pop_back();
-        if (t != "{") continue;
-        const bool opensNamespace =
-            (k >= 1 && tokens[k - 1].text == "namespace") || (k >= 2 && tokens[k - 2].text == "namespace");
-        bool atNamespaceScope = true;
-        for (bool isNamespace : namespaceBraces)
-            atNamespaceScope = atNamespaceScope && isNamespace;
-        if (opensNamespace || !atNamespaceScope || k == 0 || !beforeBody.count(tokens[k - 1].text)) {
-            namespaceBraces.push_back(opensNamespace);
-            continue;
-        }
-        Function f{label + " " + functionName(tokens, k), {}};
-        int depth = 0;
-        std::size_t end = k;
-        for (; end < tokens.size(); ++end) {
-            f.body.push_back(tokens[end].text);
-            depth += tokens[end].text == "{" ? 1 : tokens[end].text == "}" ? -1 : 0;
-            if (depth == 0) break;
-        }
-        functions.push_back(std::move(f));
-        k = end; // the body's closing brace is consumed with it
-    }
-    return functions;
-}
-
-std::vector<Function> solutionFunctions(const fs::path& solutions) {
-    std::vector<Function> functions;
-    for (const auto& entry : fs::recursive_directory_iterator(solutions)) {
-        if (!entry.is_regular_file() || entry.path().extension() != ".cpp") continue;
-        const std::string label = "solutions/" + entry.path().lexically_relative(solutions).generic_string();
-        for (Function& f : functionBodies(entry.path(), label))
-            functions.push_back(std::move(f));
-    }
-    return functions;
-}
-
-std::string joined(const std::vector<std::string>& tokens, std::size_t from) {
-    std::string key;
-    for (std::size_t k = from; k < from + kRun; ++k)
-        (key += tokens[k]) += '\n';
-    return key;
-}
-
-// Every run of kRun tokens of every body, and the function it comes from.
-std::unordered_map<std::string, std::string> runsOf(const std::vector<Function>& functions) {
-    std::unordered_map<std::string, std::string> runs;
-    for (const Function& f : functions)
-        for (std::size_t k = 0; k + kRun <= f.body.size(); ++k)
-            runs.emplace(joined(f.body, k), f.where);
-    return runs;
-}
-
-// "file:line holds 25 tokens of <function>", one line for each file and function that meet.
-std::vector<std::string> leaks(const fs::path& tree, const std::unordered_map<std::string, std::string>& runs) {
+// "file holds N windows of solutions/<file>, from: <the first one>", one line for each pair that meet.
+std::vector<std::string> leaks(const fs::path& tree, const SolutionWindows& solution) {
     std::vector<std::string> found;
-    std::map<std::string, fs::path> files; // sorted, for a stable report
-    for (const auto& entry : fs::recursive_directory_iterator(tree))
-        if (entry.is_regular_file())
-            files.emplace(entry.path().lexically_relative(tree).generic_string(), entry.path());
-    for (const auto& [relative, path] : files) {
+    for (const auto& [relative, path] : filesUnder(tree)) {
         const std::string text = readFile(path);
         if (text.find('\0') != std::string::npos) continue; // images and other binary files
-        const std::vector<Token> tokens = tokenize(text);
-        std::vector<std::string> words;
-        for (const Token& t : tokens)
-            words.push_back(t.text);
-        std::set<std::string> reported;
-        for (std::size_t k = 0; k + kRun <= words.size(); ++k) {
-            const auto hit = runs.find(joined(words, k));
-            if (hit == runs.end() || !reported.insert(hit->second).second) continue;
-            found.push_back(relative + ":" + std::to_string(tokens[k].line) + " holds " + std::to_string(kRun) +
-                            " tokens of " + hit->second);
-        }
+        const std::string code = codeOnly(text);
+        std::map<std::string, std::pair<int, std::string>> met; // solution file -> windows, the first
+        for (std::size_t k = 0; k + kWindow <= code.size(); ++k)
+            if (const std::string* from = solution.find(std::string_view(code).substr(k, kWindow))) {
+                auto& [count, first] = met[*from];
+                if (count++ == 0) first = code.substr(k, kWindow);
+            }
+        for (const auto& [from, seen] : met)
+            found.push_back(relative + " holds " + std::to_string(seen.first) + " windows of " + from + ", from: " +
+                            seen.second);
     }
     return found;
 }
@@ -214,60 +143,57 @@ std::string lines(const std::vector<std::string>& items) {
     return text;
 }
 
-const fs::path kSolutions = fs::path(RAYLAB_SOURCE_DIR) / "solutions";
+const fs::path kSource = RAYLAB_SOURCE_DIR;
 const fs::path kTree = RAYLAB_DISTRIBUTED_TREE;
 
 } // namespace
 
 TEST_SUITE("distribute") {
 
-    TEST_CASE("the tokenizer drops comments and white space, and keeps literals and numbers whole") {
-        std::vector<std::string> words;
-        for (const Token& t : tokenize("x->y /* a, b */ += 1.5e-3f; // c\ns = \"a b\"; c = '}';"))
-            words.push_back(t.text);
-        CHECK(words == std::vector<std::string>{"x", "-", ">", "y", "+", "=", "1.5e-3f", ";", "s", "=", "\"a b\"", ";",
-                                                "c", "=", "'}'", ";"});
+    TEST_CASE("code is compared without comments and white space, literals kept") {
+        CHECK(codeOnly("x->y /* a, b */ += 1.5e-3f; // c\ns = \"a // b\"; c = '/';\n") ==
+              "x->y+=1.5e-3f;s=\"a//b\";c='/';");
     }
 
-    TEST_CASE("every function of solutions/ is found, with its body") {
-        const std::vector<Function> functions = solutionFunctions(kSolutions);
-        std::vector<std::string> names;
-        for (const Function& f : functions)
-            names.push_back(f.where.substr(f.where.rfind(' ') + 1));
-        for (const char* name :
-             {"ramp", "fillGradient", "PerspectiveCamera::updateViewport", "PerspectiveCamera::generateRay",
-              "cosineShade", "RayCastIntegrator::Li", "SphereGeometry::intersect", "SphereGeometry::computeNormal",
-              "PerspectiveCamera::PerspectiveCamera", "Renderer::setNbPixelSamples", "Renderer::renderPixel"})
-            CHECK_MESSAGE(std::count(names.begin(), names.end(), name) == 1,
-                          name << " not found once among" << lines(names));
-        for (const Function& f : functions) {
-            CAPTURE(f.where);
-            CHECK(f.body.front() == "{");
-            CHECK(f.body.back() == "}");
+    TEST_CASE("a window shared with the stubs is left out; one the stubs lack is found, however reformatted") {
+        const fs::path work = fs::temp_directory_path() / "raylab-distribute-windows-test";
+        fs::remove_all(work);
+        fs::create_directories(work / "solutions/lab9");
+        fs::create_directories(work / "labs/lab9");
+        fs::create_directories(work / "tree");
+        const std::string given = "void PerspectiveCamera::a_given_signature_long_enough_for_a_window(float sx, float sy) const";
+        const std::string answer = "return normalize(topLeft + sx * width * u - sy * height * v - position) * secretFactor;";
+        std::ofstream(work / "solutions/lab9/answer.cpp") << given << " {\n    " << answer << "\n}\n";
+        std::ofstream(work / "labs/lab9/stub.cpp") << given << " {\n    // TODO\n}\n";
+        std::ofstream(work / "tree/given.cpp") << given << " { }\n";
+        std::ofstream(work / "tree/copied.md") << "```\n/* the answer */ return normalize(topLeft+sx*width*u\n"
+                                                  "   - sy*height*v - position)*secretFactor; // here\n```\n";
+        const SolutionWindows solution(work / "solutions", work / "labs");
+        const std::vector<std::string> found = leaks(work / "tree", solution);
+        REQUIRE_MESSAGE(found.size() == 1, lines(found));
+        CHECK(found[0].rfind("copied.md holds ", 0) == 0);
+        CHECK(found[0].find("solutions/lab9/answer.cpp") != std::string::npos);
+        fs::remove_all(work);
+    }
+
+    TEST_CASE("the check finds every solution file in solutions/ itself") {
+        const SolutionWindows solution(kSource / "solutions", kSource / "labs");
+        CHECK(solution.size() > 1000);
+        const std::vector<std::string> found = leaks(kSource / "solutions", solution);
+        for (const auto& [relative, path] : filesUnder(kSource / "solutions")) {
+            if (path.extension() != ".cpp") continue;
+            CHECK_MESSAGE(std::any_of(found.begin(), found.end(),
+                                      [&](const std::string& f) { return f.rfind(relative + " holds", 0) == 0; }),
+                          relative << " not found in" << lines(found));
         }
     }
 
-    TEST_CASE("the check finds the solutions themselves") {
-        const auto runs = runsOf(solutionFunctions(kSolutions));
-        CHECK(runs.size() > 100);
-        const std::vector<std::string> found = leaks(kSolutions, runs);
-        // Each lab file has a body longer than a run.
-        for (const auto& entry : fs::recursive_directory_iterator(kSolutions)) {
-            if (entry.path().extension() != ".cpp") continue;
-            const std::string file = entry.path().lexically_relative(kSolutions).generic_string() + ":";
-            CHECK_MESSAGE(
-                std::any_of(found.begin(), found.end(), [&](const std::string& f) { return f.rfind(file, 0) == 0; }),
-                file << " not found in" << lines(found));
-        }
-    }
-
-    TEST_CASE("no file of the distributed tree holds a run of 25 tokens of a solution's function body") {
+    TEST_CASE("no file of the distributed tree holds 60 characters of solution code the stubs do not") {
         REQUIRE_MESSAGE(
             fs::exists(kTree / "labs/lab3_sphere/sphere_geometry.cpp"),
             kTree.string() << " holds no students' tree: run this test through ctest, whose fixture writes it");
-        const std::vector<std::string> found = leaks(kTree, runsOf(solutionFunctions(kSolutions)));
-        CHECK_MESSAGE(found.empty(), found.size()
-                                         << " places of the students' tree hold solution code:" << lines(found));
+        const std::vector<std::string> found = leaks(kTree, SolutionWindows(kSource / "solutions", kSource / "labs"));
+        CHECK_MESSAGE(found.empty(), found.size() << " files of the students' tree hold solution code:" << lines(found));
     }
 
 } // TEST_SUITE

@@ -130,6 +130,11 @@ TEST_CASE("distribute writes a tree without the solutions, with the references")
     CHECK_FALSE(fs::exists(out / "solutions"));
     CHECK_FALSE(fs::exists(out / "tests/mistakes"));
     CHECK_FALSE(fs::exists(out / "tests/variants"));
+    // The instructors' code that holds a lab's answer (issue 21), built only where solutions/ is.
+    CHECK_FALSE(fs::exists(out / "tests/study/counting_sphere.cpp"));
+    CHECK_FALSE(fs::exists(out / "framework/study/sphere_formulas.h"));
+    CHECK_FALSE(fs::exists(out / "tests/numerics"));
+    CHECK(fs::exists(out / "framework/study/antialiasing_study.cpp")); // a study students run
     CHECK(fs::exists(out / "labs/lab3_sphere/sphere_geometry.cpp"));
     CHECK(fs::exists(out / "framework/grader/data/references/lab5_antialiased.sd.png"));
     CHECK(fs::exists(out / "labs/lab3_sphere/lab.toml"));

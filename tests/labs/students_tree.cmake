@@ -1,7 +1,8 @@
 # The students' tree stays green: `raylab distribute` writes it; its figures build alone, and
 # `raylab grade` then builds what it needs; its own test suite (the one its README tells students to
 # run) passes with no lab written (each lab skipped), with lab 1 written (lab 1 passes, the others
-# skipped) and with every lab written (all pass, none skipped).
+# skipped) and with every lab written (all pass, none skipped); the instructors' commands it does not
+# build (raylab numerics) say so.
 #
 #   cmake -DRAYLAB=<raylab program> -DSOLUTIONS=<solutions/> -DWORK=<scratch folder> [-DGENERATOR=...]
 #         [-DCCACHE=<ccache>] -P tests/labs/students_tree.cmake
@@ -71,6 +72,12 @@ if(NOT EXISTS ${build}/bin/raylab-agent)
 endif()
 
 suite_passes("")
+
+# The instructors' commands whose code holds a lab's answer are not built here, and say so.
+foreach(command "numerics" "study;intersection")
+  run(output 1 ${build}/bin/raylab ${command})
+  expect("${output}" "is an instructors' command" "raylab ${command}")
+endforeach()
 
 # A student's lab: the solution's files written over the stubs (anew, so they are newer than the build).
 function(write_lab folder)

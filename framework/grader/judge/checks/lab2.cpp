@@ -57,6 +57,13 @@ void expectViewport(Judge& judge, const Camera& c, const std::vector<double>& ou
     judge.expectNear(tr("what.lab2.top_left") + suffix, o.vec3(), c.topLeft(), 1e-5, tr("hint.lab2.top_left"));
 }
 
+// What the GenerateRay probe returns: the origin, then the direction.
+glm::dvec3 rayDirection(const std::vector<double>& out) {
+    Outputs o(out);
+    o.vec3();
+    return o.vec3();
+}
+
 struct Point {
     double sx, sy;
     std::string name;
@@ -66,11 +73,15 @@ struct Point {
 struct SeenViewport {
     double height, width;
     bool right; // as updateViewport's checks want it
+    // A viewport of no size (updateViewport not written) sends every ray through one point: rays
+    // through it say nothing of generateRay's code, so they are then expected through the right one.
+    bool sized;
     SeenViewport(const Camera& c, const std::vector<double>& out) {
         Outputs o(out);
         height = o.number();
         width = o.number();
         right = std::abs(height - c.viewportHeight()) <= 1e-5 && std::abs(width - c.viewportWidth()) <= 1e-5;
+        sized = std::isfinite(height) && std::isfinite(width) && std::abs(height) > 1e-6 && std::abs(width) > 1e-6;
     }
 };
 
@@ -90,6 +101,9 @@ void expectRays(Judge& judge, const Camera& c, const SeenViewport& viewport, con
                          tr("hint.lab2.ray_origin"));
         if (viewport.right)
             judge.expectNear(what, o.vec3(), c.direction(p.sx, p.sy), 1e-5, hint);
+        else if (!viewport.sized)
+            judge.expectNear(what, o.vec3(), c.direction(p.sx, p.sy), 1e-5,
+                             tr("hint.lab2.no_viewport", {{"height", show(viewport.height)}, {"width", show(viewport.width)}}));
         else
             judge.expectNear(tr("what.lab2.through_viewport", {{"what", what}}), o.vec3(),
                              Camera::direction(p.sx, p.sy, viewport.height, viewport.width), 1e-5, inherited);
@@ -160,6 +174,14 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         calls.push_back(unit.ray(sx, sy));
     checks.push_back(
         {2, "generateRay: directions are unit vectors", calls, [screen](const auto& out, Judge& judge) {
+             // A direction that ignores (sx, sy), such as Ray{}'s, is a unit vector without normalizing anything.
+             const glm::dvec3 first = rayDirection(out[0]);
+             bool follows = false;
+             for (std::size_t k = 1; k < screen.size(); ++k)
+                 follows = follows || !withinEach(rayDirection(out[k]), first, 1e-6);
+             if (!judge.expectTrue(tr("what.lab2.directions_follow"), follows, tr("what.lab2.directions_differ"),
+                                   tr("what.lab2.one_direction", {{"direction", show(first)}}), tr("hint.lab2.one_direction")))
+                 return;
              for (std::size_t k = 0; k < screen.size(); ++k) {
                  Outputs o(out[k]);
                  o.vec3();

@@ -41,6 +41,9 @@ struct Case {
     double t = -1.; // < 0: a miss
     double tolerance = 1e-5;
     std::string hint;
+    // Only a hit is asked, wherever: the companion of a miss, so that a miss is earned only by an
+    // intersect that also finds hits (a `return false` misses everything), without judging t twice.
+    bool anyHit = false;
 };
 
 protocol::Call call(const Case& c) {
@@ -70,9 +73,11 @@ bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
     const glm::dvec3 position = o.vec3();
     if (c.t >= 0.) {
         if (!found) {
-            judge.fail(c.what, tr("what.lab3.hit_at", {{"t", show(c.t)}}), tr("what.lab3.no_hit"), c.hint);
+            judge.fail(c.what, c.anyHit ? tr("what.lab3.a_hit") : tr("what.lab3.hit_at", {{"t", show(c.t)}}),
+                       tr("what.lab3.no_hit"), c.hint);
             return false;
         }
+        if (c.anyHit) return true;
         // The hint names the cause the outputs show: a far root where the near one was due is the root
         // choice, whatever the check is about.
         const auto line = roots(c.sphere, c.ray);
@@ -242,10 +247,15 @@ void addIntersectChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) 
         const std::string hint = tr("hint.lab3.miss");
         const Sphere s = drawnSphere(random);
         const Ray r = rayTowards(random, s, random.uniform(1.1, 3.));
+        const Ray atCentre{r.origin, CaseRandom::asFloat(glm::normalize(s.centre - r.origin))};
+        const std::string hitHint = tr("hint.lab3.miss_needs_hit");
         addIntersect(
             checks, "intersect: a ray beside the sphere misses",
             {{tr("what.lab3.beside_fixed"), kSphere, {{2., 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
-             {tr("what.lab3.beside", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf, -1., 0., hint}});
+             {tr("what.lab3.beside", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf, -1., 0., hint},
+             {tr("what.lab3.through_fixed"), kSphere, {{0.5, 0., 0.}, {0., 0., 1.}}, 0., kInf, 0., 0., hitHint, true},
+             {tr("what.lab3.towards_centre", {{"origin", show(atCentre.origin)}, {"sphere", describe(s)}}), s, atCentre, 0.,
+              kInf, 0., 0., hitHint, true}});
     }
     {
         // Integer coordinates: the tangent's discriminant is exactly 0 in float too.
@@ -283,7 +293,7 @@ void addIntersectChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) 
                        *nearestHit(s, r), 1e-5, hint}});
     }
     {
-        const std::string hint = tr("hint.lab3.behind");
+        const std::string hint = tr("hint.lab3.behind"), hitHint = tr("hint.lab3.miss_needs_hit");
         const Sphere s = drawnSphere(random);
         const glm::dvec3 d = CaseRandom::asFloat(random.unitVector());
         const Ray r{CaseRandom::asFloat(s.centre + d * (s.radius * random.uniform(1.5, 5.))), d};
@@ -297,7 +307,11 @@ void addIntersectChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) 
                        0.,
                        hint},
                       {tr("what.lab3.behind", {{"origin", show(r.origin)}, {"direction", show(d)}, {"sphere", describe(s)}}), s, r,
-                       0., kInf, -1., 0., hint}});
+                       0., kInf, -1., 0., hint},
+                      // The same rays turned round see the sphere ahead: a miss is earned only with these hits.
+                      {tr("what.lab3.ahead_fixed"), kSphere, {{0., 0., 5.}, {0., 0., -1.}}, 0., kInf, 0., 0., hitHint, true},
+                      {tr("what.lab3.ahead", {{"origin", show(r.origin)}, {"direction", show(-d)}, {"sphere", describe(s)}}), s,
+                       {r.origin, -d}, 0., kInf, 0., 0., hitHint, true}});
     }
     addIntersect(
         checks, "intersect: tMin and tMax bound the hit",

@@ -139,16 +139,25 @@ void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
                              frameRight ? tr("hint.lab4.viewport_position", {{"hint", hint}}) : hint);
         }));
 
+    // The default camera is what the delegated constructor already built: the same camera turned
+    // round (looking along -z) shows that lookAt built it, and the same handedness.
     const LookAt origin{"", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}};
+    const LookAt turned{"", {0., 0., 0.}, {0., 0., -1.}, {0., 1., 0.}};
     checks.push_back(
-        {4, "lookAt: the default camera as a lookAt camera", {origin.call()}, [](const auto& out, Judge& judge) {
-             const Built b(out[0]);
+        {4, "lookAt: the default camera as a lookAt camera", {origin.call(), turned.call()}, [](const auto& out, Judge& judge) {
+             const Built b(out[0]), t(out[1]);
              judge.expectNear("u", b.u, {-1., 0., 0.}, 1e-6, tr("hint.lab4.default_u"));
              judge.expectNear("v", b.v, {0., 1., 0.}, 1e-6, tr("hint.lab4.default_v"));
+             const std::string turnedPart = tr("what.lab4.turned_camera");
+             judge.expectNear(tr("what.lab4.part", {{"camera", turnedPart}, {"part", "u"}}), t.u, {1., 0., 0.}, 1e-6,
+                              tr("hint.lab4.turned_u"));
+             judge.expectNear(tr("what.lab4.part", {{"camera", turnedPart}, {"part", "v"}}), t.v, {0., 1., 0.}, 1e-6,
+                              tr("hint.lab4.default_v"));
          }});
 
-    // A constructor that refuses everything earns nothing: a valid camera must be built first.
-    const LookAt valid{"", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}, 200, 100};
+    // A constructor that refuses everything earns nothing: a valid camera must be built first, and
+    // built by lookAt (not the default camera, which the delegated constructor already gives).
+    const LookAt valid{"", {1., 2., 3.}, {3., 1., 5.}, {0., 1., 0.}, 200, 100};
     const glm::dvec3 p = CaseRandom::asFloat(random.vec3(-5., 5.));
     // Along an axis, so that the view and up are exactly parallel in float too.
     const glm::dvec3 along{0., double(random.integer(1, 9)) * (random.integer(0, 1) ? 1. : -1.), 0.};
@@ -159,7 +168,9 @@ void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
           refusedCall({1., 2., 3.}, {1., 2., 3.}, {0., 1., 0.}), refusedCall(p, p, {0., 1., 0.}),
           refusedCall(p, p + along, {0., 2., 0.})},
          [p](const auto& out, Judge& judge) {
-             judge.expectNear(tr("what.lab4.valid_w"), Built(out[0]).w, {0., 0., -1.}, 1e-6, tr("hint.lab4.valid_w"));
+             const Built built(out[0]);
+             judge.expectNear(tr("what.lab4.valid_w"), built.w, {-2. / 3., 1. / 3., -2. / 3.}, 1e-6, tr("hint.lab4.valid_w"));
+             judge.expectNear(tr("what.lab4.valid_position"), built.position, {1., 2., 3.}, 1e-6, tr("hint.lab4.position"));
              const std::string names[] = {tr("what.lab4.up_parallel"), tr("what.lab4.position_is_target"),
                                           tr("what.lab4.position_is_target_at", {{"position", show(p)}}),
                                           tr("what.lab4.up_parallel_from", {{"position", show(p)}})};
