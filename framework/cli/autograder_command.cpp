@@ -145,9 +145,11 @@ public:
         std::string pattern = (fs::temp_directory_path() / "raylab-autograder-XXXXXX").string();
 #ifdef _WIN32 // no other user's code runs there (no sandbox either)
         pattern.replace(pattern.size() - 6, 6, std::to_string(std::random_device{}()));
-        if (!fs::create_directory(pattern)) throw std::runtime_error(tr("autograder.no_handover", {{"folder", pattern}}));
+        if (!fs::create_directory(pattern))
+            throw std::runtime_error(tr("autograder.no_handover", {{"folder", pattern}}));
 #else
-        if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error(tr("autograder.no_handover", {{"folder", pattern}}));
+        if (mkdtemp(pattern.data()) == nullptr)
+            throw std::runtime_error(tr("autograder.no_handover", {{"folder", pattern}}));
 #endif
         m_folder = pattern;
     }
@@ -215,7 +217,8 @@ int runGradescope(const Context& context) {
     }
     std::printf("raylab autograder run: %s\n", why.c_str());
     const HandOver scratch;
-    GradeResult nothing = gradeBuildFailure(loadGradeSetup(referencesFolder(), labsFolder(), context.scenes, scratch.folder()), why);
+    GradeResult nothing =
+        gradeBuildFailure(loadGradeSetup(referencesFolder(), labsFolder(), context.scenes, scratch.folder()), why);
     writeGradescopeJson(nothing, results / "results.json");
     addGradescopeFields(results / "results.json", elapsed());
     return 0;

@@ -205,7 +205,8 @@ void requireBubblewrapForClass(const GradeOptions& o) {
     if (o.noSandbox) return;
     if (sandboxKind(SandboxLimits{}) != "process group") return;
     const std::string missing = bubblewrapMissing();
-    throw std::runtime_error(tr("sandbox.class_needs_bubblewrap", {{"why", missing.empty() ? tr("sandbox.none_asked") : missing}}));
+    const std::string why = missing.empty() ? tr("sandbox.none_asked") : missing;
+    throw std::runtime_error(tr("sandbox.class_needs_bubblewrap", {{"why", why}}));
 #else
     (void)o;
 #endif

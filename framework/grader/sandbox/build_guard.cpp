@@ -152,7 +152,8 @@ fs::path resolved(const fs::path& path) {
 
 // Runs the compiler under the limits (as `user`, under the seccomp filter, when given); its exit
 // status, or -1 when it was stopped.
-int compile(const std::vector<std::string>& argv, unsigned wallSeconds, const raylab::grader::detail::UnprivilegedUser* user) {
+int compile(const std::vector<std::string>& argv, unsigned wallSeconds,
+            const raylab::grader::detail::UnprivilegedUser* user) {
     const std::vector<sock_filter>* filter = user ? &raylab::grader::detail::seccompProgram() : nullptr;
     // Made before fork: the child allocates nothing under its address-space limit (an ASan build's
     // allocator would fail there).
@@ -222,7 +223,8 @@ int main(int argc, char** argv) {
         setenv("CCACHE_DIR", "/nonexistent", 1); // its configuration is root's too
     }
     int status = compile(confined ? confined->command() : command->compiler, command->wallSeconds, user);
-    if (!bwrap.empty() && (status == 128 + SIGXCPU || status == 128 + SIGKILL)) status = -1; // bwrap passes a signal on so
+    // bwrap passes a signal on as 128 + its number
+    if (!bwrap.empty() && (status == 128 + SIGXCPU || status == 128 + SIGKILL)) status = -1;
     if (status < 0)
         return refuse("stopped", source, command->object);
     if (status != 0) return status;

@@ -43,7 +43,8 @@ ConfinedCompile::ConfinedCompile(const fs::path& bwrap, const std::vector<std::s
         m_outputs.emplace_back(file, place);
         command[i + 1] = file.string();
     }
-    if (user && !m_private.empty()) m_handedOver = detail::handOver(m_private, *user); // else: it cannot write, and fails
+    // Not handed over: the compiler cannot write there, and the compile fails.
+    if (user && !m_private.empty()) m_handedOver = detail::handOver(m_private, *user);
     if (bwrap.empty()) {
         m_command = command;
         return;
@@ -82,7 +83,8 @@ bool ConfinedCompile::deliver() const {
         fs::rename(file, place, error);
         if (error) return false;
         // Written by the fallback's user: root's again, so that a process it left cannot rewrite it.
-        if (m_handedOver && (chown(place.c_str(), getuid(), getgid()) != 0 || chmod(place.c_str(), 0644) != 0)) return false;
+        if (m_handedOver && (chown(place.c_str(), getuid(), getgid()) != 0 || chmod(place.c_str(), 0644) != 0))
+            return false;
     }
     return true;
 }

@@ -42,7 +42,8 @@ namespace {
 bool addRules(scmp_filter_ctx filter) {
     // No network: a local socket (AF_UNIX) is all a program of the labs could want.
     for (const int call : {SCMP_SYS(socket), SCMP_SYS(socketpair)})
-        if (seccomp_rule_add(filter, SCMP_ACT_ERRNO(EAFNOSUPPORT), call, 1, SCMP_A0(SCMP_CMP_NE, AF_UNIX)) != 0) return false;
+        if (seccomp_rule_add(filter, SCMP_ACT_ERRNO(EAFNOSUPPORT), call, 1, SCMP_A0(SCMP_CMP_NE, AF_UNIX)) != 0)
+            return false;
     // No reading or writing another process (another agent of the same user): ptrace, process_vm_*;
     // io_uring would open sockets without the socket call.
     for (const int call : {SCMP_SYS(ptrace), SCMP_SYS(process_vm_readv), SCMP_SYS(process_vm_writev),

@@ -17,7 +17,8 @@ const std::optional<UnprivilegedUser>& unprivilegedUser() {
         if (geteuid() != 0) return std::nullopt;
         for (const char* name : {"raylab-grader", "nobody"}) {
             const passwd* entry = getpwnam(name);
-            if (entry && entry->pw_uid != 0 && entry->pw_gid != 0) return UnprivilegedUser{entry->pw_uid, entry->pw_gid, name};
+            if (entry && entry->pw_uid != 0 && entry->pw_gid != 0)
+                return UnprivilegedUser{entry->pw_uid, entry->pw_gid, name};
         }
         return std::nullopt;
     }();
