@@ -5,9 +5,10 @@ set -euo pipefail
 
 packages=(cmake g++ make pkg-config libglm-dev libstb-dev zlib1g-dev doctest-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
           libzip-dev libcmark-dev libyaml-cpp-dev python3) # libyaml-cpp-dev: the autograder's tests only; python3: the tests parse junit.xml with its XML parser
-# Optional, raylab works without them (docs/grading.md): the grader's sandbox on Linux, and ccache
+# Optional, raylab works without them (docs/grading.md): the grader's sandbox on Linux (bubblewrap, and
+# libseccomp for its fallback where bubblewrap cannot start), and ccache
 # (the students of a class build the framework's files once).
-optional=(bubblewrap ccache)
+optional=(bubblewrap libseccomp-dev ccache)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   cat <<'TXT'

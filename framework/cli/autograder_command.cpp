@@ -7,6 +7,7 @@
 
 #include "grader/course/autograder.h"
 #include "grader/sandbox/process.h"
+#include "grader/sandbox/sandbox.h"
 #include "grader/course/grade_reports.h"
 #include "src/atomic_file.h"
 #include "src/messages.h"
@@ -22,6 +23,9 @@
 #include <filesystem>
 #include <memory>
 #include <random>
+#include <sstream>
+#include <stdexcept>
+#include <stdlib.h> // mkdtemp
 #include <string>
 
 namespace raylab::cli {
@@ -133,8 +137,55 @@ bool addGradescopeFields(const fs::path& resultsJson, double seconds) {
     return true;
 }
 
+// What `raylab grade` hands over: a folder made by mkdtemp (mode 0700, ours), which the code graded
+// (another user, in the fallback sandbox) can neither read nor write. Removed with what it holds.
+class HandOver {
+public:
+    HandOver() {
+        std::string pattern = (fs::temp_directory_path() / "raylab-autograder-XXXXXX").string();
+#ifdef _WIN32 // no other user's code runs there (no sandbox either)
+        pattern.replace(pattern.size() - 6, 6, std::to_string(std::random_device{}()));
+        if (!fs::create_directory(pattern))
+            throw std::runtime_error(tr("autograder.no_handover", {{"folder", pattern}}));
+#else
+        if (mkdtemp(pattern.data()) == nullptr)
+            throw std::runtime_error(tr("autograder.no_handover", {{"folder", pattern}}));
+#endif
+        m_folder = pattern;
+    }
+    ~HandOver() {
+        std::error_code ignored;
+        fs::remove_all(m_folder, ignored);
+    }
+    HandOver(const HandOver&) = delete;
+    HandOver& operator=(const HandOver&) = delete;
+    const fs::path& folder() const { return m_folder; }
+
+private:
+    fs::path m_folder;
+};
+
+std::string readWholeFile(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) throw std::runtime_error(tr("autograder.no_results"));
+    return text.str();
+}
+
+// raylab grade's results count only when it exited on its own: 0 (all passed), 1 (not all), 3
+// (nothing written yet). Killed, crashed or stopped with an error: whatever is on disk is no result.
+std::string whyNoResult(const ProcessResult& ran) {
+    if (!ran.started) return tr("autograder.grade_not_started", {{"why", ran.error}});
+    if (ran.signal != 0) return tr("autograder.grade_killed", {{"signal", std::to_string(ran.signal)}});
+    if (ran.exitCode != 0 && ran.exitCode != 1 && ran.exitCode != 3)
+        return tr("autograder.grade_stopped", {{"status", std::to_string(ran.exitCode)}});
+    return {};
+}
+
 // Inside Gradescope's container: the submission's labs into the tree, `raylab grade --labs` on them
-// (its own process: whatever happens to it, results.json is written), results.json into results/.
+// (its own process), its results.json handed over in a folder of ours, then into results/ whole.
+// Anything else (killed, crashed, a results.json that appeared elsewhere) is a zero with the reason.
 int runGradescope(const Context& context) {
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -143,25 +194,31 @@ int runGradescope(const Context& context) {
     fs::create_directories(results);
     std::error_code error;
     fs::remove(results / "results.json", error);
+    if (const std::string kind = sandboxKind(SandboxLimits{}); kind == "process group")
+        std::printf("%s\n", tr("autograder.not_confined").c_str());
     std::string why;
     try {
+        const HandOver handOver;
+        const fs::path handed = handOver.folder() / "results.json";
         const LabCatalog catalog = loadLabCatalog(labsFolder(), context.scenes);
         copySubmittedLabs(root / "submission", catalog, submitted);
         std::fflush(stdout); // what we printed comes before what it prints
-        const int status = runProcess({(fs::path(build::kBinaryDir) / "raylab").string(), "grade", "--labs",
-                                       submitted.string(), "--build-dir", (tree / "build").string(), "--report",
-                                       results.string()})
-                               .exitCode;
-        if (fs::exists(results / "results.json", error) && addGradescopeFields(results / "results.json", elapsed())) return 0;
-        why = "the grader stopped (exit status " + std::to_string(status) + ") before it wrote the results";
+        const ProcessResult ran = runProcess({(fs::path(build::kBinaryDir) / "raylab").string(), "grade", "--labs",
+                                              submitted.string(), "--build-dir", (tree / "build").string(), "--report",
+                                              handOver.folder().string()});
+        why = whyNoResult(ran);
+        if (why.empty() && fs::exists(handed, error) && addGradescopeFields(handed, elapsed())) {
+            writeFileAtomically(results / "results.json", readWholeFile(handed));
+            return 0;
+        }
+        if (why.empty()) why = tr("autograder.no_results");
     } catch (const std::exception& e) {
         why = e.what();
     }
     std::printf("raylab autograder run: %s\n", why.c_str());
-    std::random_device random;
-    const fs::path scratch = fs::temp_directory_path() / ("raylab-autograder-" + std::to_string(random()));
-    GradeResult nothing = gradeBuildFailure(loadGradeSetup(referencesFolder(), labsFolder(), context.scenes, scratch), why);
-    fs::remove_all(scratch, error);
+    const HandOver scratch;
+    GradeResult nothing =
+        gradeBuildFailure(loadGradeSetup(referencesFolder(), labsFolder(), context.scenes, scratch.folder()), why);
     writeGradescopeJson(nothing, results / "results.json");
     addGradescopeFields(results / "results.json", elapsed());
     return 0;

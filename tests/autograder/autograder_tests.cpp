@@ -117,12 +117,14 @@ double catalogTotal() {
     return total;
 }
 
-// Hands `folder` in as the submission (its content at the submission's top) and runs run_autograder.
-nlohmann::json gradeOnGradescope(const fs::path& folder) {
+// Hands `folder` in as the submission (its content at the submission's top) and runs run_autograder,
+// its environment changed by `environment` (shell assignments: `PATH=...`).
+nlohmann::json gradeOnGradescope(const fs::path& folder, const std::string& environment = "") {
     fs::remove_all(autograder() / "submission");
     fs::copy(folder, autograder() / "submission", fs::copy_options::recursive);
     const fs::path log = kRoot / "run_autograder.log";
-    CHECK_MESSAGE(run("cd \"" + autograder().string() + "\" && \"" + (autograder() / "run_autograder").string() + "\"",
+    CHECK_MESSAGE(run("cd \"" + autograder().string() + "\" && " + environment + " \"" +
+                          (autograder() / "run_autograder").string() + "\"",
                       log) == 0,
                   readFile(log));
     return validResults(autograder() / "results" / "results.json");
@@ -205,6 +207,12 @@ TEST_CASE("the Gradescope zip unpacks into source/ and its setup.sh builds the t
     CHECK_FALSE(fs::exists(tree() / "build" / "tests"));
     CHECK(filesNamed(tree() / "solutions", ".cpp").empty());
     CHECK_FALSE(filesNamed(tree() / "solutions", ".o").empty());
+    // Without bubblewrap the code graded reads what anyone may read: not the reference objects and pictures.
+    const fs::path references = tree() / "framework" / "grader" / "data" / "references";
+    for (const fs::path& secret : {tree() / "solutions", references})
+        CHECK((fs::status(secret).permissions() & fs::perms::others_all) == fs::perms::none);
+    for (const std::string& object : filesNamed(tree() / "solutions", ".o"))
+        CHECK((fs::status(tree() / "solutions" / object).permissions() & fs::perms::others_all) == fs::perms::none);
 }
 
 } // TEST_SUITE
@@ -302,6 +310,47 @@ TEST_CASE("run_autograder: a submission that crashes is graded, the crash costin
     CHECK(j["score"].get<double>() > 0.);
     CHECK(j["score"].get<double>() < catalogTotal());
     CHECK(pointsByItem(j) == pointsOfAgent("raylab-bad-crash"));
+}
+
+TEST_CASE("run_autograder: where bubblewrap cannot start, a submission that forges results.json and kills the "
+          "graders above it earns the points of the labs it did not touch, no more") {
+    // A bwrap that fails as in Docker's default seccomp profile: the grader (root) falls back on an
+    // unprivileged user, which can neither write the results nor signal the grader.
+    const fs::path failing = kRoot / "failing-bwrap";
+    fs::create_directories(failing);
+    std::ofstream(failing / "bwrap") << "#!/bin/sh\nexit 1\n";
+    fs::permissions(failing / "bwrap", fs::perms(0755));
+    const fs::path submission = kRoot / "hand-in-forges-results";
+    fs::remove_all(submission);
+    patchedSolutions("bad", "forges_results", submission); // lab 1 forges and kills; labs 2 to 5 are right
+    const nlohmann::json j = gradeOnGradescope(submission, "PATH=\"" + failing.string() + ":$PATH\"");
+    CHECK(j["output"].get<std::string>().find("forged") == std::string::npos);
+    double lab1 = 0.;
+    for (const nlohmann::json& t : j["tests"]) {
+        const bool ofLab1 = t["name"].get<std::string>().rfind("lab1: ", 0) == 0;
+        if (ofLab1) lab1 += t["max_score"].get<double>();
+        CHECK_MESSAGE(t["status"] == (ofLab1 ? "failed" : "passed"), t.dump());
+    }
+    REQUIRE(lab1 > 0.);
+    CHECK(j["score"].get<double>() == doctest::Approx(catalogTotal() - lab1));
+    CHECK(readFile(kRoot / "run_autograder.log").find("unprivileged user") != std::string::npos); // the fallback said so
+}
+
+TEST_CASE("run_autograder: a grader killed after the code graded forged results.json gives zero for every item, "
+          "with the reason") {
+    // Not confined (RAYLAB_SANDBOX=none: the process group, as root), the code writes a results.json in
+    // results/ and in every folder it guesses a grader hands over in, then SIGKILLs raylab grade: what
+    // a killed grade left counts for nothing.
+    const fs::path submission = kRoot / "hand-in-kills-grade";
+    fs::remove_all(submission);
+    patchedSolutions("bad", "forges_results_kills_grade", submission);
+    const nlohmann::json j = gradeOnGradescope(submission, "RAYLAB_SANDBOX=none");
+    CHECK(j["score"].get<double>() == 0.);
+    const std::string output = j["output"].get<std::string>();
+    CHECK(output.find("forged") == std::string::npos);
+    CHECK_MESSAGE(output.find("the grader was killed (signal 9) before it handed over its results") != std::string::npos, output);
+    REQUIRE(j["tests"].size() > 20);
+    for (const nlohmann::json& t : j["tests"]) CHECK_MESSAGE(t["status"] == "failed", t.dump());
 }
 
 TEST_CASE("run_autograder: a hand-in without lab files gets zero, saying what to upload, never \"does not build\"") {

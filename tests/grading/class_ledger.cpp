@@ -19,6 +19,7 @@
 #include <thread>
 #include <utility>
 #include <vector>
+#include <unistd.h>
 #if defined(__unix__) || defined(__APPLE__)
 #include "program_process.h"
 #define RAYLAB_LEDGER_TESTS 1
@@ -416,7 +417,8 @@ TEST_CASE("hostile folder names each get their own row with their printable name
 }
 
 #ifdef __linux__
-TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap unless --no-sandbox; raylab grade warns once") {
+TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap (or, as root, its fallback) unless "
+          "--no-sandbox; raylab grade warns once") {
     const fs::path root = freshFolder("raylab-ledger-no-bubblewrap");
     const fs::path classDir = makeClass(root, {"ann"});
     // Two PATHs the grader looks bwrap up in: without it, and with one that cannot make its namespaces.
@@ -424,8 +426,13 @@ TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap un
     fs::create_directories(withoutBwrap);
     fs::create_directories(brokenBwrap);
     fs::create_symlink("/bin/false", brokenBwrap / "bwrap");
-    const auto runWith = [&](const fs::path& path, const std::vector<std::string>& args) {
-        const ProgramProcess process = startProgram(binDir() / "raylab", args, root / "output.txt", 0, {"PATH=" + path.string()});
+    // As root the grader falls back on an unprivileged user: RAYLAB_SANDBOX=none takes that away, as on
+    // a machine where the grader is not root (`fallback` true: left to it).
+    const bool asRoot = geteuid() == 0;
+    const auto runWith = [&](const fs::path& path, const std::vector<std::string>& args, bool fallback = false) {
+        std::vector<std::string> environment{"PATH=" + path.string()};
+        if (asRoot && !fallback) environment.push_back("RAYLAB_SANDBOX=none");
+        const ProgramProcess process = startProgram(binDir() / "raylab", args, root / "output.txt", 0, environment);
         const int status = process.finish();
         return std::pair(status, process.text());
     };
@@ -465,13 +472,28 @@ TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap un
     REQUIRE(rows.size() == 2);
     CHECK(rows[1][0] == "ann");
 
-    // A student grading their own code needs no bubblewrap: one line says it is missing, and why.
-    const auto [ownStatus, own] = runWith(withoutBwrap, {"grade", "--agent", (binDir() / "raylab-agent-reference").string(),
-                                                         "--lab", "1", "--threads", "2", "--report", (root / "report").string()});
+    // A student grading their own code needs no bubblewrap: one line says it is missing, and why (and,
+    // as root, that the fallback runs the code as an unprivileged user).
+    const auto [ownStatus, own] = runWith(withoutBwrap,
+                                          {"grade", "--agent", (binDir() / "raylab-agent-reference").string(), "--lab", "1",
+                                           "--threads", "2", "--report", (root / "report").string()},
+                                          true);
     CHECK_MESSAGE(ownStatus == 0, own);
-    CHECK_MESSAGE(count(own, "grading WITHOUT bubblewrap (bubblewrap is not installed (no bwrap in PATH; on Debian or "
-                             "Ubuntu: apt install bubblewrap))") == 1,
+    const std::string why = "(bubblewrap is not installed (no bwrap in PATH; on Debian or Ubuntu: apt install bubblewrap))";
+    CHECK_MESSAGE(count(own, asRoot ? "grading without bubblewrap " + why + ": the code graded runs as the unprivileged user"
+                                    : "grading WITHOUT bubblewrap " + why) == 1,
                   own);
+
+    if (!asRoot) return;
+    // As root, grade-class accepts the fallback: the class is graded, each agent as an unprivileged user.
+    const auto [fallbackStatus, fallback] = runWith(brokenBwrap, classArgs(classDir, root / "out-fallback"), true);
+    CHECK_MESSAGE(fallbackStatus == 0, fallback);
+    CHECK_MESSAGE(count(fallback, "cannot create its namespaces here") == 1, fallback);
+    CHECK_MESSAGE(count(fallback, "the code graded runs as the unprivileged user") == 1, fallback);
+    const auto fallbackRows = readCsv(readFile(root / "out-fallback" / "grades.csv"));
+    REQUIRE(fallbackRows.size() == 2);
+    // Lab 1 earns every point: the agent reaches its scratch inside the run's (mkdtemp, root's 0700).
+    CHECK_MESSAGE(fallbackRows[1][1] == fallbackRows[1][7], fallback);
 }
 #endif
 

@@ -19,6 +19,7 @@
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
 namespace {
@@ -127,6 +128,24 @@ int main(int argc, char** argv) {
         std::error_code ignored;
         std::filesystem::remove_all(std::filesystem::current_path().parent_path(), ignored);
         report(R"({"kind":"done"})");
+    } else if (mode == "privileges") { // arg: a file to read; argv[3]: a folder to write in
+        const std::string folder = argc > 3 ? argv[3] : ".";
+        const bool root = setuid(0) == 0;
+        const int file = open(arg.c_str(), O_RDONLY);
+        const int written = open((folder + "/intruder.txt").c_str(), O_WRONLY | O_CREAT, 0644);
+        const int inet = socket(AF_INET, SOCK_STREAM, 0);
+        const int local = socket(AF_UNIX, SOCK_STREAM, 0);
+#ifdef __linux__
+        char from[8] = "memory", to[8] = {};
+        const iovec there{from, sizeof from}, here{to, sizeof to};
+        const bool peeked = process_vm_readv(getpid(), &here, 1, &there, 1, 0) == ssize_t(sizeof to); // its own, even
+#else
+        const bool peeked = false;
+#endif
+        report("{\"kind\":\"privileges\",\"uid\":" + std::to_string(getuid()) + ",\"euid\":" + std::to_string(geteuid()) +
+               ",\"root\":" + (root ? "true" : "false") + ",\"read\":" + (file >= 0 ? "true" : "false") +
+               ",\"wrote\":" + (written >= 0 ? "true" : "false") + ",\"inet\":" + (inet >= 0 ? "true" : "false") +
+               ",\"unix\":" + (local >= 0 ? "true" : "false") + ",\"peeked\":" + (peeked ? "true" : "false") + "}");
     } else if (mode == "environment") {
         report(std::string(R"({"kind":"environment","secret":")") + (std::getenv("RAYLAB_TEST_SECRET") ? "seen" : "") +
                "\"}");

@@ -10,6 +10,8 @@
 
 #include <chrono>
 #include <fstream>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <iterator>
 #include <vector>
 
@@ -41,8 +43,12 @@ struct Folders {
     // Compiles submission/<file> through the guard, which allows the submission folder only (and no
     // system header: -nostdinc); `confined`: under bubblewrap, else with RAYLAB_SANDBOX=none.
     ProgramRun compile(const std::string& file, const std::string& body, bool confined = false) const {
+        return compileIn(confined ? "bubblewrap" : "none", file, body);
+    }
+    // The same with RAYLAB_SANDBOX=`sandbox`.
+    ProgramRun compileIn(const std::string& sandbox, const std::string& file, const std::string& body) const {
         std::ofstream(submission / file) << body;
-        std::vector<std::string> argv{"/usr/bin/env", confined ? "RAYLAB_SANDBOX=bubblewrap" : "RAYLAB_SANDBOX=none",
+        std::vector<std::string> argv{"/usr/bin/env", "RAYLAB_SANDBOX=" + sandbox,
                                       (fs::path(RAYLAB_GRADING_BIN) / "raylab-build-guard").string(),
                                       "--allow", submission.string(), "--", RAYLAB_CXX_COMPILER, "-nostdinc", "-MD", "-MF",
                                       (root / "file.d").string(), "-c", (submission / file).string(), "-o",
@@ -117,6 +123,32 @@ TEST_CASE("the assembler's .incbin of a file outside: under bubblewrap it does n
             CHECK(f.object().find(kSecret) != std::string::npos);
         }
     }
+}
+
+TEST_CASE("the fallback (root, RAYLAB_SANDBOX=fallback): the compiler runs as an unprivileged user, its objects are root's") {
+    if (geteuid() != 0) {
+        MESSAGE("SKIPPED: only root can run the fallback; not root here");
+        return;
+    }
+    const Folders f;
+    const ProgramRun honest = f.compileIn("fallback", "honest.cpp", "#include \"own.h\"\nint f() { return own(); }\n");
+    CHECK_MESSAGE(honest.status == 0, honest.output);
+    struct stat object {};
+    REQUIRE(stat((f.root / "file.o").c_str(), &object) == 0);
+    CHECK(object.st_uid == 0); // given back: nothing the user left running can rewrite it
+    CHECK(std::distance(fs::directory_iterator(f.root), fs::directory_iterator()) == 5); // no private folder left
+    // A file in a folder only root can read: the compiler cannot .incbin it (as root it could).
+    fs::remove(f.root / "file.o");
+    std::ofstream(f.secret / "answer.txt") << kSecret;
+    fs::permissions(f.secret, fs::perms::owner_all);
+    const std::string incbin = "asm(\".section .rodata\\n.incbin \\\"" + (f.secret / "answer.txt").string() + "\\\"\\n.text\");\n";
+    const ProgramRun confined = f.compileIn("fallback", "incbin.cpp", incbin);
+    CHECK(confined.status != 0);
+    CHECK(confined.output.find(kSecret) == std::string::npos);
+    CHECK_FALSE(f.objectExists());
+    const ProgramRun open = f.compileIn("none", "incbin.cpp", incbin);
+    CHECK(open.status == 0);
+    CHECK(f.object().find(kSecret) != std::string::npos);
 }
 
 TEST_CASE("a compile error stays the compiler's: its status, no refusal line") {

@@ -153,7 +153,10 @@ std::string gradescopeSetupScript() {
 # deletes their sources, then builds what grading needs (raylab and the grading agents, the stubs
 # standing in for a submission), without link-time optimisation, so that each submission only
 # recompiles its lab files and each of its labs is linked with the others' reference.
-# RAYLAB_AUTOGRADER_ROOT moves /autograder; RAYLAB_SKIP_PACKAGES=1 skips the installation.
+# Where bubblewrap cannot start (Docker's default seccomp profile forbids its namespaces), the grader,
+# root, runs the students' code as the user raylab-grader, created here, under a seccomp filter
+# (libseccomp); the references and the reference objects are made unreadable to it.
+# RAYLAB_AUTOGRADER_ROOT moves /autograder; RAYLAB_SKIP_PACKAGES=1 skips the installation and the user.
 set -euo pipefail
 root="${RAYLAB_AUTOGRADER_ROOT:-/autograder}"
 tree="$root/source/raylab"
@@ -167,6 +170,11 @@ if [ "${RAYLAB_SKIP_PACKAGES:-0}" != "1" ]; then
   if ((${#missing[@]})); then apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null; fi
   # The grader's sandbox; without it (or where it cannot start) the grader confines the agents itself.
   apt-get install -y -qq --no-install-recommends bubblewrap >/dev/null || echo "setup.sh: bubblewrap could not be installed"
+  # Its fallback: a seccomp filter (libseccomp, found by pkg-config) and a user with no home and no shell.
+  apt-get install -y -qq --no-install-recommends pkg-config libseccomp-dev >/dev/null ||
+    echo "setup.sh: libseccomp could not be installed: the fallback sandbox will have no seccomp filter"
+  id raylab-grader >/dev/null 2>&1 || useradd --system --no-create-home --shell /usr/sbin/nologin raylab-grader ||
+    echo "setup.sh: no user raylab-grader: the fallback sandbox will run the code as nobody"
 fi
 # A C++20 compiler: $CXX, else c++, else the newest g++ (11 or later) or clang++ (14 or later).
 if [ -z "${CXX:-}" ] && ! command -v c++ >/dev/null; then
@@ -184,6 +192,9 @@ cmake --build "$tree/build" -j "$jobs" --target raylab-reference-objects
 find "$tree/solutions" -name '*.cpp' -delete
 cmake -S "$tree" -B "$tree/build" "${options[@]}"
 cmake --build "$tree/build" -j "$jobs"
+# Without bubblewrap the students' code sees every world-readable file: not these (root still reads them).
+chmod -R go-rwx "$tree/solutions" "$tree/framework/grader/data/references"
+find "$tree/build" -type d -name 'raylab_lab*_solutions.dir' -exec chmod -R go-rwx {} +
 )script";
 }
 

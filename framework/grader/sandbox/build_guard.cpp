@@ -5,8 +5,10 @@
 //    assembler's `.incbin` of a solution (or a classmate's file) would grade the reference as the
 //    student's work, or throw its bytes into the report: on Linux with bubblewrap the compiler runs
 //    confined (confined_compile.h), seeing only the allowed folders (the submission, the stubs, the
-//    include folders of the command line) and the system; RAYLAB_SANDBOX=none in the environment
-//    turns that off. Then, a second wall, every file the compiler read must lie in an allowed folder
+//    include folders of the command line) and the system; where bubblewrap cannot start and we are
+//    root, it runs as an unprivileged user (unprivileged.h: it reads world-readable files only, and
+//    writes only its private folder); RAYLAB_SANDBOX=none|fallback in the environment chooses (see
+//    sandboxMode). Then, a second wall, every file the compiler read must lie in an allowed folder
 //    or the compiler's own, checked on the dependency file it writes, after symlinks (`.incbin` is
 //    not in it: only the sandbox stops that);
 //  - `#include "/dev/zero"` or a template that never ends would stall a class run: the compiler runs
@@ -19,6 +21,7 @@
 #include "grader/sandbox/confined_compile.h"
 #include "grader/sandbox/sandbox_internal.h"
 #include "grader/sandbox/scratch_file.h"
+#include "grader/sandbox/unprivileged.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -147,8 +150,11 @@ fs::path resolved(const fs::path& path) {
     return error ? fs::absolute(path).lexically_normal() : real;
 }
 
-// Runs the compiler under the limits; its exit status, or -1 when it was stopped.
-int compile(const std::vector<std::string>& argv, unsigned wallSeconds) {
+// Runs the compiler under the limits (as `user`, under the seccomp filter, when given); its exit
+// status, or -1 when it was stopped.
+int compile(const std::vector<std::string>& argv, unsigned wallSeconds,
+            const raylab::grader::detail::UnprivilegedUser* user) {
+    const std::vector<sock_filter>* filter = user ? &raylab::grader::detail::seccompProgram() : nullptr;
     // Made before fork: the child allocates nothing under its address-space limit (an ASan build's
     // allocator would fail there).
     std::vector<char*> args;
@@ -158,6 +164,10 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds) {
     if (pid < 0) return 127;
     if (pid == 0) {
         setpgid(0, 0);
+        if (user && !raylab::grader::detail::dropPrivileges(*user)) {
+            std::fprintf(stderr, "error: raylab-build-guard cannot become the user %s\n", user->name.c_str());
+            _exit(126);
+        }
 #ifdef __linux__
         prctl(PR_SET_PDEATHSIG, SIGKILL); // the driver dies with us (its compiler keeps the CPU limit)
 #endif
@@ -165,6 +175,7 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds) {
         setrlimit(RLIMIT_CPU, &cpu);
         setrlimit(RLIMIT_AS, &memory);
         setrlimit(RLIMIT_FSIZE, &file);
+        if (filter && !raylab::grader::detail::installSeccomp(*filter)) _exit(126);
         execvp(args[0], args.data());
         std::fprintf(stderr, "error: raylab-build-guard cannot run %s: %s\n", args[0], std::strerror(errno));
         _exit(127);
@@ -180,13 +191,6 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds) {
     if (g_timedOut) return -1;
     if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL)) return -1;
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
-// The compiler runs under bubblewrap whenever it can make its namespaces here, unless the grader says
-// RAYLAB_SANDBOX=none (`--no-sandbox`); the dependency file is checked in both cases, a second wall.
-bool confinedWithBubblewrap() {
-    const char* mode = std::getenv("RAYLAB_SANDBOX");
-    return !(mode && std::strcmp(mode, "none") == 0);
 }
 
 } // namespace
@@ -205,11 +209,22 @@ int main(int argc, char** argv) {
     std::string source = command->object.empty() ? command->compiler.front() : command->object;
     for (std::size_t i = 0; i + 1 < command->compiler.size(); ++i)
         if (command->compiler[i] == "-c") source = command->compiler[i + 1];
-    const fs::path bwrap = confinedWithBubblewrap() ? raylab::grader::detail::bubblewrap() : fs::path();
+    // Confined as the grader's agents are (RAYLAB_SANDBOX=none: not at all, `--no-sandbox`); the dependency
+    // file is checked in every case, a second wall.
+    using raylab::grader::detail::SandboxMode;
+    const SandboxMode mode = raylab::grader::detail::sandboxMode();
+    const fs::path bwrap = mode == SandboxMode::bubblewrap ? raylab::grader::detail::bubblewrap() : fs::path();
+    const raylab::grader::detail::UnprivilegedUser* user =
+        mode == SandboxMode::unprivileged ? &*raylab::grader::detail::unprivilegedUser() : nullptr;
     std::optional<raylab::grader::ConfinedCompile> confined;
-    if (!bwrap.empty()) confined.emplace(bwrap, command->compiler, command->allowed);
-    int status = compile(confined ? confined->command() : command->compiler, command->wallSeconds);
-    if (confined && (status == 128 + SIGXCPU || status == 128 + SIGKILL)) status = -1; // bwrap passes a signal on so
+    if (!bwrap.empty() || user) confined.emplace(bwrap, command->compiler, command->allowed, user);
+    if (user) { // ccache, when it is the launcher, without its cache (root's, other builds' objects)
+        setenv("CCACHE_DISABLE", "1", 1);
+        setenv("CCACHE_DIR", "/nonexistent", 1); // its configuration is root's too
+    }
+    int status = compile(confined ? confined->command() : command->compiler, command->wallSeconds, user);
+    // bwrap passes a signal on as 128 + its number
+    if (!bwrap.empty() && (status == 128 + SIGXCPU || status == 128 + SIGKILL)) status = -1;
     if (status < 0)
         return refuse("stopped", source, command->object);
     if (status != 0) return status;

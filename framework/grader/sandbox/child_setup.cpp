@@ -1,4 +1,4 @@
-// The child's side of a run, between fork and exec: its session, channels, limits and environment.
+// The child's side of a run, between fork and exec: its session, user, channels, limits, filter and environment.
 #include "grader/sandbox/sandbox_internal.h"
 
 #ifdef RAYLAB_POSIX_SANDBOX
@@ -25,10 +25,14 @@ void limit(int resource, unsigned long long value) {
 
 [[noreturn]] void execChild(const ChildPlan& plan) {
     setsid(); // its own session and process group: the parent stops them all at once
-#ifdef __linux__
-    prctl(PR_SET_PDEATHSIG, SIGKILL); // and it dies with the grader's thread that started it
-#endif
+    // Entered first: the fallback's user may not cross the grader's folders above it (a 0700 run scratch).
     if (chdir(plan.scratch.c_str()) != 0) _exit(126);
+    // The fallback: never a student's program as root (126: it did not start).
+    if (plan.user && !dropPrivileges(*plan.user)) _exit(126);
+#ifdef __linux__
+    prctl(PR_SET_PDEATHSIG, SIGKILL); // and it dies with the grader's thread that started it (after
+                                      // the change of user, which clears it)
+#endif
     const int out = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     const int err = open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     const int null = open("/dev/null", O_RDONLY | O_CLOEXEC);
@@ -48,6 +52,7 @@ void limit(int resource, unsigned long long value) {
 #endif
     limit(RLIMIT_FSIZE, plan.limits.fileBytes);
     limit(RLIMIT_CORE, 0);
+    if (plan.seccomp && !installSeccomp(*plan.seccomp)) _exit(126);
     execve(plan.cargv[0], plan.cargv.data(), plan.cenv.data());
     _exit(127);
 }

@@ -1,8 +1,10 @@
 #include "grader/sandbox/confined_compile.h"
 
 #include "grader/sandbox/sandbox_internal.h"
+#include "grader/sandbox/unprivileged.h"
 
 #include <cstdlib>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace raylab::grader {
@@ -29,7 +31,7 @@ fs::path makePrivateFolder(const fs::path& object) {
 } // namespace
 
 ConfinedCompile::ConfinedCompile(const fs::path& bwrap, const std::vector<std::string>& compiler,
-                                 const std::vector<fs::path>& readable) {
+                                 const std::vector<fs::path>& readable, const detail::UnprivilegedUser* user) {
     std::vector<std::string> command = compiler;
     std::vector<fs::path> bound;
     for (std::size_t i = 0; i + 1 < command.size(); ++i) {
@@ -40,6 +42,12 @@ ConfinedCompile::ConfinedCompile(const fs::path& bwrap, const std::vector<std::s
         const fs::path file = m_private / (std::to_string(m_outputs.size()) + "-" + place.filename().string());
         m_outputs.emplace_back(file, place);
         command[i + 1] = file.string();
+    }
+    // Not handed over: the compiler cannot write there, and the compile fails.
+    if (user && !m_private.empty()) m_handedOver = detail::handOver(m_private, *user);
+    if (bwrap.empty()) {
+        m_command = command;
+        return;
     }
     m_command = detail::bubblewrapSystem(bwrap);
     const auto bind = [&](const char* how, const fs::path& path) {
@@ -74,6 +82,9 @@ bool ConfinedCompile::deliver() const {
         std::error_code error;
         fs::rename(file, place, error);
         if (error) return false;
+        // Written by the fallback's user: root's again, so that a process it left cannot rewrite it.
+        if (m_handedOver && (chown(place.c_str(), getuid(), getgid()) != 0 || chmod(place.c_str(), 0644) != 0))
+            return false;
     }
     return true;
 }

@@ -13,17 +13,25 @@
 
 namespace raylab::grader {
 
+namespace detail {
+struct UnprivilegedUser;
+}
+
+// Without bubblewrap, as root (the fallback, unprivileged.h), the compiler runs as an unprivileged
+// user instead: it sees every world-readable file, and writes only its private folder (handed to that
+// user), from where the guard moves the outputs, back in root's hands.
 class ConfinedCompile {
 public:
     // `compiler`: the command (a launcher, the compiler and its arguments); `readable`: the folders it
-    // may read. Makes the private folder beside the object file.
+    // may read; `bwrap` empty: no namespaces, the command as it is (the fallback, `user` given).
+    // Makes the private folder beside the object file.
     ConfinedCompile(const std::filesystem::path& bwrap, const std::vector<std::string>& compiler,
-                    const std::vector<std::filesystem::path>& readable);
+                    const std::vector<std::filesystem::path>& readable, const detail::UnprivilegedUser* user = nullptr);
     ~ConfinedCompile(); // removes the private folder
     ConfinedCompile(const ConfinedCompile&) = delete;
     ConfinedCompile& operator=(const ConfinedCompile&) = delete;
 
-    // bwrap ... -- the command, its -o and -MF pointing into the private folder.
+    // [bwrap ... --] the command, its -o and -MF pointing into the private folder.
     const std::vector<std::string>& command() const { return m_command; }
 
     // After a compile that succeeded: each output moved to its place. False when one is missing.
@@ -32,6 +40,7 @@ public:
 private:
     std::vector<std::string> m_command;
     std::filesystem::path m_private; // empty when the command names no output
+    bool m_handedOver = false;       // the private folder belongs to the fallback's user
     std::vector<std::pair<std::filesystem::path, std::filesystem::path>> m_outputs; // private file, its place
 };
 

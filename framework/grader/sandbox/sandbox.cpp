@@ -88,15 +88,30 @@ Clock::duration seconds(double s) {
 // The child ends its channel when it exits; one that closes it and lives on gets this long.
 constexpr double kGraceAfterChannelClosed = 2.;
 
+// Why bubblewrap does not confine the agents, in the reader's language.
+std::string whyNotBubblewrap(const SandboxLimits& limits) {
+    if (!limits.bubblewrap) return tr("sandbox.bubblewrap_turned_off");
+    const char* asked = std::getenv("RAYLAB_SANDBOX");
+    if (asked && std::string_view(asked) == "none") return tr("sandbox.none_asked");
+    if (asked && std::string_view(asked) == "fallback") return tr("sandbox.fallback_asked");
+    return bubblewrapMissing();
+}
+
 // Said once a run: grading without bubblewrap is a choice the instructor must know about.
-void sayOnceWithoutBubblewrap(bool turnedOff) {
+void sayOnceWithoutBubblewrap(const SandboxLimits& limits, const UnprivilegedUser* user) {
     static std::once_flag once;
-    std::call_once(once, [turnedOff] {
+    std::call_once(once, [&] {
 #ifdef __linux__
-        const std::string why = turnedOff ? tr("sandbox.bubblewrap_turned_off") : bubblewrapMissing();
-        std::fprintf(stderr, "%s\n", tr("sandbox.without_bubblewrap", {{"why", why}}).c_str());
+        const std::string why = whyNotBubblewrap(limits);
+        const std::string said =
+            user ? tr("sandbox.fallback", {{"why", why},
+                                          {"user", user->name},
+                                          {"filter", tr(haveSeccomp() ? "sandbox.with_seccomp" : "sandbox.no_seccomp")}})
+                 : tr("sandbox.without_bubblewrap", {{"why", why}});
+        std::fprintf(stderr, "%s\n", said.c_str());
 #else
-        (void)turnedOff;
+        (void)limits;
+        (void)user;
         std::fprintf(stderr, "%s\n", tr("sandbox.without_bubblewrap_here").c_str());
 #endif
     });
@@ -137,8 +152,11 @@ bool openPipe(int fds[2]) {
 void setNonBlocking(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK); }
 
 // Starts the child (bwrap or the agent itself) with the channels' child ends; returns its pid.
-pid_t startChild(const AgentCommand& c, const SandboxLimits& limits, const fs::path& bwrap, int reportFd, int requestFd) {
+pid_t startChild(const AgentCommand& c, const SandboxLimits& limits, const fs::path& bwrap, const UnprivilegedUser* user,
+                 int reportFd, int requestFd) {
     ChildPlan plan;
+    plan.user = user;
+    if (user) plan.seccomp = &seccompProgram(); // compiled here, before the fork
     if (!bwrap.empty()) plan.argv = bubblewrapArgs(bwrap, c);
     plan.argv.push_back(c.program.string());
     plan.argv.insert(plan.argv.end(), c.args.begin(), c.args.end());
@@ -224,14 +242,24 @@ private:
 };
 
 AgentRun runPosix(const AgentCommand& c, const SandboxLimits& limits) {
-    const fs::path bwrap = limits.bubblewrap ? bubblewrap() : fs::path();
-    if (bwrap.empty()) sayOnceWithoutBubblewrap(!limits.bubblewrap);
+    const SandboxMode mode = sandboxMode(limits.bubblewrap);
+    const fs::path bwrap = mode == SandboxMode::bubblewrap ? bubblewrap() : fs::path();
+    const UnprivilegedUser* user = mode == SandboxMode::unprivileged ? &*unprivilegedUser() : nullptr;
+    if (bwrap.empty()) sayOnceWithoutBubblewrap(limits, user);
+    // The fallback: the agent's folders are its own, and nothing else of the grader's is writable by it.
+    if (user) {
+        std::vector<fs::path> own = c.writable;
+        own.push_back(c.scratch);
+        for (const fs::path& folder : own)
+            if (!handOver(folder, *user))
+                throw std::runtime_error("grader: cannot give " + folder.string() + " to the user " + user->name);
+    }
     int report[2], request[2] = {-1, -1};
     if (!openPipe(report) || !openPipe(request))
         throw std::runtime_error("grader: cannot open a pipe to the agent");
     // Without a PID namespace the child could reach the grader: its signals are guarded too.
     std::optional<ChildGuard> guard(std::in_place, bwrap.empty());
-    const pid_t pid = startChild(c, limits, bwrap, report[1], request[0]);
+    const pid_t pid = startChild(c, limits, bwrap, user, report[1], request[0]);
     guard->started(pid);
     close(report[1]);
     close(request[0]);
@@ -265,7 +293,12 @@ AgentRun runPosix(const AgentCommand& c, const SandboxLimits& limits) {
 
 std::string sandboxKind(const SandboxLimits& limits) {
 #ifdef RAYLAB_POSIX_SANDBOX
-    return limits.bubblewrap && !bubblewrap().empty() ? "bubblewrap" : "process group";
+    switch (sandboxMode(limits.bubblewrap)) {
+    case SandboxMode::bubblewrap: return "bubblewrap";
+    case SandboxMode::unprivileged: return haveSeccomp() ? "unprivileged user" : "unprivileged user, no seccomp filter";
+    case SandboxMode::processGroup: break;
+    }
+    return "process group";
 #else
     (void)limits;
     return "none";

@@ -7,8 +7,11 @@
 // namespaces: it sees the system's libraries read-only, the program and the files it is given
 // read-only, a private /tmp, and writes only to its scratch folder (and the folders it is given);
 // it cannot see or signal any process outside, has no network, and dies with the grader.
-// POSIX without bubblewrap: its own session and process group, the grader ignores (and records)
-// signals from it, and every process it started is killed when it ends. Both: rlimits on CPU,
+// Linux without bubblewrap (not installed, or a container that forbids namespaces), the grader
+// being root: the fallback (unprivileged.h), the agent as an unprivileged user in a scratch folder
+// only it can write, under a seccomp filter (no network, no ptrace), with what follows.
+// POSIX without either: its own session and process group, the grader ignores (and records)
+// signals from it, and every process it started is killed when it ends. All: rlimits on CPU,
 // memory and file size, a wall-clock limit per item, and results read from a pipe the parent
 // opened (its stdout goes to a capped file nobody trusts; what the parent reads back from its scratch
 // folder is read without following links, see scratch_file.h).
@@ -30,7 +33,8 @@ struct SandboxLimits {
     double totalSeconds = 1800.; // wall-clock time of the whole run
     unsigned long long memoryBytes = 4ull << 30;
     unsigned long long fileBytes = 256ull << 20;
-    bool bubblewrap = true; // use it when it is installed (false: `--no-sandbox`)
+    bool bubblewrap = true; // use it, or the fallback, when they can run (false: `--no-sandbox`; the
+                            // environment's RAYLAB_SANDBOX=bubblewrap|fallback|none chooses too)
 };
 
 // What a run keeps of its stdout.txt and stderr.txt, on disk too (their last bytes): the file size
@@ -63,7 +67,8 @@ struct AgentRun {
 // described above.
 AgentRun runAgent(const AgentCommand& command, const SandboxLimits& limits);
 
-// How agents are confined with these limits: "bubblewrap", "process group" or "none".
+// How agents are confined with these limits: "bubblewrap", "unprivileged user" (the fallback; with
+// ", no seccomp filter" when built without libseccomp), "process group", or "none" (Windows).
 std::string sandboxKind(const SandboxLimits& limits);
 
 // Why bubblewrap cannot confine agents here, in the reader's language ("bubblewrap is not installed

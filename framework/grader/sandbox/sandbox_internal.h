@@ -21,6 +21,8 @@
 
 #ifdef RAYLAB_POSIX_SANDBOX
 
+#include "grader/sandbox/unprivileged.h"
+
 #include <atomic>
 #include <filesystem>
 #include <string>
@@ -62,6 +64,8 @@ struct ChildPlan {
     std::filesystem::path scratch;
     SandboxLimits limits;
     int reportFd = -1, requestFd = -1;
+    const UnprivilegedUser* user = nullptr;        // the fallback: the child becomes this user
+    const std::vector<sock_filter>* seccomp = nullptr; // and installs this filter before exec
 
     void seal() {
         for (std::string& a : argv) cargv.push_back(a.data());
@@ -71,7 +75,7 @@ struct ChildPlan {
     }
 };
 
-// In the forked child: its session, channels, limits, then the program.
+// In the forked child: its session, its user (the fallback), channels, limits, filter, then the program.
 [[noreturn]] void execChild(const ChildPlan& plan);
 
 // A small environment: the grader's variables are none of the child's business.

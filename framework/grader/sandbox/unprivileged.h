@@ -1,0 +1,58 @@
+#pragma once
+// The sandbox where bubblewrap cannot start (not installed, or a container such as Gradescope's that
+// forbids namespaces) and the grader runs as root: the compiler and the agents run as an unprivileged
+// user, in a folder only that user can write, under a seccomp filter. They share the machine's kernel
+// and see every world-readable file (no mount namespace): docs/instructors.md says what that promises.
+// POSIX only; the build guard uses it too (no message catalogue here).
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <sys/types.h>
+#include <vector>
+
+struct sock_filter;
+
+namespace raylab::grader::detail {
+
+// How a program of the student's is confined: bubblewrap's namespaces, an unprivileged user (root
+// without bubblewrap), or only its own process group (not root, or turned off).
+enum class SandboxMode { bubblewrap, unprivileged, processGroup };
+
+// RAYLAB_SANDBOX=bubblewrap|fallback|none forces a mode (a test runs the fallback on a machine that
+// has bubblewrap; `--no-sandbox` sets none for the compiler it starts); otherwise, or when the mode
+// asked for cannot run here, the best this machine has. `allowed` false: none (`--no-sandbox`).
+SandboxMode sandboxMode(bool allowed = true);
+
+// The user the fallback runs programs as: `raylab-grader` (setup.sh creates it), else `nobody`.
+struct UnprivilegedUser {
+    uid_t uid = 0;
+    gid_t gid = 0;
+    std::string name;
+};
+
+// Looked up once (not after a fork: the lookup is not async-signal-safe); empty when not root or
+// when neither user exists.
+const std::optional<UnprivilegedUser>& unprivilegedUser();
+
+// `folder` belongs to `user`, mode 0700: only it writes there, and no other unprivileged program
+// reads it. False when it cannot be done.
+bool handOver(const std::filesystem::path& folder, const UnprivilegedUser& user);
+
+// In the forked child (async-signal-safe): no supplementary groups, the user's group, then the user;
+// true only once root cannot be taken back (setuid(0) fails).
+bool dropPrivileges(const UnprivilegedUser& user);
+
+// Whether raylab was built with libseccomp: without it the fallback has no seccomp filter.
+bool haveSeccomp();
+
+// The seccomp filter's program, compiled once before any fork: sockets other than AF_UNIX, ptrace,
+// process_vm_readv/writev and io_uring (which opens sockets without the socket call) fail. Empty when
+// raylab was built without libseccomp; throws when libseccomp cannot compile it (nothing runs unfiltered).
+const std::vector<sock_filter>& seccompProgram();
+
+// In the forked child, last before exec (async-signal-safe): no new privileges, then the filter.
+// True when it is in place, or when there is none to install.
+bool installSeccomp(const std::vector<sock_filter>& program);
+
+} // namespace raylab::grader::detail
