@@ -7,6 +7,8 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "src/messages.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -79,8 +81,8 @@ int distribute(const fs::path& source, const fs::path& out) {
 void addDistributeCommand(CLI::App& app, Context& context) {
     auto out = std::make_shared<std::string>();
     CLI::App* command =
-        app.add_subcommand("distribute", "instructors: write the students' tree (no solutions/) into a new folder");
-    command->add_option("OUT", *out, "the folder to create")->required();
+        app.add_subcommand("distribute", tr("cli.distribute"));
+    command->add_option(tr("cli.type.DIR"), *out, tr("cli.new_folder"))->required();
     command->callback([&context, out] { context.exitStatus = distribute(build::kSourceDir, *out); });
 }
 
