@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace raylab::cli {
 
@@ -25,8 +26,11 @@ std::string handout(const fs::path& tree, const grader::LabDescription& lab, Lan
 }
 
 std::string readme(const fs::path& tree, const grader::LabCatalog& labs, Language language) {
-    const auto say = [language](const char* id, MessageArgs args = {}) { return tr(language, id, std::move(args)) + "\n\n"; };
-    std::string text = say("distribute.readme_title") + say("distribute.readme_intro") + tr(language, "distribute.readme_labs") + "\n";
+    const auto say = [language](const char* id, MessageArgs args = {}) {
+        return tr(language, id, std::move(args)) + "\n\n"; // a paragraph
+    };
+    std::string text =
+        say("distribute.readme_title") + say("distribute.readme_intro") + tr(language, "distribute.readme_labs") + "\n";
     for (const grader::LabDescription& lab : labs.labs) {
         std::string files;
         for (const std::string& file : lab.files()) files += (files.empty() ? "" : ", ") + ("`" + file + "`");
@@ -38,8 +42,8 @@ std::string readme(const fs::path& tree, const grader::LabCatalog& labs, Languag
                     {"files", files}}) +
                 "\n";
     }
-    return text + "\n" + say("distribute.readme_build", {{"build", kStudentsBuildCommand}}) + say("distribute.readme_use") +
-           tr(language, "distribute.readme_holds") + "\n";
+    return text + "\n" + say("distribute.readme_build", {{"build", kStudentsBuildCommand}}) +
+           say("distribute.readme_use") + tr(language, "distribute.readme_holds") + "\n";
 }
 
 } // namespace

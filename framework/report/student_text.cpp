@@ -52,7 +52,8 @@ struct Reader {
         } else if (in == In::Generated && !hash.empty() && fingerprint(body) != hash && !body.empty())
             found.unplaced.push_back({Origin::EditedGenerated, key, begin,
                                       words.text("edited_generated", {{"section", key}}) + "\n\n" + body});
-        else if (in == In::Nothing && !body.empty()) found.unplaced.push_back({Origin::OutsideMarkers, "", firstText, body});
+        else if (in == In::Nothing && !body.empty())
+            found.unplaced.push_back({Origin::OutsideMarkers, "", firstText, body});
         in = In::Nothing;
         key.clear();
         hash.clear();
@@ -112,7 +113,8 @@ std::vector<Segment> placeStudentText(std::vector<Segment> fresh, const Previous
         if (old.key == kKeptKey) keep(old.text);
         else if (written.count(old.key) == 0 || placed.count(old.key) != 0) { // gone, or a second copy
             keep(words.text("kept_from", {{"section", old.key}}) + "\n\n" + old.text);
-            const auto origin = written.count(old.key) == 0 ? UnplacedText::Origin::SectionGone : UnplacedText::Origin::SecondCopy;
+            const auto origin =
+                written.count(old.key) == 0 ? UnplacedText::Origin::SectionGone : UnplacedText::Origin::SecondCopy;
             tell({origin, old.key, line, ""}, old.text);
         } else {
             for (Segment& s : fresh)
@@ -141,7 +143,8 @@ std::string movedTextNotice(const std::vector<UnplacedText>& moved, const std::s
                          : piece.origin == UnplacedText::Origin::EditedGenerated ? "moved_edited"
                          : piece.origin == UnplacedText::Origin::SectionGone     ? "moved_gone"
                                                                                   : "moved_copy";
-        notice += "  " + words.text(id, {{"file", file}, {"line", std::to_string(piece.line)}, {"section", piece.section}}) + "\n";
+        const MessageArgs args{{"file", file}, {"line", std::to_string(piece.line)}, {"section", piece.section}};
+        notice += "  " + words.text(id, args) + "\n";
     }
     return notice;
 }

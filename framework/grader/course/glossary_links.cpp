@@ -25,7 +25,8 @@ bool holdsWord(const std::string& line, const std::string& term) {
 } // namespace
 
 const std::vector<std::pair<std::string, std::string>>& glossaryTerms() {
-    static const std::vector<std::pair<std::string, std::string>> terms{{"LSB", "lsb"}, {"RMSE", "rmse"}, {"NaN", "nan"}};
+    static const std::vector<std::pair<std::string, std::string>> terms{
+        {"LSB", "lsb"}, {"RMSE", "rmse"}, {"NaN", "nan"}};
     return terms;
 }
 

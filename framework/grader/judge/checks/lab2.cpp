@@ -93,7 +93,8 @@ void expectRays(Judge& judge, const Camera& c, const SeenViewport& viewport, con
             viewport.right ? c.direction(p.sx, p.sy) : Camera::direction(p.sx, p.sy, viewport.height, viewport.width);
         // The right way but not unit length: the normalisation is missing, not sx or sy.
         const double length = glm::length(direction);
-        const bool notUnit = length > 0. && std::abs(length - 1.) > 1e-5 && glm::length(direction / length - expected) <= 1e-5;
+        const bool notUnit =
+            length > 0. && std::abs(length - 1.) > 1e-5 && glm::length(direction / length - expected) <= 1e-5;
         const std::string unitHint = tr("hint.lab2.not_unit", {{"length", show(length)}});
         if (viewport.right) judge.expectNear(what, direction, expected, 1e-5, notUnit ? unitHint : hint);
         else

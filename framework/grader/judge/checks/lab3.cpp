@@ -205,7 +205,8 @@ glm::dvec3 liForHit(const LiCase& c, bool found, double t) {
     if (!found) return c.background;
     if (c.shading == kFlat) return c.colour;
     const glm::dvec3 d = glm::normalize(c.ray.direction);
-    glm::dvec3 n = c.shading == kCosine ? glm::normalize(c.ray.at(t) - c.sphere.centre) : glm::normalize(glm::dvec3(1.));
+    glm::dvec3 n =
+        c.shading == kCosine ? glm::normalize(c.ray.at(t) - c.sphere.centre) : glm::normalize(glm::dvec3(1.));
     if (c.shading == kPlaceholder && glm::dot(d, n) > 0.) n = -n;
     return c.colour * std::max(-glm::dot(d, n), 0.);
 }
@@ -234,7 +235,8 @@ void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vec
                               const bool found = hit.number() != 0.;
                               const double t = hit.number();
                               const std::optional<double> trueT = nearestHit(c.sphere, c.ray);
-                              const bool hitWrong = found != trueT.has_value() || (found && std::abs(t - *trueT) > 1e-4 * std::max(1., *trueT));
+                              const bool hitWrong = found != trueT.has_value() ||
+                                                    (found && std::abs(t - *trueT) > 1e-4 * std::max(1., *trueT));
                               if (hitWrong && withinEach(got, liForHit(c, found, t), c.tolerance))
                                   hint = tr("hint.lab3.li_through_intersect",
                                             {{"got", found ? "t = " + show(t) : tr("what.lab3.no_hit")},
