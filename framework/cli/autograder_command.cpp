@@ -1,6 +1,6 @@
 // raylab autograder: grading where the students hand in (docs/instructors.md, section 3).
-//   gradescope OUT.zip  the autograder zip: setup.sh, run_autograder and the students' tree (raylab/)
-//   github OUT_DIR      the students' tree with GitHub Classroom's workflow, one step per item
+//   gradescope FILE.zip the autograder zip: setup.sh, run_autograder and the students' tree (raylab/)
+//   github DIR          the students' tree with GitHub Classroom's workflow, one step per item
 //   run                 what run_autograder calls, inside Gradescope's container
 #include "build_info.h"
 #include "commands.h"
@@ -227,25 +227,23 @@ int runGradescope(const Context& context) {
 } // namespace
 
 void addAutograderCommand(CLI::App& app, Context& context) {
-    CLI::App* autograder = app.add_subcommand("autograder", "instructors: grade on Gradescope or GitHub Classroom");
+    CLI::App* autograder = app.add_subcommand("autograder", tr("cli.autograder"));
     autograder->require_subcommand(1);
 
 #ifndef RAYLAB_GRADING_ONLY
     auto zip = std::make_shared<std::string>();
     CLI::App* gradescope =
-        autograder->add_subcommand("gradescope", "write Gradescope's autograder zip (setup.sh, run_autograder, the tree)");
-    gradescope->add_option("OUT.zip", *zip, "the zip to write")->required();
+        autograder->add_subcommand("gradescope", tr("cli.autograder_gradescope"));
+    gradescope->add_option(tr("cli.type.FILE") + ".zip", *zip, tr("cli.autograder_zip"))->required();
     gradescope->callback([&context, zip] { context.exitStatus = writeGradescopeZip(*zip, context); });
 
     auto out = std::make_shared<std::string>();
-    CLI::App* github = autograder->add_subcommand(
-        "github", "write the students' tree with GitHub Classroom's workflow (.github/workflows/classroom.yml)");
-    github->add_option("OUT_DIR", *out, "the folder to create")->required();
+    CLI::App* github = autograder->add_subcommand("github", tr("cli.autograder_github"));
+    github->add_option(tr("cli.type.DIR"), *out, tr("cli.new_folder"))->required();
     github->callback([&context, out] { context.exitStatus = writeClassroomTree(*out, context); });
 #endif
 
-    CLI::App* run = autograder->add_subcommand(
-        "run", "inside Gradescope (run_autograder): grade $RAYLAB_AUTOGRADER_ROOT/submission (default /autograder)");
+    CLI::App* run = autograder->add_subcommand("run", tr("cli.autograder_run"));
     run->callback([&context] { context.exitStatus = runGradescope(context); });
 }
 

@@ -2,6 +2,7 @@
 
 #include "build_info.h"
 #include "src/figure.h"
+#include "src/messages.h"
 #ifdef RAYLAB_HAVE_YARDSTICK
 #include "../study/yardstick.h"
 #endif
@@ -99,9 +100,7 @@ int runBench(const std::filesystem::path& scenes, int threads, int repeats) {
 } // namespace
 
 void addBenchCommand(CLI::App& app, Context& context) {
-    addTimingCommand(app, context, "bench",
-                     "primary rays per second on lab 5's scene at 1, 4, 16, 64 samples, beside a hand-written yardstick",
-                     3, runBench);
+    addTimingCommand(app, context, "bench", tr("cli.bench"), 3, runBench);
 }
 
 } // namespace raylab::cli

@@ -3,6 +3,7 @@
 #include "commands.h"
 
 #include "src/figure.h"
+#include "src/messages.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -99,9 +100,7 @@ int runBenchEffects(const std::filesystem::path& scenes, int threads, int repeat
 } // namespace
 
 void addBenchEffectsCommand(CLI::App& app, Context& context) {
-    addTimingCommand(app, context, "bench-effects",
-                     "times pairs of scenes that differ in one effect: the one that asks for less must not be slower", 5,
-                     runBenchEffects);
+    addTimingCommand(app, context, "bench-effects", tr("cli.bench_effects"), 5, runBenchEffects);
 }
 
 } // namespace raylab::cli

@@ -92,9 +92,17 @@ void addDistributeCommand(CLI::App& app, Context& context); // distribute
 void addAutograderCommand(CLI::App& app, Context& context); // autograder gradescope, github, run
 
 // The files of the students' tree (relative to `source`): all but the solutions and what would give
-// them away. writeStudentTree copies them into `out` (new or empty) and returns how many.
+// them away. writeStudentTree copies them into `out` (new or empty), the students' README over the
+// instructors', and returns how many files it wrote.
 std::vector<std::filesystem::path> studentTreeFiles(const std::filesystem::path& source);
 int writeStudentTree(const std::filesystem::path& source, const std::filesystem::path& out);
+
+// The one command that builds the students' tree and runs its tests, as its README and `raylab
+// distribute` say it.
+inline constexpr const char* kStudentsBuildCommand = "scripts/setup.sh && cmake --workflow --preset test";
+// The students' README.md (English) and LISEZMOI.md (French) in `tree`: what it holds, how to build
+// it, the commands of a lab (students_readme.cpp).
+void writeStudentsReadme(const std::filesystem::path& tree, const grader::LabCatalog& labs);
 } // namespace raylab::cli
 
 namespace raylab::cli {

@@ -64,7 +64,7 @@ void addTimingCommand(CLI::App& app, Context& context, const std::string& name, 
     auto repeatsOption = std::make_shared<int>(repeats);
     CLI::App* command = app.add_subcommand(name, description);
     context.addImplOption(command);
-    command->add_option("--repeats", *repeatsOption, "renders per measurement (the median is shown)")
+    command->add_option("--repeats", *repeatsOption, tr("cli.bench_repeats"))
         ->check(CLI::Range(1, 100));
     context.addRenderOptions(command);
     command->callback([&context, repeatsOption, run] {
@@ -90,7 +90,7 @@ CLI::App* studyCommand(CLI::App& app) {
     try {
         return app.get_subcommand("study");
     } catch (const CLI::OptionNotFound&) {
-        CLI::App* study = app.add_subcommand("study", "what accuracy costs in time");
+        CLI::App* study = app.add_subcommand("study", tr("cli.study"));
         study->require_subcommand(1);
         return study;
     }

@@ -8,6 +8,10 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "grader/lab_catalog.h"
+#include "src/messages.h"
+
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -70,18 +74,19 @@ int writeStudentTree(const fs::path& source, const fs::path& out) {
         fs::create_directories((out / relative).parent_path());
         fs::copy_file(sourceAbs / relative, out / relative, fs::copy_options::overwrite_existing);
     }
-    return int(files.size());
+    writeStudentsReadme(out, grader::loadLabCatalog(sourceAbs / "labs", sourceAbs / "scenes" / "figures"));
+    const bool hadReadme = std::find(files.begin(), files.end(), fs::path("README.md")) != files.end();
+    return int(files.size()) + (hadReadme ? 1 : 2); // LISEZMOI.md, and README.md where there was none
 }
 
 namespace {
 
 int distribute(const fs::path& source, const fs::path& out) {
     const int files = writeStudentTree(source, out);
-    std::printf("raylab distribute: %d files -> %s (without solutions/, tests/mistakes/, tests/variants/ and the "
-                "code that holds a lab's answer)\n"
-                "  students build it with: cmake --workflow --preset test, and grade themselves with: "
-                "build/bin/raylab grade\n",
-                files, out.string().c_str());
+    std::printf("%s\n", tr("distribute.written", {{"files", std::to_string(files)},
+                                                   {"folder", out.string()},
+                                                   {"build", kStudentsBuildCommand}})
+                            .c_str());
     return 0;
 }
 
@@ -90,8 +95,8 @@ int distribute(const fs::path& source, const fs::path& out) {
 void addDistributeCommand(CLI::App& app, Context& context) {
     auto out = std::make_shared<std::string>();
     CLI::App* command =
-        app.add_subcommand("distribute", "instructors: write the students' tree (no solutions/) into a new folder");
-    command->add_option("OUT", *out, "the folder to create")->required();
+        app.add_subcommand("distribute", tr("cli.distribute"));
+    command->add_option(tr("cli.type.DIR"), *out, tr("cli.new_folder"))->required();
     command->callback([&context, out] { context.exitStatus = distribute(build::kSourceDir, *out); });
 }
 

@@ -250,7 +250,7 @@ void addGradeCommands(CLI::App& app, Context& context) {
     grade->add_option("--report", o->report, tr("cli.grade_report"));
     grade->add_option("--lab", o->lab, tr("cli.grade_lab"))->check(CLI::PositiveNumber);
     grade->add_option("--item", o->item, tr("cli.grade_item"));
-    grade->add_option("--agent", o->agents, "expert: grade this agent program (all labs)")->group("");
+    grade->add_option("--agent", o->agents, tr("cli.grade_agent"))->group("");
     addCommonOptions(grade, *o);
     context.addRenderOptions(grade);
     grade->callback([&context, o] {
@@ -260,15 +260,14 @@ void addGradeCommands(CLI::App& app, Context& context) {
     auto classOptions = std::make_shared<GradeOptions>();
     auto run = std::make_shared<ClassRunOptions>();
     run->out = "out/class";
-    CLI::App* gradeClassCommand = app.add_subcommand(
-        "grade-class", "grade every submission of DIR (one folder per student) into a CSV and reports; resumable");
-    gradeClassCommand->add_option("DIR", run->classFolder, "one folder per student")->required()->check(CLI::ExistingDirectory);
-    gradeClassCommand->add_option("--out", run->out, "grades.csv, and students/<name>/ for each (default: out/class)");
-    gradeClassCommand->add_flag("--wait", run->wait, "another run is grading into --out: wait for it instead of stopping");
+    CLI::App* gradeClassCommand = app.add_subcommand("grade-class", tr("cli.grade_class"));
+    gradeClassCommand->add_option(tr("cli.type.DIR"), run->classFolder, tr("cli.grade_class_dir"))->required()->check(CLI::ExistingDirectory);
+    gradeClassCommand->add_option("--out", run->out, tr("cli.grade_class_out"));
+    gradeClassCommand->add_flag("--wait", run->wait, tr("cli.grade_class_wait"));
     gradeClassCommand->add_flag("--no-sandbox", classOptions->noSandbox,
-                                "grade without bubblewrap (Linux), less confined: the students' code can read your files");
-    gradeClassCommand->add_option("--lab", classOptions->lab, "grade this lab only (its number)")->check(CLI::PositiveNumber);
-    gradeClassCommand->add_option("--agent", classOptions->agents, "expert: grade every student with this agent program")
+                                tr("cli.grade_class_no_sandbox"));
+    gradeClassCommand->add_option("--lab", classOptions->lab, tr("cli.grade_lab"))->check(CLI::PositiveNumber);
+    gradeClassCommand->add_option("--agent", classOptions->agents, tr("cli.grade_class_agent"))
         ->group("");
     addCommonOptions(gradeClassCommand, *classOptions);
     context.addRenderOptions(gradeClassCommand);

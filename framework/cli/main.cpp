@@ -152,9 +152,7 @@ int main(int argc, char** argv) {
     app.add_option("--lang", lang, tr("cli.lang"))->check(CLI::IsMember({"en", "fr"}));
     app.fallthrough(); // --lang after the subcommand too
     cli::Context context{argc, argv, build::kImpl, 0, build::kScenesDir};
-    // The student commands (figures, lab, render, grade, report) describe themselves in the reader's
-    // language; the instructors' (references, distribute, autograder, study, numerics, bench,
-    // bench-effects, grade-class) stay English.
+    // Every command describes itself in the reader's language (tests/cli/test_cli_language.cpp).
 #ifndef RAYLAB_GRADING_ONLY // a build for grading alone (RAYLAB_GRADING_ONLY, framework/CMakeLists.txt)
     cli::addFigureCommands(app, context);
     cli::addBenchCommand(app, context);

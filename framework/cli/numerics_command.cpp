@@ -6,6 +6,7 @@
 #include "../study/numerics_study.h"
 
 #include "src/atomic_file.h"
+#include "src/messages.h"
 
 #include <chrono>
 #include <cstdio>
@@ -48,9 +49,9 @@ int runMeasurements(const std::vector<Measurement>& measurements, const Numerics
 }
 
 void addOptions(CLI::App* command, NumericsOptions& o, Context& context) {
-    command->add_option("--out", o.out, "output folder for the CSV and Markdown files");
-    command->add_option("--rays", o.study.rays, "rays per configuration")->check(CLI::Range(100, 100000000));
-    command->add_option("--repeats", o.study.repeats, "timing runs (the median is shown)")->check(CLI::Range(1, 1000));
+    command->add_option("--out", o.out, tr("cli.numerics_out"));
+    command->add_option("--rays", o.study.rays, tr("cli.numerics_rays"))->check(CLI::Range(100, 100000000));
+    command->add_option("--repeats", o.study.repeats, tr("cli.numerics_repeats"))->check(CLI::Range(1, 1000));
     context.addImplOption(command);
 }
 
@@ -59,10 +60,9 @@ void addOptions(CLI::App* command, NumericsOptions& o, Context& context) {
 void addNumericsCommands(CLI::App& app, Context& context) {
     auto all = std::make_shared<NumericsOptions>();
     all->out = "out/numerics";
-    CLI::App* numerics = app.add_subcommand("numerics", "measure the hard cases of docs/numerics.md (intersection, "
-                                                        "cameras, pixel centres, large coordinates, accumulation)");
+    CLI::App* numerics = app.add_subcommand("numerics", tr("cli.numerics"));
     addOptions(numerics, *all, context);
-    numerics->add_option("--max-samples", all->study.maxSamples, "accumulation: up to this many samples per pixel")
+    numerics->add_option("--max-samples", all->study.maxSamples, tr("cli.numerics_max_samples"))
         ->check(CLI::Range(std::int64_t(1000), std::int64_t(1) << 31));
     numerics->callback([&context, all] {
         if (context.ranInOtherImpl()) return;
@@ -77,8 +77,7 @@ void addNumericsCommands(CLI::App& app, Context& context) {
     CLI::App* study = studyCommand(app);
     auto intersection = std::make_shared<NumericsOptions>();
     intersection->out = "out/study/intersection";
-    CLI::App* command = study->add_subcommand("intersection", "textbook vs stable ray/sphere formula, float vs double: "
-                                                              "error against long double and ns per intersection");
+    CLI::App* command = study->add_subcommand("intersection", tr("cli.study_intersection"));
     addOptions(command, *intersection, context);
     command->callback([&context, intersection] {
         if (context.ranInOtherImpl()) return;

@@ -9,6 +9,7 @@
 #include "grader/judge/reference_render.h"
 #include "grader/judge/references.h"
 #include "grader/judge/grade.h"
+#include "src/messages.h"
 
 #include <cstdio>
 #include <memory>
@@ -86,11 +87,10 @@ int makeReferences(const fs::path& folder, const fs::path& scenes, const std::st
 void addReferencesCommand(CLI::App& app, Context& context) {
     auto out = std::make_shared<std::string>();
     auto mistakes = std::make_shared<std::string>();
-    CLI::App* references = app.add_subcommand(
-        "references", "instructors: render the reference data of every figure from solutions/ (framework/grader/data/references)");
-    references->add_option("--out", *out, "the reference folder (default: framework/grader/data/references)");
+    CLI::App* references = app.add_subcommand("references", tr("cli.references"));
+    references->add_option("--out", *out, tr("cli.grade_references"));
     references->add_option("--mistakes", *mistakes,
-                           "also render the mistakes' signatures with the raylab-mistake-* programs of this folder");
+                           tr("cli.references_mistakes"));
     context.addRenderOptions(references);
     references->callback([&context, out, mistakes] {
         context.impl = "reference";

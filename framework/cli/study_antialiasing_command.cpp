@@ -3,6 +3,7 @@
 #include "commands.h"
 
 #include "../study/antialiasing_study.h"
+#include "src/messages.h"
 
 #include <cstdio>
 #include <memory>
@@ -13,12 +14,10 @@ void addStudyAntialiasingCommand(CLI::App& app, Context& context) {
     CLI::App* study = studyCommand(app);
     auto o = std::make_shared<study::AntialiasingOptions>();
     auto out = std::make_shared<std::string>();
-    CLI::App* command = study->add_subcommand(
-        "antialiasing", "each sampler at 1 to 1024 samples per pixel and adaptive sampling, against the exact picture: "
-                        "accuracy.csv, accuracy.md and SVG plots");
-    command->add_option("--out", *out, "output folder (default: docs/ of the source tree; with --quick, out/study-quick)");
-    command->add_flag("--quick", o->quick, "a 120 x 80 image, up to 256 samples, one timing run (seconds, for tests)");
-    command->add_option("--repeats", o->repeats, "timing runs, the median is kept")->check(CLI::Range(1, 50));
+    CLI::App* command = study->add_subcommand("antialiasing", tr("cli.study_antialiasing"));
+    command->add_option("--out", *out, tr("cli.study_out"));
+    command->add_flag("--quick", o->quick, tr("cli.study_quick"));
+    command->add_option("--repeats", o->repeats, tr("cli.study_repeats"))->check(CLI::Range(1, 50));
     context.addImplOption(command);
     context.addRenderOptions(command);
     command->callback([&context, o, out] {

@@ -147,9 +147,11 @@ void writePages(const KitContent& content, const fs::path& out) {
         writeFileAtomically(out / "report.previous.md", old); // one undo, whatever happens next
         previous = readPreviousText(old, content.words);
     }
-    const std::vector<Segment> document = placeStudentText(reportSegments(content), previous, content.words);
+    std::vector<UnplacedText> moved;
+    const std::vector<Segment> document = placeStudentText(reportSegments(content), previous, content.words, &moved);
     writeFileAtomically(markdown, toMarkdown(document));
     writeFileAtomically(out / "report.html", reportHtml(document, content.words));
+    std::printf("%s", movedTextNotice(moved, markdown.string(), content.words).c_str()); // the student must know
 }
 
 int printPdf(const fs::path& out, const Words& words) {

@@ -41,29 +41,39 @@ struct Reader {
     PreviousText found;
     enum class In { Nothing, Generated, Student } in = In::Nothing;
     std::string key, hash, text;
+    int lineNumber = 0, begin = 0, firstText = 0; // the current line; the segment's marker; its first text line
 
     void close() {
         const std::string body = trimmed(text);
-        if (in == In::Student) found.student.push_back({Segment::Kind::Student, key, body});
-        else if (in == In::Generated && !hash.empty() && fingerprint(body) != hash && !body.empty())
-            found.unplaced.push_back(words.text("edited_generated", {{"section", key}}) + "\n\n" + body);
-        else if (in == In::Nothing && !body.empty()) found.unplaced.push_back(body);
+        using Origin = UnplacedText::Origin;
+        if (in == In::Student) {
+            found.student.push_back({Segment::Kind::Student, key, body});
+            found.studentLines.push_back(begin);
+        } else if (in == In::Generated && !hash.empty() && fingerprint(body) != hash && !body.empty())
+            found.unplaced.push_back({Origin::EditedGenerated, key, begin,
+                                      words.text("edited_generated", {{"section", key}}) + "\n\n" + body});
+        else if (in == In::Nothing && !body.empty())
+            found.unplaced.push_back({Origin::OutsideMarkers, "", firstText, body});
         in = In::Nothing;
         key.clear();
         hash.clear();
         text.clear();
+        firstText = 0;
     }
 
     void line(const std::string& l) {
+        ++lineNumber;
         std::smatch m;
         if (std::regex_match(l, m, kBegin)) { // a begin also ends a segment whose end marker was deleted
             close();
             in = m[1] == "student" ? In::Student : In::Generated;
             key = m[2];
             hash = m[4];
+            begin = lineNumber;
         } else if (std::regex_match(l, kEnd)) {
             close();
         } else {
+            if (firstText == 0 && !blank(l)) firstText = lineNumber;
             text += l + "\n";
         }
     }
@@ -82,7 +92,8 @@ PreviousText readPreviousText(const std::string& markdown, const Words& words) {
     return reader.found;
 }
 
-std::vector<Segment> placeStudentText(std::vector<Segment> fresh, const PreviousText& previous, const Words& words) {
+std::vector<Segment> placeStudentText(std::vector<Segment> fresh, const PreviousText& previous, const Words& words,
+                                      std::vector<UnplacedText>* moved) {
     std::set<std::string> written;
     for (const Segment& s : fresh)
         if (s.kind == Segment::Kind::Student) written.insert(s.key);
@@ -93,23 +104,49 @@ std::vector<Segment> placeStudentText(std::vector<Segment> fresh, const Previous
         if (!kept.empty()) kept += '\n';
         kept += trimmed(text);
     };
-    for (const Segment& old : previous.student) {
+    const auto tell = [&](UnplacedText piece, const std::string& text) {
+        if (moved != nullptr && !blank(text)) moved->push_back(std::move(piece));
+    };
+    for (std::size_t k = 0; k < previous.student.size(); ++k) {
+        const Segment& old = previous.student[k];
+        const int line = k < previous.studentLines.size() ? previous.studentLines[k] : 0;
         if (old.key == kKeptKey) keep(old.text);
-        else if (written.count(old.key) == 0 || placed.count(old.key) != 0) // gone, or a second copy
+        else if (written.count(old.key) == 0 || placed.count(old.key) != 0) { // gone, or a second copy
             keep(words.text("kept_from", {{"section", old.key}}) + "\n\n" + old.text);
-        else {
+            const auto origin =
+                written.count(old.key) == 0 ? UnplacedText::Origin::SectionGone : UnplacedText::Origin::SecondCopy;
+            tell({origin, old.key, line, ""}, old.text);
+        } else {
             for (Segment& s : fresh)
                 if (s.kind == Segment::Kind::Student && s.key == old.key) s.text = old.text;
             placed.insert(old.key);
         }
     }
-    for (const std::string& text : previous.unplaced) keep(text);
+    for (const UnplacedText& piece : previous.unplaced) {
+        keep(piece.text);
+        tell(piece, piece.text);
+    }
     if (!kept.empty()) {
         fresh.push_back({Segment::Kind::Generated, "kept-heading",
                          std::string("## ") + words.text("kept") + "\n\n" + words.text("kept_intro") + "\n"});
         fresh.push_back({Segment::Kind::Student, kKeptKey, kept});
     }
     return fresh;
+}
+
+std::string movedTextNotice(const std::vector<UnplacedText>& moved, const std::string& file, const Words& words) {
+    if (moved.empty()) return "";
+    const std::string count = std::to_string(moved.size());
+    std::string notice = words.text("moved", {{"count", count}, {"file", file}, {"kept", words.text("kept")}}) + "\n";
+    for (const UnplacedText& piece : moved) {
+        const char* id = piece.origin == UnplacedText::Origin::OutsideMarkers    ? "moved_outside"
+                         : piece.origin == UnplacedText::Origin::EditedGenerated ? "moved_edited"
+                         : piece.origin == UnplacedText::Origin::SectionGone     ? "moved_gone"
+                                                                                  : "moved_copy";
+        const MessageArgs args{{"file", file}, {"line", std::to_string(piece.line)}, {"section", piece.section}};
+        notice += "  " + words.text(id, args) + "\n";
+    }
+    return notice;
 }
 
 std::string toMarkdown(const std::vector<Segment>& document) {

@@ -1,13 +1,18 @@
-// The command line speaks the reader's language: `raylab --help`, the student commands' help and the
-// argument errors, CLI11's own included, are French with --lang fr and hold none of the English sentences.
+// The command line speaks the reader's language: `raylab --help`, every command's help, the student
+// commands' output and the argument errors, CLI11's own included, are French with --lang fr and hold
+// none of the English sentences.
 #include "src/messages.h"
 #include "support/run_program.h"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <optional>
 #include <random>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -53,6 +58,98 @@ void checkNoCli11English(const std::string& output) {
     for (const std::string& english : kCli11English) CHECK_MESSAGE(!has(output, english), english << " in\n" << output);
 }
 
+// The words of a text, lower case: its pieces between spaces and punctuation that are ASCII letters only.
+// A piece with a digit, '_', '/', '.', '-', '<', '=' ... inside (a path, an id, an option) is no word.
+std::vector<std::string> wordsOf(const std::string& original) {
+    const std::string nbsp = "\u00A0"; // French spacing: a blank too
+    std::string text;
+    for (std::size_t from = 0, at; from < original.size(); from = at + (at < original.size() ? nbsp.size() : 0)) {
+        at = std::min(original.find(nbsp, from), original.size());
+        text += original.substr(from, at - from) + " ";
+    }
+    std::vector<std::string> words;
+    std::string piece;
+    const auto flush = [&] {
+        while (!piece.empty() && (piece.back() == '.' || piece.back() == '-')) piece.pop_back(); // a sentence's end
+        if (!piece.empty() && std::all_of(piece.begin(), piece.end(), [](unsigned char c) { return std::isalpha(c); })) {
+            std::transform(piece.begin(), piece.end(), piece.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+            words.push_back(piece);
+        }
+        piece.clear();
+    };
+    for (const char c : text) {
+        if (std::isspace(static_cast<unsigned char>(c)) || std::string_view(",;:()[]{}\"'`!?|").find(c) != std::string_view::npos)
+            flush();
+        else piece += c;
+    }
+    flush();
+    return words;
+}
+
+// The English catalogue's sentence words (5 letters or more, outside its {placeholders}) that French
+// never uses, not even inside a word of fr.toml: a French output holding one holds English.
+const std::set<std::string>& englishOnlyWords() {
+    static const std::set<std::string> words = [] {
+        std::string french;
+        for (const auto& [id, text] : messageCatalogue(Language::Fr)) french += text + "\n";
+        std::transform(french.begin(), french.end(), french.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        std::set<std::string> english;
+        for (const auto& [id, text] : messageCatalogue(Language::En)) {
+            std::string sentence;
+            for (std::size_t k = 0, depth = 0; k < text.size(); ++k) { // {name} and {n|one|other} are no words
+                depth += text[k] == '{';
+                if (depth == 0) sentence += text[k];
+                if (text[k] == '}' && depth > 0) --depth, sentence += ' ';
+            }
+            for (const std::string& word : wordsOf(sentence))
+                if (word.size() >= 5 && french.find(word) == std::string::npos) english.insert(word);
+        }
+        return english;
+    }();
+    return words;
+}
+
+// The English-only words found in `output` (empty when it is all French), but the commands' names.
+std::set<std::string> englishIn(const std::string& output, const std::set<std::string>& names = {}) {
+    std::set<std::string> found;
+    for (const std::string& word : wordsOf(output))
+        if (englishOnlyWords().count(word) && !names.count(word)) found.insert(word);
+    return found;
+}
+
+std::string joined(const std::set<std::string>& words) {
+    std::string text;
+    for (const std::string& w : words) text += (text.empty() ? "" : ", ") + w;
+    return text;
+}
+
+void checkAllFrench(const std::string& what, const std::string& output, const std::set<std::string>& names = {}) {
+    const std::set<std::string> english = englishIn(output, names);
+    CHECK_MESSAGE(english.empty(), what << ": English words " << joined(english) << " in\n" << output);
+    checkNoCli11English(output);
+}
+
+// The commands as the program lists them (its help's "Subcommands:" in English), with their own
+// subcommands: {"grade"}, {"autograder", "github"} ...
+std::vector<std::vector<std::string>> commandsOf(std::vector<std::string> path) {
+    std::vector<std::string> args = path;
+    args.insert(args.end(), {"--help", "--lang", "en"});
+    std::istringstream help(run(args));
+    std::vector<std::vector<std::string>> commands;
+    bool inList = false;
+    for (std::string line; std::getline(help, line);) {
+        if (line == "Subcommands:") inList = true;
+        else if (line.empty()) inList = false;
+        else if (inList && line.size() > 2 && line.rfind("  ", 0) == 0 && line[2] != ' ') {
+            std::vector<std::string> command = path;
+            command.push_back(line.substr(2, line.find(' ', 2) - 2));
+            commands.push_back(command);
+            for (std::vector<std::string>& sub : commandsOf(command)) commands.push_back(std::move(sub));
+        }
+    }
+    return commands;
+}
+
 } // namespace
 
 TEST_SUITE("command line language") {
@@ -65,6 +162,59 @@ TEST_CASE("raylab --help in French: the program, the student commands, the headi
     checkDescriptions(help, {"cli.lang", "cli.figures", "cli.lab", "cli.render", "cli.grade", "cli.report"});
     CHECK_MESSAGE(!has(help, "This program is the"), help);
     checkNoCli11English(help);
+}
+
+TEST_CASE("the English-only words are found: the test can fail") {
+    CHECK(englishOnlyWords().count("yardstick") == 1); // in cli.bench
+    CHECK(englishIn("enseignants\u00A0: écrit l'arborescence des étudiants").empty());
+    const std::set<std::string> found = englishIn("  bench   primary rays per second, beside a hand-written yardstick");
+    const std::set<std::string> expected{"beside", "primary", "yardstick"}; // "second": in fr.toml ("seconde")
+    CHECK_MESSAGE(found == expected, joined(found));
+    CHECK(englishIn("out/grade-build lab3_cosine --build-dir").empty()); // paths, ids and options are no words
+}
+
+TEST_CASE("raylab --help and every command's --help in French: no English word") {
+    const std::vector<std::vector<std::string>> commands = commandsOf({});
+    // The app's own list: the student commands and the instructors', with their subcommands.
+    for (const char* command : {"grade", "report", "distribute", "autograder", "bench"})
+        CHECK_MESSAGE(std::count(commands.begin(), commands.end(), std::vector<std::string>{command}) == 1, command);
+    CHECK(std::count(commands.begin(), commands.end(), std::vector<std::string>{"autograder", "github"}) == 1);
+    std::set<std::string> names; // a command's name is no word: `raylab study antialiasing`
+    for (const std::vector<std::string>& command : commands) names.insert(command.back());
+    checkAllFrench("raylab --help", run({"--help", "--lang", "fr"}), names);
+    for (std::vector<std::string> command : commands) {
+        const std::string name = "raylab " + command.back() + " --help";
+        command.insert(command.end(), {"--help", "--lang", "fr"});
+        checkAllFrench(name, run(command), names);
+    }
+}
+
+TEST_CASE("the student commands in French: no English word") {
+    const auto out = scratchFile("out");
+    const std::string folder = out.string();
+    // Whichever labs are written (the students' tree runs this too): a stub or a picture, a grade.
+    checkAllFrench("raylab lab 1", run({"lab", "1", "--out", folder, "--lang", "fr"}, std::nullopt));
+    checkAllFrench("raylab lab 3", run({"lab", "3", "--out", folder, "--lang", "fr"}, std::nullopt));
+    checkAllFrench("raylab figures", run({"figures", "--out", folder, "--lang", "fr"}, std::nullopt));
+    checkAllFrench("raylab grade", run({"grade", "--report", folder + "/report", "--lang", "fr"}, std::nullopt));
+    checkAllFrench("raylab report", run({"report", "--out", folder + "/kit", "--lang", "fr"}, std::nullopt));
+    std::filesystem::remove_all(out);
+}
+
+TEST_CASE("raylab grade in French on written labs, right and wrong: no English word") {
+    // The instructors' tree has the reference agent and one agent per classic mistake: their hints.
+    const std::filesystem::path bin = std::filesystem::path(RAYLAB_PROGRAM).parent_path();
+    const auto report = scratchFile("report");
+    int graded = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(bin)) {
+        const std::string name = entry.path().filename().string();
+        if (name != "raylab-agent-reference" && name.rfind("raylab-mistake-", 0) != 0) continue;
+        ++graded;
+        checkAllFrench("raylab grade --agent " + name,
+                       run({"grade", "--agent", entry.path().string(), "--report", report.string(), "--lang", "fr"}, std::nullopt));
+    }
+    std::filesystem::remove_all(report);
+    MESSAGE(graded << " agents graded in French");
 }
 
 TEST_CASE("raylab grade --help in French: every option's description") {

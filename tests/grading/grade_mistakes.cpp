@@ -1,6 +1,7 @@
 // Every classic mistake is caught by the check the catalogue expects, a figure it changes is
-// diagnosed as that mistake (with its lab, function and formula, and no other lab blamed), and no
-// hint names a cause the code does not have.
+// diagnosed as that mistake (with its lab, function and formula, and no other lab blamed), no hint
+// names a cause the code does not have, and a check that reaches the mistake through another
+// function names the function to fix.
 #include "grading_support.h"
 
 #include <algorithm>
@@ -26,7 +27,16 @@ const std::map<std::string, std::vector<WrongCause>> kWrongCauses{
     // A direction as wrong at the origin: the camera's position is not the cause.
     {"plus_sy", {{"generateRay: a camera away", "topLeft includes"}}},
     {"v_flipped", {{"generateRay: a camera away", "topLeft includes"}}},
-    {"direction_not_normalized", {{"generateRay: a camera away", "topLeft includes"}}},
+    {"direction_not_normalized", {{"generateRay: a camera away", "topLeft includes"}, {"generateRay: the centre", "sx goes right"}}},
+};
+
+// What the hints must say for a mistake, by check-name prefix: a check that calls the mistaken
+// function only through another names the function to fix; every failing check so named says it.
+const std::map<std::string, std::vector<WrongCause>> kRightCauses{
+    // Li is right for the far hit that intersect returns: intersect is the function to fix.
+    {"far_root_first", {{"Li: cosine", "fix SphereGeometry::intersect first"}}},
+    // The corners point the right way, too long: the normalisation, not sx and sy.
+    {"direction_not_normalized", {{"generateRay: the centre", "normalize it (glm::normalize)"}}},
 };
 
 TEST_CASE("each catalogued mistake is caught and named") {
@@ -53,6 +63,17 @@ TEST_CASE("each catalogued mistake is caught and named") {
                     if (c.name.rfind(cause.checks, 0) == 0)
                         CHECK_MESSAGE(c.message.find(cause.text) == std::string::npos,
                                       c.name << " names a cause the code does not have: " << c.message);
+        if (const auto right = kRightCauses.find(m.id); right != kRightCauses.end())
+            for (const WrongCause& cause : right->second) {
+                int said = 0;
+                for (const CheckOutcome& c : r.checks)
+                    if (c.name.rfind(cause.checks, 0) == 0 && !c.passed) {
+                        ++said;
+                        CHECK_MESSAGE(c.message.find(cause.text) != std::string::npos, c.name << " does not say \"" << cause.text
+                                                                                              << "\": " << c.message);
+                    }
+                CHECK_MESSAGE(said >= 1, m.id << ": no failing check starts with " << cause.checks);
+            }
         const std::string where = "(lab " + std::to_string(m.lab) + ", " + m.function + ")";
         int named = 0, failing = 0;
         std::string seen;

@@ -1,8 +1,10 @@
 // The reports say the same as the grade: Gradescope's JSON, JUnit XML and the HTML page.
 #include "support/files.h"
 #include "support/run_program.h"
+#include "grader/course/glossary_links.h"
 #include "grader/course/grade_reports.h"
 #include "grader/sandbox/process.h"
+#include "src/messages.h"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
@@ -104,6 +106,41 @@ TEST_CASE("index.html shows the score, the verdicts, the hints and the heat map"
     CHECK(html.find("your image matches &apos;v flipped&apos;") != std::string::npos);
     CHECK(html.find("images/lab2_directions.diff.png") != std::string::npos);
     CHECK(fs::exists(folder / "images" / "lab2_directions.diff.png"));
+}
+
+TEST_CASE("the console links each term of the glossary once, at its first use, in the reader's language") {
+    GradeResult r = sampleResult();
+    r.figures[0].reason = "12 pixels differ by more than 1 LSB, up to 9 LSB";
+    FigureOutcome noisy = r.figures[0];
+    noisy.id = "lab5_antialiased";
+    noisy.reason = "too noisy: RMSE 3.1 LSB";
+    r.figures.push_back(noisy);
+    const Language before = language();
+    setLanguage(Language::En);
+    const std::string english = terminalSummary(r);
+    CHECK_MESSAGE(english.find("up to 9 LSB (see docs/glossary.md#lsb)\n") != std::string::npos, english);
+    CHECK_MESSAGE(english.find("RMSE 3.1 LSB (see docs/glossary.md#rmse)\n") != std::string::npos, english);
+    CHECK_MESSAGE(english.find("#lsb") == english.rfind("#lsb"), english); // once per run
+    setLanguage(Language::Fr);
+    const std::string french = terminalSummary(r);
+    CHECK_MESSAGE(french.find("(voir docs/glossaire.md#lsb)") != std::string::npos, french);
+    // Two new terms on one line share one parenthesis; a longer word is not the term.
+    setLanguage(Language::En);
+    CHECK(withGlossaryLinks("RMSE 2 LSB\nLSBs and NaNs\nNaN") ==
+          "RMSE 2 LSB (see docs/glossary.md#lsb, docs/glossary.md#rmse)\nLSBs and NaNs\nNaN (see docs/glossary.md#nan)");
+    setLanguage(before);
+}
+
+TEST_CASE("every term the console links has its section in both glossaries") {
+    for (const Language language : {Language::En, Language::Fr}) {
+        const fs::path glossary = fs::path(RAYLAB_SOURCE_DIR) / tr(language, "glossary.file");
+        REQUIRE_MESSAGE(fs::is_regular_file(glossary), glossary);
+        const std::string text = readFile(glossary);
+        for (const auto& [term, anchor] : glossaryTerms()) {
+            CHECK_MESSAGE(text.find("<a id=\"" + anchor + "\"></a>\n## ") != std::string::npos, glossary << ": " << anchor);
+            CHECK_MESSAGE(text.find(term) != std::string::npos, glossary << ": " << term);
+        }
+    }
 }
 
 } // TEST_SUITE

@@ -5,6 +5,8 @@
 #include "support/files.h"
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include "raylab/image_io.h"
 #include "support/run_program.h"
 
@@ -222,6 +224,14 @@ TEST_CASE("a re-run keeps the student's text: in place, rendered in the HTML, es
     CHECK(again.find("## Kept from the previous version") != std::string::npos);
     CHECK(again.find("A conclusion written after every marker.") > again.find("<!-- raylab:student kept -->"));
     CHECK(readFile(dir / "report.previous.md") == md);
+    // The console says what moved, from where, and to which section of which file.
+    const std::string output = readFile(dir / "output.txt");
+    const std::string file = (dir / "report.md").string();
+    const auto conclusion = std::count(md.begin(), md.begin() + std::ptrdiff_t(md.find("A conclusion")), '\n') + 1;
+    CHECK_MESSAGE(output.find(file + ": 1 piece of your text moved to the section \"Kept from the previous version\" at its end") !=
+                      std::string::npos, output);
+    CHECK_MESSAGE(output.find(file + ":" + std::to_string(conclusion) + ": text outside the raylab:student markers\n") !=
+                      std::string::npos, output);
     // The HTML shows the student's Markdown, as HTML, and their markup as text.
     CHECK(html.find("the camera <em>looks</em> down <strong>-z</strong>; see <code>generateRay</code>") != std::string::npos);
     CHECK(html.find("<li>one</li>") != std::string::npos);

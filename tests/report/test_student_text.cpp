@@ -4,6 +4,7 @@
 
 #include "report/student_text.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,42 @@ TEST_CASE("student text: an edit inside a generated part is kept; CRLF line ends
     const std::string kept = section(rerun(md), kKeptKey);
     CHECK(kept.find("Your edit of the generated part `lab1`") != std::string::npos);
     CHECK(kept.find("A remark under the figure.") != std::string::npos);
+}
+
+TEST_CASE("student text: what moves to the kept section is told, with its line and section, in the report's language") {
+    std::string md = rerun("");
+    md += "<!-- raylab:student lab9 -->\nA lab that is gone.\n<!-- raylab:end -->\n";
+    replace(md, "render time: 0.002 s\n", "render time: 0.002 s\nMy remark.\n");
+    md += "\nA last paragraph.\n";
+    const auto lineOf = [&](const std::string& text) {
+        return std::to_string(std::count(md.begin(), md.begin() + std::ptrdiff_t(md.find(text)), '\n') + 1);
+    };
+    std::vector<UnplacedText> moved;
+    const std::string again = toMarkdown(placeStudentText(freshDocument(), readPreviousText(md, kWords), kWords, &moved));
+    REQUIRE(moved.size() == 3);
+    const std::string notice = movedTextNotice(moved, "out/report.md", kWords);
+    CHECK_MESSAGE(notice.find("out/report.md: 3 pieces of your text moved to the section \"Kept from the previous version\"") == 0,
+                  notice);
+    CHECK_MESSAGE(notice.find("move them where they belong:\n") != std::string::npos, notice);
+    CHECK_MESSAGE(notice.find("  out/report.md:" + lineOf("<!-- raylab:student lab9") + ": your section `lab9`, which the report no longer has\n") !=
+                      std::string::npos, notice);
+    CHECK_MESSAGE(notice.find("  out/report.md:" + lineOf("<!-- raylab:generated lab2") + ": your edit inside the generated part `lab2`\n") !=
+                      std::string::npos, notice);
+    CHECK_MESSAGE(notice.find("  out/report.md:" + lineOf("A last paragraph") + ": text outside the raylab:student markers\n") !=
+                      std::string::npos, notice);
+    const std::string french = movedTextNotice(moved, "out/report.md", wordsFor("fr"));
+    CHECK_MESSAGE(french.find("3 morceaux de votre texte déplacés dans la section «\u00A0Conservé de la version précédente\u00A0»") !=
+                      std::string::npos, french);
+    CHECK_MESSAGE(french.find("out/report.md:" + lineOf("A last paragraph") + "\u00A0: du texte hors des marqueurs") !=
+                      std::string::npos, french);
+    // A second run moves nothing more: the kept section is the student's now; nothing to tell.
+    std::vector<UnplacedText> movedAgain;
+    placeStudentText(freshDocument(), readPreviousText(again, kWords), kWords, &movedAgain);
+    CHECK(movedAgain.empty());
+    CHECK(movedTextNotice(movedAgain, "out/report.md", kWords).empty());
+    // One piece: singular.
+    const std::vector<UnplacedText> one(moved.begin(), moved.begin() + 1);
+    CHECK(movedTextNotice(one, "r.md", kWords).find("r.md: 1 piece of your text moved") == 0);
 }
 
 }

@@ -1,5 +1,7 @@
 #include "grader/course/grade_reports.h"
 
+#include "grader/course/glossary_links.h"
+
 #include "grader/judge/checks/checks.h"
 
 #include "src/atomic_file.h"
@@ -209,7 +211,7 @@ std::string terminalSummary(const GradeResult& result) {
     }
     for (const std::string& p : result.problems) out << "  " << tr("report.problem", {{"problem", p}}) << "\n";
     out << "  " << tr("report.total", {{"score", number(result.score())}, {"max", number(result.maxScore())}}) << "\n";
-    return printableText(out.str()); // no escape sequence of a message reaches the terminal
+    return printableText(withGlossaryLinks(out.str())); // no escape sequence of a message reaches the terminal
 }
 
 } // namespace raylab::grader

@@ -99,14 +99,24 @@ void expectRays(Judge& judge, const Camera& c, const SeenViewport& viewport, con
         const std::string what = tr("what.lab2.ray_direction_at", {{"point", p.name}});
         judge.expectNear(tr("what.lab2.ray_origin_at", {{"point", p.name}}), o.vec3(), c.position, 1e-6,
                          tr("hint.lab2.ray_origin"));
+        const glm::dvec3 direction = o.vec3();
+        // A viewport with no size (zero, not finite) is not inherited: the rays are judged against the right one.
+        const bool ownViewport = viewport.right || !viewport.sized;
+        const glm::dvec3 expected = ownViewport ? c.direction(p.sx, p.sy)
+                                                : Camera::direction(p.sx, p.sy, viewport.height, viewport.width);
+        // The right way but not unit length: the normalisation is missing, not sx or sy.
+        const double length = glm::length(direction);
+        const bool notUnit =
+            length > 0. && std::abs(length - 1.) > 1e-5 && glm::length(direction / length - expected) <= 1e-5;
+        const std::string unitHint = tr("hint.lab2.not_unit", {{"length", show(length)}});
         if (viewport.right)
-            judge.expectNear(what, o.vec3(), c.direction(p.sx, p.sy), 1e-5, hint);
+            judge.expectNear(what, direction, expected, 1e-5, notUnit ? unitHint : hint);
         else if (!viewport.sized)
-            judge.expectNear(what, o.vec3(), c.direction(p.sx, p.sy), 1e-5,
+            judge.expectNear(what, direction, expected, 1e-5,
                              tr("hint.lab2.no_viewport", {{"height", show(viewport.height)}, {"width", show(viewport.width)}}));
         else
-            judge.expectNear(tr("what.lab2.through_viewport", {{"what", what}}), o.vec3(),
-                             Camera::direction(p.sx, p.sy, viewport.height, viewport.width), 1e-5, inherited);
+            judge.expectNear(tr("what.lab2.through_viewport", {{"what", what}}), direction, expected, 1e-5,
+                             notUnit ? unitHint : inherited);
     }
 }
 

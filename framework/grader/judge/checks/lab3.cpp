@@ -204,25 +204,49 @@ protocol::Call normalCall(const Sphere& s, const glm::dvec3& point) {
     return {Probe::ComputeNormal, in};
 }
 
-// Cosine shading reads the normal from the student's computeNormal: the check also asks that
-// function at the true hit, so that a Li right for a wrong normal is sent to computeNormal, not
-// told to fix its own formula.
+// What Li returns for the hit (or miss) `intersect` gave: the background, or the shading at that hit
+// with the true normal there.
+glm::dvec3 liForHit(const LiCase& c, bool found, double t) {
+    if (!found) return c.background;
+    if (c.shading == kFlat) return c.colour;
+    const glm::dvec3 d = glm::normalize(c.ray.direction);
+    glm::dvec3 n =
+        c.shading == kCosine ? glm::normalize(c.ray.at(t) - c.sphere.centre) : glm::normalize(glm::dvec3(1.));
+    if (c.shading == kPlaceholder && glm::dot(d, n) > 0.) n = -n;
+    return c.colour * std::max(-glm::dot(d, n), 0.);
+}
+
+// Li calls the student's intersect, and cosine shading their computeNormal: the check also asks
+// intersect for each ray, and computeNormal at the true hit, so that a Li right for a wrong hit or a
+// wrong normal is sent to that function, not told to fix its own formula.
 void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<LiCase> cases) {
     std::vector<protocol::Call> calls;
     for (const LiCase& c : cases)
         calls.push_back(liCall(c.shading, c.sphere, c.colour, c.background, c.ray));
+    const std::size_t hitsAt = calls.size(); // intersect's answer for case k is at hitsAt + k
+    for (const LiCase& c : cases) calls.push_back(call(Case{"", c.sphere, c.ray, 0., kInf, -1., 1e-5, ""}));
     std::vector<std::size_t> normalAt(cases.size(), 0); // the normal call of a cosine hit, else 0
     for (std::size_t k = 0; k < cases.size(); ++k)
         if (const std::optional<double> t = nearestHit(cases[k].sphere, cases[k].ray); t && cases[k].shading == kCosine) {
             normalAt[k] = calls.size();
             calls.push_back(normalCall(cases[k].sphere, CaseRandom::asFloat(cases[k].ray.at(*t))));
         }
-    checks.push_back({3, name, calls, [cases, normalAt](const auto& out, Judge& judge) {
+    checks.push_back({3, name, calls, [cases, normalAt, hitsAt](const auto& out, Judge& judge) {
                           for (std::size_t k = 0; k < cases.size(); ++k) {
                               const LiCase& c = cases[k];
                               const glm::dvec3 got = Outputs(out[k]).vec3();
                               std::string hint = c.hint;
-                              if (normalAt[k] != 0) {
+                              Outputs hit(out[hitsAt + k]);
+                              const bool found = hit.number() != 0.;
+                              const double t = hit.number();
+                              const std::optional<double> trueT = nearestHit(c.sphere, c.ray);
+                              const bool hitWrong = found != trueT.has_value() ||
+                                                    (found && std::abs(t - *trueT) > 1e-4 * std::max(1., *trueT));
+                              if (hitWrong && withinEach(got, liForHit(c, found, t), c.tolerance))
+                                  hint = tr("hint.lab3.li_through_intersect",
+                                            {{"got", found ? "t = " + show(t) : tr("what.lab3.no_hit")},
+                                             {"expected", trueT ? "t = " + show(*trueT) : tr("what.lab3.no_hit")}});
+                              else if (normalAt[k] != 0) {
                                   const glm::dvec3 n = Outputs(out[normalAt[k]]).vec3(),
                                                    d = glm::normalize(c.ray.direction);
                                   const glm::dvec3 forTheirNormal = c.colour * std::max(-glm::dot(d, n), 0.);
