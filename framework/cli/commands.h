@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -67,6 +68,9 @@ inline constexpr int kMaxThreads = 1024;
 CLI::Validator threadCount();
 // A number of seconds: positive and finite (--timeout).
 CLI::Validator positiveSeconds();
+// An integer in [low, high], shown "low..high" in the help (CLI11's own says "INT in [low - high]"
+// after the type, which the help already gives).
+CLI::Validator integerIn(std::int64_t low, std::int64_t high);
 
 // A command that times renders (bench, bench-effects): --impl, --threads, --scenes and --repeats
 // (renders per measurement, `repeats` unless given); `run(scenes, threads, repeats)` is its exit status.

@@ -49,6 +49,10 @@ CLI::Validator positiveSeconds() {
         "SECONDS > 0");
 }
 
+CLI::Validator integerIn(std::int64_t low, std::int64_t high) {
+    return CLI::Range(low, high).description(std::to_string(low) + ".." + std::to_string(high));
+}
+
 void Context::addRenderOptions(CLI::App* command) {
     command->add_option("--threads", threads, tr("cli.threads"))->check(threadCount());
     command->add_option("--scenes", scenes, tr("cli.scenes"))->check(CLI::ExistingDirectory);
@@ -65,7 +69,7 @@ void addTimingCommand(CLI::App& app, Context& context, const std::string& name, 
     CLI::App* command = app.add_subcommand(name, description);
     context.addImplOption(command);
     command->add_option("--repeats", *repeatsOption, tr("cli.bench_repeats"))
-        ->check(CLI::Range(1, 100));
+        ->check(integerIn(1, 100));
     context.addRenderOptions(command);
     command->callback([&context, repeatsOption, run] {
         if (!context.ranInOtherImpl()) context.exitStatus = run(context.scenes, context.threads, *repeatsOption);

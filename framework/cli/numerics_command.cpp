@@ -50,8 +50,8 @@ int runMeasurements(const std::vector<Measurement>& measurements, const Numerics
 
 void addOptions(CLI::App* command, NumericsOptions& o, Context& context) {
     command->add_option("--out", o.out, tr("cli.numerics_out"));
-    command->add_option("--rays", o.study.rays, tr("cli.numerics_rays"))->check(CLI::Range(100, 100000000));
-    command->add_option("--repeats", o.study.repeats, tr("cli.numerics_repeats"))->check(CLI::Range(1, 1000));
+    command->add_option("--rays", o.study.rays, tr("cli.numerics_rays"))->check(integerIn(100, 100000000));
+    command->add_option("--repeats", o.study.repeats, tr("cli.numerics_repeats"))->check(integerIn(1, 1000));
     context.addImplOption(command);
 }
 
@@ -63,7 +63,7 @@ void addNumericsCommands(CLI::App& app, Context& context) {
     CLI::App* numerics = app.add_subcommand("numerics", tr("cli.numerics"));
     addOptions(numerics, *all, context);
     numerics->add_option("--max-samples", all->study.maxSamples, tr("cli.numerics_max_samples"))
-        ->check(CLI::Range(std::int64_t(1000), std::int64_t(1) << 31));
+        ->check(integerIn(1000, std::int64_t(1) << 31));
     numerics->callback([&context, all] {
         if (context.ranInOtherImpl()) return;
         context.exitStatus = runMeasurements(

@@ -17,7 +17,7 @@ void addStudyAntialiasingCommand(CLI::App& app, Context& context) {
     CLI::App* command = study->add_subcommand("antialiasing", tr("cli.study_antialiasing"));
     command->add_option("--out", *out, tr("cli.study_out"));
     command->add_flag("--quick", o->quick, tr("cli.study_quick"));
-    command->add_option("--repeats", o->repeats, tr("cli.study_repeats"))->check(CLI::Range(1, 50));
+    command->add_option("--repeats", o->repeats, tr("cli.study_repeats"))->check(integerIn(1, 50));
     context.addImplOption(command);
     context.addRenderOptions(command);
     command->callback([&context, o, out] {

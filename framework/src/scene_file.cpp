@@ -1,6 +1,7 @@
 #include "src/scene_file.h"
 
 #include "raylab/integrator_registry.h"
+#include "src/messages.h"
 #include "src/text.h"
 
 #include <toml++/toml.h>
@@ -242,7 +243,7 @@ std::string_view pictureName(Picture picture) {
 
 SceneDescription loadSceneFile(const std::filesystem::path& file) {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(file, error)) throw SceneError(file.string() + ": no such scene file");
+    if (!std::filesystem::is_regular_file(file, error)) throw SceneError(tr("figures.no_scene_file", {{"file", file.string()}}));
     toml::table root;
     try {
         root = toml::parse_file(file.string());
@@ -302,7 +303,7 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
 
 std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folder) {
     std::error_code error;
-    if (!std::filesystem::is_directory(folder, error)) throw SceneError(folder.string() + ": no such scene folder");
+    if (!std::filesystem::is_directory(folder, error)) throw SceneError(tr("figures.no_scene_folder", {{"folder", folder.string()}}));
     std::vector<SceneDescription> scenes;
     for (const auto& entry : std::filesystem::directory_iterator(folder))
         if (entry.path().extension() == ".toml") scenes.push_back(loadSceneFile(entry.path()));

@@ -6,6 +6,7 @@
 #include "support/files.h"
 #include "grader/course/autograder.h"
 #include "grader/course/grade_reports.h"
+#include "src/messages.h"
 #include "grading_support.h"
 
 #include <nlohmann/json.hpp>
@@ -538,6 +539,31 @@ TEST_CASE("one item alone: its lab, its verdict and points; an unknown name is r
     CHECK(one.labs[0].maxPoints == 2.);
     CHECK_FALSE(onlyItem(r, "a").allPassed());
     CHECK_THROWS(onlyItem(r, "c"));
+}
+
+TEST_CASE("results.json speaks the grade's language: the items' names, the total and each lab's points") {
+    GradeResult r;
+    r.checks.push_back({3, "intersect: a ray through the centre hits the near side", true, "", 2., 2.});
+    r.figures.push_back({});
+    r.figures.back().lab = 3;
+    r.figures.back().id = "lab3_flat";
+    r.figures.back().maxPoints = 2.;
+    r.labs.push_back({3, 2., 4., {}});
+    const fs::path file = kRoot / "language.results.json";
+    const auto written = [&](raylab::Language language) {
+        raylab::setLanguage(language);
+        writeGradescopeJson(r, file);
+        return nlohmann::json::parse(readFile(file));
+    };
+    const nlohmann::json fr = written(raylab::Language::Fr);
+    const nlohmann::json en = written(raylab::Language::En);
+    const std::string nbsp = "\u00A0";
+    CHECK(fr["tests"][0]["name"] == "TP 3" + nbsp + ": intersect" + nbsp + ": un rayon par le centre touche la face avant");
+    CHECK(fr["tests"][1]["name"] == "TP 3" + nbsp + ": figure lab3_flat");
+    CHECK(fr["output"].get<std::string>().rfind("total" + nbsp + ": 2 / 4\nTP 3" + nbsp + ": 2 / 4 points\n", 0) == 0);
+    CHECK(en["tests"][0]["name"] == "lab3: intersect: a ray through the centre hits the near side");
+    CHECK(en["tests"][1]["name"] == "lab3: figure lab3_flat");
+    CHECK(en["output"].get<std::string>().rfind("total: 2 / 4\nlab 3: 2 / 4 points\n", 0) == 0);
 }
 
 TEST_CASE("GitHub Classroom: points that are not whole numbers are refused, naming the item") {

@@ -239,6 +239,9 @@ TEST_CASE("the options' value types are named in French") {
     CHECK_MESSAGE(has(help, "ENTIER:0..1024"), help); // --threads
     CHECK_MESSAGE(has(help, "ENTIER:POSITIF"), help); // --lab
     checkNoCli11English(help);
+    const std::string bench = run({"--lang", "fr", "bench", "--help"});
+    CHECK_MESSAGE(has(bench, "--repeats ENTIER:1..100 "), bench); // the type once, then the range
+    CHECK_MESSAGE(!has(bench, "ENTIER:ENTIER"), bench);
     checkNoCli11English(run({"--lang", "fr", "report", "--help"}));
     checkNoCli11English(run({"--lang", "fr", "render", "--help"}));
     const std::string english = run({"--lang", "en", "grade", "--help"});
@@ -266,6 +269,8 @@ TEST_CASE("argument errors in French keep the option's name and the value") {
         {{"frobnicate", "--lang", "fr"}, "commande inconnue «" + nbsp + "frobnicate" + nbsp + "»"},
         {{"figures", "--threads", "5000", "--lang", "fr"}, "5000 fils, c'est plus que raylab n'en lance" + nbsp + ": au plus 1024"},
         {{"grade", "--timeout", "nan", "--lang", "fr"}, "«" + nbsp + "nan" + nbsp + "» n'est pas une limite de temps"},
+        {{"bench", "--repeats", "0", "--lang", "fr"}, "--repeats" + nbsp + ": 0 n'est pas entre 1 et 100"},
+        {{"render", "/no/such.toml", "--lang", "fr"}, "/no/such.toml" + nbsp + ": ce fichier de scène n'existe pas"},
     };
     for (const Case& c : cases) {
         const std::string output = run(c.args, true);

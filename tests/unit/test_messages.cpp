@@ -171,6 +171,13 @@ TEST_SUITE("messages") {
         CHECK(summary(Language::Fr, 0).rfind("0 figure\u00A0: 0 rendue,", 0) == 0);
         CHECK(summary(Language::Fr, 1).rfind("1 figure\u00A0: 1 rendue,", 0) == 0);
         CHECK(summary(Language::Fr, 2).rfind("2 figures\u00A0: 2 rendues,", 0) == 0);
+        const auto pass = [](Language l, int outliers) {
+            return tr(l, "compare.statistical_pass", {{"bias", "0"}, {"outliers", std::to_string(outliers)}, {"rmse", "1"}});
+        };
+        CHECK(pass(Language::Fr, 0).find(", 0 pixel aberrant, ") != std::string::npos);
+        CHECK(pass(Language::Fr, 3).find(", 3 pixels aberrants, ") != std::string::npos);
+        CHECK(pass(Language::En, 1).find(", 1 outlier, ") != std::string::npos);
+        CHECK(pass(Language::En, 0).find(", 0 outliers, ") != std::string::npos);
         // Decimals, in each language's way of writing them.
         CHECK(tr(Language::Fr, "report.lab_points", {{"lab", "1"}, {"points", "0,5"}, {"max", "1,5"}}) == "TP 1\u00A0: 0,5 / 1,5 point");
         CHECK(tr(Language::En, "report.lab_points", {{"lab", "1"}, {"points", "0.5"}, {"max", "1.5"}}) == "lab 1: 0.5 / 1.5 points");

@@ -125,13 +125,18 @@ void writeGradescopeJson(const GradeResult& result, const fs::path& file) {
                          {"output", printableText(output)},
                          {"visibility", "visible"}});
     };
+    // Named in the reader's language: "lab3: intersect: ...", "TP 3 : intersect : ...".
+    const auto itemName = [](int lab, const std::string& name) {
+        return tr("report.item", {{"lab", tr("report.lab_short", {{"lab", std::to_string(lab)}})}, {"name", name}});
+    };
     for (const CheckOutcome& c : result.checks)
-        test("lab" + std::to_string(c.lab) + ": " + printableText(c.name), c.points, c.maxPoints, c.passed, c.message);
+        test(itemName(c.lab, printableText(titleInLanguage(c.name))), c.points, c.maxPoints, c.passed, c.message);
     for (const FigureOutcome& f : result.figures)
-        test("lab" + std::to_string(f.lab) + ": figure " + f.id, f.points, f.maxPoints, f.passed, itemOutput(f));
-    std::string output = "Total: " + number(result.score()) + " / " + number(result.maxScore()) + "\n";
+        test(itemName(f.lab, tr("report.figure_item", {{"id", f.id}})), f.points, f.maxPoints, f.passed, itemOutput(f));
+    std::string output = tr("report.total", {{"score", number(result.score())}, {"max", number(result.maxScore())}}) + "\n";
     for (const LabOutcome& lab : result.labs) {
-        output += "lab " + std::to_string(lab.lab) + ": " + number(lab.points) + " / " + number(lab.maxPoints) + "\n";
+        output += tr("report.lab_points", {{"lab", std::to_string(lab.lab)}, {"points", number(lab.points)},
+                                           {"max", number(lab.maxPoints)}}) + "\n";
         for (const std::string& n : lab.notes) output += "  " + n + "\n";
     }
     for (const std::string& p : result.problems) output += p + "\n";
