@@ -65,7 +65,7 @@ void checkCommand(const fs::path& tree, const std::vector<std::string>& command,
         std::vector<std::string> help{RAYLAB_PROGRAM};
         help.insert(help.end(), command.begin() + 1, command.end());
         help.push_back("--help");
-        const auto run = raylab::test::runProgram(help, fs::temp_directory_path() / "raylab-readme-help.txt");
+        const auto run = raylab::test::runProgram(help, raylab::test::scratchPath("raylab-readme-help.txt"));
         CHECK_MESSAGE(run.status == 0, run.output);
     } else if (command[0] == "cmake") {
         REQUIRE(command.size() == 4);
@@ -86,9 +86,9 @@ void checkCommand(const fs::path& tree, const std::vector<std::string>& command,
 TEST_SUITE("distribute readme") {
 
 TEST_CASE("the students' README and LISEZMOI: their tree, their commands, no solutions") {
-    const fs::path tree = fs::temp_directory_path() / "raylab-distribute-readme";
+    const fs::path tree = raylab::test::scratchPath("raylab-distribute-readme");
     fs::remove_all(tree);
-    const fs::path output = fs::temp_directory_path() / "raylab-distribute-readme.txt";
+    const fs::path output = raylab::test::scratchPath("raylab-distribute-readme.txt");
     const auto distributed = raylab::test::runProgram({RAYLAB_PROGRAM, "distribute", tree.string(), "--lang", "en"}, output);
     REQUIRE_MESSAGE(distributed.status == 0, distributed.output);
     for (const char* name : {"README.md", "LISEZMOI.md"}) {

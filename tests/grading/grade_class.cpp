@@ -28,7 +28,7 @@ int gradeClass(const fs::path& classDir, const fs::path& out, const fs::path& bu
 }
 
 fs::path makeClass(const std::string& name) {
-    const fs::path root = fs::temp_directory_path() / name;
+    const fs::path root = raylab::test::scratchPath(name);
     fs::remove_all(root);
     fs::create_directories(root / "class");
     fs::copy(sourceDir() / "solutions", root / "class" / "alice", fs::copy_options::recursive);
@@ -124,7 +124,7 @@ TEST_CASE("grade-class builds and grades each student in its own folder: hostile
 
 TEST_CASE("grade-class takes uploads as students make them: the files flat, odd extra names, a labs/ link to "
           "solutions/ earns 0 and says why, a lab that does not compile costs that lab only") {
-    const fs::path root = fs::temp_directory_path() / "raylab-class-uploads";
+    const fs::path root = raylab::test::scratchPath("raylab-class-uploads");
     fs::remove_all(root);
     const fs::path flat = root / "class" / "flat", odd = root / "class" / "odd", linked = root / "class" / "linked",
                    broken = root / "class" / "broken";

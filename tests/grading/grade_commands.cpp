@@ -123,7 +123,7 @@ TEST_CASE("grade writes index.html, results.json and junit.xml that agree") {
 }
 
 TEST_CASE("distribute writes a tree without the solutions, with the references") {
-    const fs::path out = fs::temp_directory_path() / "raylab-distribute-test";
+    const fs::path out = raylab::test::scratchPath("raylab-distribute-test");
     fs::remove_all(out);
     const ProgramRun run = runRaylab({"distribute", out.string()});
     CHECK_MESSAGE(run.status == 0, run.output);

@@ -4,6 +4,7 @@
 // dependency file is checked, a second wall: no object and one refusal line. An honest file compiles
 // in both; a compiler that runs past the wall-clock limit is stopped whole.
 #include "grader/sandbox/sandbox.h"
+#include "support/files.h"
 #include "support/run_program.h"
 
 #include <doctest/doctest.h>
@@ -27,7 +28,7 @@ namespace {
 struct Folders {
     fs::path root, submission, secret;
     Folders() {
-        root = fs::temp_directory_path() / "raylab-guard-test";
+        root = raylab::test::scratchPath("raylab-guard-test");
         fs::remove_all(root);
         submission = root / "submission";
         secret = root / "solutions";

@@ -5,6 +5,7 @@
 #include "grader/course/run_scratch.h"
 #include "src/csv.h"
 #include "src/text.h"
+#include "support/files.h"
 #include "support/read_csv.h"
 
 #include <doctest/doctest.h>
@@ -121,7 +122,7 @@ TEST_CASE("problem summaries: the first line and three error lines, cut at a wor
 TEST_SUITE("class run") {
 
 TEST_CASE("scratch folders: a dead run's is removed; a live run's, and a folder that is no run's, are kept") {
-    const fs::path temporary = fs::temp_directory_path() / "raylab-unit-scratch";
+    const fs::path temporary = raylab::test::scratchPath("raylab-unit-scratch");
     fs::remove_all(temporary);
     fs::create_directories(temporary / "raylab-class-not-a-run" / "inside"); // a user's or a test's folder
     fs::create_directories(temporary / "raylab-class-dead");

@@ -1,6 +1,7 @@
 // runProcess: an argument vector, never a shell, so an argument reaches the program as it is; a
 // program past its time limit is killed rather than waited for. POSIX programs (printf, sleep).
 #include "grader/sandbox/process.h"
+#include "support/files.h"
 
 #include <doctest/doctest.h>
 
@@ -57,7 +58,7 @@ TEST_CASE("argumentPointers: each argument's characters, then a null pointer") {
 }
 
 TEST_CASE("findProgram: the first executable file of that name in PATH, else nothing") {
-    const fs::path folder = fs::temp_directory_path() / "raylab-find-program";
+    const fs::path folder = raylab::test::scratchPath("raylab-find-program");
     fs::remove_all(folder);
     fs::create_directories(folder / "a");
     fs::create_directories(folder / "b");

@@ -47,7 +47,7 @@ GradeResult sampleResult() {
 TEST_SUITE("reports") {
 
 TEST_CASE("results.json is Gradescope's format, item by item") {
-    const fs::path folder = fs::temp_directory_path() / "raylab-report-test";
+    const fs::path folder = raylab::test::scratchPath("raylab-report-test");
     fs::remove_all(folder);
     const ReferenceSet references;
     writeReports(sampleResult(), references, folder);
@@ -66,7 +66,7 @@ TEST_CASE("results.json is Gradescope's format, item by item") {
 }
 
 TEST_CASE("junit.xml has a test case per item and escapes the text") {
-    const fs::path folder = fs::temp_directory_path() / "raylab-report-test-junit";
+    const fs::path folder = raylab::test::scratchPath("raylab-report-test-junit");
     fs::remove_all(folder);
     writeReports(sampleResult(), ReferenceSet{}, folder);
     const std::string xml = readFile(folder / "junit.xml");
@@ -76,7 +76,7 @@ TEST_CASE("junit.xml has a test case per item and escapes the text") {
 }
 
 TEST_CASE("junit.xml parses with a real XML parser when a message holds control characters and bytes that are not UTF-8") {
-    const fs::path folder = fs::temp_directory_path() / "raylab-report-test-junit-control";
+    const fs::path folder = raylab::test::scratchPath("raylab-report-test-junit-control");
     fs::remove_all(folder);
     GradeResult r = sampleResult();
     r.title = "raylab grade bad\xFEname";
@@ -98,7 +98,7 @@ TEST_CASE("junit.xml parses with a real XML parser when a message holds control 
 }
 
 TEST_CASE("index.html shows the score, the verdicts, the hints and the heat map") {
-    const fs::path folder = fs::temp_directory_path() / "raylab-report-test-html";
+    const fs::path folder = raylab::test::scratchPath("raylab-report-test-html");
     fs::remove_all(folder);
     writeReports(sampleResult(), ReferenceSet{}, folder);
     const std::string html = readFile(folder / "index.html");

@@ -3,6 +3,7 @@
 // file outside its scratch folder. Each test runs with bubblewrap and without it (the process-group
 // sandbox), except those only bubblewrap promises, which say so when it is missing.
 #include "grader/sandbox/sandbox.h"
+#include "support/files.h"
 
 #include <doctest/doctest.h>
 
@@ -48,7 +49,7 @@ std::vector<bool> sandboxes() {
 }
 
 fs::path scratchFor(const std::string& mode, bool bubblewrap) {
-    return fs::temp_directory_path() / ("raylab-sandbox-test-" + mode + (bubblewrap ? "-bwrap" : "-group"));
+    return raylab::test::scratchPath("raylab-sandbox-test-" + mode + (bubblewrap ? "-bwrap" : "-group"));
 }
 
 AgentRun probe(const std::string& mode, bool bubblewrap, SandboxLimits limits = {}, std::vector<std::string> args = {},
@@ -301,7 +302,7 @@ TEST_CASE("bubblewrap: nothing outside its scratch folder can be read, written o
         MESSAGE("SKIPPED: bubblewrap is not installed (apt install bubblewrap)");
         return;
     }
-    const fs::path root = fs::temp_directory_path() / "raylab-sandbox-escape";
+    const fs::path root = raylab::test::scratchPath("raylab-sandbox-escape");
     fs::remove_all(root);
     fs::create_directories(root / "sibling");
     fs::create_directories(root / "references");
@@ -347,7 +348,7 @@ TEST_CASE("a stderr.txt replaced with a FIFO does not block the grader: the run 
 }
 
 TEST_CASE("without bubblewrap, a stderr.txt hard-linked to a file of the grader's is neither read nor cut") {
-    const fs::path secret = fs::temp_directory_path() / "raylab-sandbox-test-secret.txt";
+    const fs::path secret = raylab::test::scratchPath("raylab-sandbox-test-secret.txt");
     std::string text;
     for (int k = 0; k < 4000; ++k) text += "secret line number " + std::to_string(k) + " of the grader's\n"; // > the kept size
     std::ofstream(secret, std::ios::binary) << text;

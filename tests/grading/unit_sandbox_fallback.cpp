@@ -5,6 +5,7 @@
 // Each test also runs the probe in the process group (as root), which does all of it: the probe
 // sees what the test claims.
 #include "grader/sandbox/sandbox.h"
+#include "support/files.h"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
@@ -47,7 +48,7 @@ private:
 
 // A grader's folders: its results folder (root's, 0755) and a secret in a folder only root can read.
 struct GraderFolders {
-    fs::path root = fs::temp_directory_path() / "raylab-fallback-test";
+    fs::path root = raylab::test::scratchPath("raylab-fallback-test");
     fs::path results = root / "results", secret = root / "private" / "secret.txt", scratch = root / "scratch";
     GraderFolders() {
         fs::remove_all(root);

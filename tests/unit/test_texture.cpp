@@ -1,5 +1,6 @@
 #include "raylab/image_io.h"
 #include "raylab/texture.h"
+#include "support/files.h"
 
 #include <doctest/doctest.h>
 
@@ -65,7 +66,7 @@ TEST_CASE("a PNG written is read back byte for byte") {
     for (int j = 0; j < 3; ++j)
         for (int i = 0; i < 5; ++i) t.setPixel(i, j, Color(i / 4.f, j / 2.f, 0.3f));
     const Image8 written = quantize(t);
-    const auto file = std::filesystem::temp_directory_path() / "raylab_test_roundtrip.png";
+    const auto file = raylab::test::scratchPath("raylab_test_roundtrip.png");
     writePng(file, written);
     const Image8 read = readImage(file);
     CHECK(read.width == 5);
@@ -76,7 +77,7 @@ TEST_CASE("a PNG written is read back byte for byte") {
 
 TEST_CASE("reading a missing or broken image names the file") {
     CHECK_THROWS_WITH(readImage("no/such/file.png"), "no/such/file.png: no such file");
-    const auto file = std::filesystem::temp_directory_path() / "raylab_test_broken.png";
+    const auto file = raylab::test::scratchPath("raylab_test_broken.png");
     { std::ofstream(file) << "not a png"; }
     CHECK_THROWS_WITH(readImage(file), doctest::Contains("not a readable image"));
     std::filesystem::remove(file);
