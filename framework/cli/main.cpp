@@ -13,8 +13,12 @@
 #include <string>
 #include <string_view>
 #ifdef _WIN32
+#ifndef WIN32_LEAN_AND_MEAN
 #define WIN32_LEAN_AND_MEAN
+#endif
+#ifndef NOMINMAX // libstdc++ defines it (MinGW)
 #define NOMINMAX
+#endif
 #include <windows.h>
 #endif
 
