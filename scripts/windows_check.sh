@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The students' tree on Windows, checked on Linux (issue 25): `raylab distribute` writes it, MinGW-w64
 # cross-builds it (cmake/toolchains/mingw-w64.cmake) and Wine runs it, headless:
-#   raylab lab 1 on the stubs       the not-done-yet line, exit status 0
+#   raylab lab 1 on the stubs       the not-done-yet line, exit status 0; in French on a French Windows
 #   figures and grade, solutions    10 figures rendered, 75 / 75
 #   an endless loop in lab 1        its check stopped at the time limit, every other point kept
 #   a crash in lab 2                its checks failed as crashed, the other labs' points kept
@@ -76,6 +76,17 @@ wineboot --init >/dev/null 2>&1 || true
 step "raylab lab 1 on the stubs"
 winrun lab 1
 expect "raylab lab 1" 0 "$status" "$output" "lab 1 not done yet: write fillGradient in labs/lab1_first_image/gradient.cpp"
+
+step "raylab lab 1 in French, from Windows' display language alone (no LANG, LC_ALL nor LC_MESSAGES)"
+# Wine takes its display language from this LC_ALL; cmd removes the variables from what raylab.exe sees.
+set +e
+output=$(cd "$tree" && LC_ALL=fr_FR.UTF-8 timeout 600 wine cmd /c \
+  'set LC_ALL=&& set LANG=&& set LC_MESSAGES=&& build\bin\raylab.exe lab 1' 2>&1)
+status=$?
+set -e
+printf '%s\n' "$output"
+expect "raylab lab 1 (French Windows)" 0 "$status" "$output" \
+  "TP 1 pas encore écrit" "écrivez fillGradient dans labs/lab1_first_image/gradient.cpp"
 
 step "the solutions: raylab figures, raylab grade"
 for lab in "$root"/solutions/lab*/; do
