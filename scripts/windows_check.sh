@@ -11,7 +11,9 @@
 #
 # Needs: apt-get install g++-mingw-w64-x86-64-posix libz-mingw-w64-dev wine wine64 (.ci/run does it).
 # Wine has no Windows CMake: after each change of labs/ the tree is rebuilt here, on Linux, as a
-# student's IDE would, so that `raylab grade` finds its programs fresh and rebuilds nothing.
+# student's IDE would, so that raylab finds its programs fresh and starts no CMake (each run is checked
+# for it). Under Wine, raylab's rebuild would start Linux's CMake, which Wine runs without waiting for
+# its end: raylab would grade the old programs while CMake rebuilds them.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 raylab=${1:-$root/build/bin/raylab}
@@ -47,6 +49,7 @@ winrun() {
   status=$?
   set -e
   printf '%s\n' "$output" | grep -v '^  PASS' || true
+  if grep -qF "changed since the last build" <<<"$output"; then fail "raylab $*: it found its build stale"; fi
 }
 
 # No agent still running (Wine shows one as Z:\...\raylab-agent.exe; nothing else runs them under Wine here).
