@@ -167,6 +167,8 @@ endif()
 add_library(raylab_warnings INTERFACE)
 if(MSVC)
   target_compile_options(raylab_warnings INTERFACE /W4 /permissive-)
+  # getenv, fopen, localtime: the standard functions, which MSVC's /W4 calls unsafe (C4996).
+  target_compile_definitions(raylab_warnings INTERFACE _CRT_SECURE_NO_WARNINGS)
   # All sources and messages are UTF-8 (the French catalogue, the labs' comments): every target's.
   add_compile_options(/utf-8)
 else()
