@@ -33,6 +33,13 @@ macro(raylab_pkg_check prefix)
   endif()
 endmacro()
 
+# Where the header-only libraries are looked for when the system has no CMake package of them:
+# third_party/<name>/include, or another folder of the same shape (the MinGW toolchain's view of the
+# build machine's headers, cmake/toolchains/mingw-w64.cmake).
+if(NOT RAYLAB_THIRD_PARTY_DIR)
+  set(RAYLAB_THIRD_PARTY_DIR ${CMAKE_SOURCE_DIR}/third_party)
+endif()
+
 # Where each header-only library was found, for `raylab autograder` to copy into third_party/: lines
 # of framework/cli/third_party_sources.h (generated below).
 set(RAYLAB_THIRD_PARTY_ENTRIES "")
@@ -63,7 +70,7 @@ function(raylab_header_library name package target header what debian homebrew v
   if(NOT TARGET ${target})
     find_package(${package} CONFIG QUIET)
   endif()
-  set(bundled ${CMAKE_SOURCE_DIR}/third_party/${name}/include)
+  set(bundled ${RAYLAB_THIRD_PARTY_DIR}/${name}/include)
   if(TARGET ${target})
     get_target_property(hints ${target} INTERFACE_INCLUDE_DIRECTORIES)
     find_path(RAYLAB_HEADERS_${name} ${header} HINTS ${hints} NO_CACHE)
@@ -72,7 +79,7 @@ function(raylab_header_library name package target header what debian homebrew v
     add_library(${target} INTERFACE IMPORTED GLOBAL)
     set_target_properties(${target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${bundled})
     set(include_dir ${bundled})
-    message(STATUS "raylab: ${what} from third_party/${name}")
+    message(STATUS "raylab: ${what} from ${bundled}")
   else()
     raylab_missing("${what}" ${debian} ${homebrew} ${vcpkg})
   endif()
@@ -93,8 +100,8 @@ raylab_header_library(nlohmann_json nlohmann_json nlohmann_json::nlohmann_json n
 # PNG writer's deflate (docs/performance.md).
 raylab_pkg_check(STB stb)
 find_path(STB_INCLUDE_DIR stb_image_write.h HINTS ${STB_INCLUDE_DIRS} PATH_SUFFIXES stb)
-if(NOT STB_INCLUDE_DIR AND EXISTS ${CMAKE_SOURCE_DIR}/third_party/stb/include/stb_image_write.h)
-  set(STB_INCLUDE_DIR ${CMAKE_SOURCE_DIR}/third_party/stb/include CACHE PATH "stb's headers" FORCE)
+if(NOT STB_INCLUDE_DIR AND EXISTS ${RAYLAB_THIRD_PARTY_DIR}/stb/include/stb_image_write.h)
+  set(STB_INCLUDE_DIR ${RAYLAB_THIRD_PARTY_DIR}/stb/include CACHE PATH "stb's headers" FORCE)
   message(STATUS "raylab: stb (image files) from third_party/stb")
 endif()
 if(NOT STB_INCLUDE_DIR)
@@ -112,7 +119,16 @@ target_link_libraries(raylab_stb PRIVATE ZLIB::ZLIB)
 configure_file(${CMAKE_CURRENT_LIST_DIR}/third_party_sources.h.in ${CMAKE_BINARY_DIR}/generated/third_party_sources.h
                @ONLY)
 
-if(NOT RAYLAB_GRADING_ONLY)
+# The two compiled libraries of the tools, each for one command that a build may go without (where the
+# library has no package, as with MinGW on Debian: cmake/toolchains/mingw-w64.cmake).
+option(RAYLAB_REPORT "Build raylab report, the lab report kit (needs cmark)" ON)
+option(RAYLAB_GRADESCOPE_ZIP "Build raylab autograder gradescope (needs libzip)" ON)
+if(BUILD_TESTING AND NOT (RAYLAB_REPORT AND RAYLAB_GRADESCOPE_ZIP))
+  message(FATAL_ERROR "The tests need raylab report and raylab autograder gradescope: configure with "
+                      "-DBUILD_TESTING=OFF, or with RAYLAB_REPORT and RAYLAB_GRADESCOPE_ZIP ON")
+endif()
+
+if(NOT RAYLAB_GRADING_ONLY AND RAYLAB_REPORT)
   # cmark (the report's Markdown to HTML): pkg-config first, since Debian's libcmark-dev ships a CMake
   # package that also wants the cmark program; elsewhere its CMake package.
   raylab_pkg_check(CMARK IMPORTED_TARGET libcmark)
@@ -120,10 +136,17 @@ if(NOT RAYLAB_GRADING_ONLY)
   if(CMARK_FOUND)
     target_link_libraries(raylab_cmark INTERFACE PkgConfig::CMARK)
   else()
-    raylab_require_package(cmark cmark::cmark "cmark (the report's Markdown)" libcmark-dev cmark cmark)
-    target_link_libraries(raylab_cmark INTERFACE cmark::cmark)
+    find_package(cmark CONFIG QUIET)
+    if(TARGET cmark::cmark_static AND NOT TARGET cmark::cmark) # vcpkg's static cmark (x64-windows-static)
+      target_link_libraries(raylab_cmark INTERFACE cmark::cmark_static)
+    else()
+      raylab_require_package(cmark cmark::cmark "cmark (the report's Markdown)" libcmark-dev cmark cmark)
+      target_link_libraries(raylab_cmark INTERFACE cmark::cmark)
+    endif()
   endif()
+endif()
 
+if(NOT RAYLAB_GRADING_ONLY AND RAYLAB_GRADESCOPE_ZIP)
   # libzip: `raylab autograder gradescope` writes Gradescope's zip with it. Found by pkg-config:
   # Debian's CMake package for it names programs (zipcmp ...) that libzip-dev does not install.
   raylab_pkg_check(LIBZIP IMPORTED_TARGET GLOBAL libzip)
@@ -144,6 +167,10 @@ endif()
 add_library(raylab_warnings INTERFACE)
 if(MSVC)
   target_compile_options(raylab_warnings INTERFACE /W4 /permissive-)
+  # getenv, fopen, localtime: the standard functions, which MSVC's /W4 calls unsafe (C4996).
+  target_compile_definitions(raylab_warnings INTERFACE _CRT_SECURE_NO_WARNINGS)
+  # All sources and messages are UTF-8 (the French catalogue, the labs' comments): every target's.
+  add_compile_options(/utf-8)
 else()
   target_compile_options(raylab_warnings INTERFACE -Wall -Wextra -Wpedantic)
   # __FILE__ relative to the source tree: "lab 2 not done yet: write ... in labs/lab2_.../file.cpp:12".

@@ -36,6 +36,7 @@ namespace fs = std::filesystem;
 using namespace raylab::grader;
 
 #ifndef RAYLAB_GRADING_ONLY // the instructors' side: a grading-only build has neither libzip nor distribute
+#ifndef RAYLAB_NO_GRADESCOPE_ZIP // left out where libzip is missing (RAYLAB_GRADESCOPE_ZIP)
 // The header-only libraries this program was built with, as third_party/<name>/ of the tree it writes
 // (include/ and the licence): Gradescope's Ubuntu 22.04 lacks toml++, and the zip's setup.sh installs
 // nothing but a compiler, CMake, make and zlib (cmake/RaylabDependencies.cmake takes them from there).
@@ -100,6 +101,7 @@ int writeGradescopeZip(const fs::path& zip, const Context& context) {
     std::printf("%s\n", tr("autograder.zip_written", {{"zip", zip.string()}, {"files", std::to_string(entries.size() - 2)}}).c_str());
     return 0;
 }
+#endif
 
 int writeClassroomTree(const fs::path& out, const Context& context) {
     const LabCatalog catalog = loadLabCatalog(labsFolder(), context.scenes);
@@ -231,11 +233,13 @@ void addAutograderCommand(CLI::App& app, Context& context) {
     autograder->require_subcommand(1);
 
 #ifndef RAYLAB_GRADING_ONLY
+#ifndef RAYLAB_NO_GRADESCOPE_ZIP
     auto zip = std::make_shared<std::string>();
     CLI::App* gradescope =
         autograder->add_subcommand("gradescope", tr("cli.autograder_gradescope"));
     gradescope->add_option(tr("cli.type.FILE") + ".zip", *zip, tr("cli.autograder_zip"))->required();
     gradescope->callback([&context, zip] { context.exitStatus = writeGradescopeZip(*zip, context); });
+#endif
 
     auto out = std::make_shared<std::string>();
     CLI::App* github = autograder->add_subcommand("github", tr("cli.autograder_github"));

@@ -79,7 +79,9 @@ FreshBuild ensureFreshBuild(const Context& context, const fs::path& program, con
     const std::string file = fs::relative(changed, build::kSourceDir).generic_string();
 #ifdef _WIN32
     if (runningProgram) { // a running program's file cannot be replaced
-        std::fprintf(stderr, "%s\n", tr("cli.error", {{"what", tr("cli.stale_build", {{"file", file}, {"build", build::kBuildDir}})}}).c_str());
+        const std::string stale =
+            tr("cli.stale_build", {{"file", file}, {"build", build::kBuildDir}, {"config", build::kBuildType}});
+        std::fprintf(stderr, "%s\n", tr("cli.error", {{"what", stale}}).c_str());
         return FreshBuild::Stale;
     }
 #endif

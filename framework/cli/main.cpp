@@ -12,6 +12,15 @@
 #include <regex>
 #include <string>
 #include <string_view>
+#ifdef _WIN32
+#ifndef WIN32_LEAN_AND_MEAN
+#define WIN32_LEAN_AND_MEAN
+#endif
+#ifndef NOMINMAX // libstdc++ defines it (MinGW)
+#define NOMINMAX
+#endif
+#include <windows.h>
+#endif
 
 namespace {
 
@@ -144,6 +153,9 @@ void chooseLanguage(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     using namespace raylab;
+#ifdef _WIN32
+    SetConsoleOutputCP(CP_UTF8); // the catalogues' French is UTF-8 (the console's code page is not)
+#endif
     chooseLanguage(argc, argv);
     CLI::App app{tr("cli.program", {{"impl", tr(std::string("figures.impl_") + build::kImpl)}, {"origins", build::kLabOrigins}})};
     sayHelpInLanguage(app);
@@ -169,7 +181,9 @@ int main(int argc, char** argv) {
 #ifdef RAYLAB_HAVE_NUMERICS
     cli::addNumericsCommands(app, context);
 #endif
+#ifndef RAYLAB_NO_REPORT // left out where cmark is missing (RAYLAB_REPORT)
     cli::addReportCommand(app, context);
+#endif
 #endif
     groupHelpFlags(app);
     if (const std::string absent = instructorsOnlyCommand(argc, argv); !absent.empty()) {

@@ -7,13 +7,18 @@
 #include <random>
 #include <stdexcept>
 #include <string>
-#include <unistd.h>
 
 namespace raylab::report {
 
 namespace fs = std::filesystem;
 
 namespace {
+
+// file:///C:/out/report.html on Windows, file:///home/... elsewhere.
+std::string fileUrl(const fs::path& file) {
+    const std::string path = fs::absolute(file).generic_string();
+    return (path.front() == '/' ? "file://" : "file:///") + path;
+}
 
 bool isPdf(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -25,17 +30,9 @@ bool isPdf(const fs::path& file) {
 } // namespace
 
 std::optional<fs::path> findChromium() {
-    const char* path = std::getenv("PATH");
-    std::string folders = path ? path : "/usr/bin:/bin";
-    for (std::size_t begin = 0, end = 0; begin <= folders.size(); begin = end + 1) {
-        end = folders.find(':', begin);
-        if (end == std::string::npos) end = folders.size();
-        for (const char* name : {"chromium", "chromium-browser", "google-chrome", "google-chrome-stable"}) {
-            const fs::path candidate = fs::path(folders.substr(begin, end - begin)) / name;
-            std::error_code e;
-            if (fs::is_regular_file(candidate, e) && access(candidate.c_str(), X_OK) == 0) return candidate;
-        }
-    }
+    for (const char* name :
+         {"chromium", "chromium-browser", "google-chrome", "google-chrome-stable", "chrome", "msedge"})
+        if (fs::path found = grader::findProgram(name); !found.empty()) return found;
     return std::nullopt;
 }
 
@@ -48,8 +45,8 @@ void printToPdf(const fs::path& chromium, const fs::path& html, const fs::path& 
     const grader::ProcessResult printed = grader::runProcess(
         {chromium.string(), "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
          "--disable-component-update", "--no-first-run", "--user-data-dir=" + profile.string(), "--no-pdf-header-footer",
-         "--print-to-pdf=" + partial.string(), "file://" + fs::absolute(html).string()},
-        {{}, "/dev/null", 120.});
+         "--print-to-pdf=" + partial.string(), fileUrl(html)},
+        {{}, grader::kNullDevice, 120.});
     std::error_code ignored;
     fs::remove_all(profile, ignored);
     if (!printed.started) throw std::runtime_error(printed.error);

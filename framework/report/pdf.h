@@ -8,7 +8,7 @@
 
 namespace raylab::report {
 
-// chromium (or chromium-browser, google-chrome) on the PATH; none when there is none.
+// chromium (or chromium-browser, google-chrome; chrome or msedge on Windows) on the PATH; none when there is none.
 std::optional<std::filesystem::path> findChromium();
 
 // Prints `html` to `pdf`; throws std::runtime_error when chromium fails or writes no PDF.

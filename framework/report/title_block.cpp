@@ -23,7 +23,11 @@ std::string where(const std::filesystem::path& file, const toml::source_region& 
 std::string today() {
     const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
     std::tm local{};
+#ifdef _WIN32
+    localtime_s(&local, &now); // Windows' localtime_r, its arguments swapped
+#else
     localtime_r(&now, &local);
+#endif
     char text[16];
     std::strftime(text, sizeof text, "%Y-%m-%d", &local);
     return text;

@@ -6,12 +6,22 @@
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
+#ifdef _WIN32
+#ifndef WIN32_LEAN_AND_MEAN
+#define WIN32_LEAN_AND_MEAN
+#endif
+#ifndef NOMINMAX // libstdc++ defines it (MinGW)
+#define NOMINMAX
+#endif
+#include <windows.h>
+#endif
 
 namespace raylab {
 
-// The catalogues' text, generated from framework/messages/*.toml (framework/CMakeLists.txt).
-extern const char* const kMessagesEn;
-extern const char* const kMessagesFr;
+// The catalogues' text, generated from framework/messages/*.toml (framework/CMakeLists.txt): parts
+// to join, then a null pointer.
+extern const char* const kMessagesEn[];
+extern const char* const kMessagesFr[];
 
 namespace {
 
@@ -29,10 +39,10 @@ void flatten(const toml::table& table, const std::string& prefix, std::map<std::
     }
 }
 
-std::map<std::string, std::string> parseCatalogue(const char* text, const char* name) {
+std::map<std::string, std::string> parseCatalogue(const char* const* parts, const char* name) {
     std::map<std::string, std::string> out;
     try {
-        flatten(toml::parse(text), "", out);
+        flatten(toml::parse(joinedText(parts)), "", out);
     } catch (const toml::parse_error& e) {
         throw std::logic_error(std::string("message catalogue ") + name + ": " + std::string(e.description()));
     }
@@ -40,6 +50,12 @@ std::map<std::string, std::string> parseCatalogue(const char* text, const char* 
 }
 
 } // namespace
+
+std::string joinedText(const char* const* parts) {
+    std::string text;
+    for (; *parts != nullptr; ++parts) text += *parts;
+    return text;
+}
 
 Language language() { return chosenLanguage() ? *chosenLanguage() : languageFromEnvironment(); }
 
@@ -58,6 +74,10 @@ Language languageFromEnvironment() {
         const std::string_view v(value);
         return v == "fr" || v.substr(0, 3) == "fr_" || v.substr(0, 3) == "fr." ? Language::Fr : Language::En;
     }
+#ifdef _WIN32
+    // A French Windows sets none of these: its user's display language says it.
+    if (PRIMARYLANGID(GetUserDefaultUILanguage()) == LANG_FRENCH) return Language::Fr;
+#endif
     return Language::En;
 }
 

@@ -19,7 +19,8 @@ Language language();
 void setLanguage(Language language);
 // "en" or "fr"; nullopt for anything else.
 std::optional<Language> parseLanguage(std::string_view name);
-// LC_ALL, else LC_MESSAGES, else LANG, the first one set: fr_* (or "fr") gives French, anything else English.
+// LC_ALL, else LC_MESSAGES, else LANG, the first one set: fr_* (or "fr") gives French, anything else
+// English. With none set, on Windows, the user's display language (French or not); elsewhere English.
 Language languageFromEnvironment();
 const char* languageCode(Language language); // "en", "fr"
 
@@ -37,6 +38,9 @@ std::string titleInLanguage(const std::string& name);
 
 // A language's whole catalogue: id -> text (for the tests).
 const std::map<std::string, std::string>& messageCatalogue(Language language);
+
+// Text embedded in parts (cmake/RaylabEmbedText.cmake: parts, then a null pointer), joined.
+std::string joinedText(const char* const* parts);
 
 // A number in `significant` digits, shortest form ("%g"), with the language's decimal separator.
 std::string formatNumber(double value, int significant = 4);

@@ -145,7 +145,7 @@ TEST_SUITE("docs links") {
         std::ofstream(dir / "top.md") << "[sub](sub/page.md) [root](/sub/there.png) [space](sub/no%20such.png)\n";
         std::vector<std::string> found;
         for (const fs::path& f : markdownFiles(dir))
-            for (const BrokenLink& b : brokenLinks(dir, f)) found.push_back(b.file.string() + ":" + std::to_string(b.line) + ":" + b.target);
+            for (const BrokenLink& b : brokenLinks(dir, f)) found.push_back(b.file.generic_string() + ":" + std::to_string(b.line) + ":" + b.target);
         fs::remove_all(dir);
         const std::vector<std::string> expected{"sub/page.md:7:missing.md", "sub/page.md:7:gone.png",
                                                 "sub/page.md:8:../absent/index.html", "sub/page.md:9:../nope.md",

@@ -10,6 +10,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
@@ -17,6 +19,11 @@
 #include <string>
 
 using namespace raylab;
+
+namespace raylab { // the catalogues as compiled in (framework/messages/messages.cpp.in)
+extern const char* const kMessagesEn[];
+extern const char* const kMessagesFr[];
+} // namespace raylab
 
 namespace {
 
@@ -63,6 +70,25 @@ struct LanguageScope {
 } // namespace
 
 TEST_SUITE("messages") {
+    TEST_CASE("each catalogue is compiled in parts a compiler accepts, cut after a line, that join into the file") {
+        const std::pair<const char* const*, const char*> catalogues[] = {{kMessagesEn, "en.toml"},
+                                                                          {kMessagesFr, "fr.toml"}};
+        for (const auto& [parts, name] : catalogues) {
+            std::size_t count = 0;
+            for (const char* const* part = parts; *part != nullptr; ++part, ++count) {
+                const std::string_view text(*part);
+                // cmake/RaylabEmbedText.cmake's limit; MSVC's is 16,380 bytes a literal.
+                CHECK_MESSAGE(text.size() <= 12000, name << " part " << count << ": " << text.size() << " bytes");
+                CHECK_MESSAGE((!text.empty() && text.back() == '\n'), name << " part " << count << " ends in a line");
+            }
+            CHECK_MESSAGE(count > 1, name); // both catalogues are over 12,000 bytes
+            std::ifstream file(std::filesystem::path(RAYLAB_MESSAGES_DIR) / name, std::ios::binary);
+            const std::string whole{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+            REQUIRE(!whole.empty());
+            CHECK_MESSAGE(joinedText(parts) == whole, name);
+        }
+    }
+
     TEST_CASE("every message id has both languages, with the same placeholders") {
         const auto& en = messageCatalogue(Language::En);
         const auto& fr = messageCatalogue(Language::Fr);

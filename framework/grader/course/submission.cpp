@@ -130,7 +130,9 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
         configure.push_back("-DCMAKE_CXX_COMPILER_LAUNCHER=" + launcher);
     if (!tools.generator.empty() && !fs::exists(buildDir / "CMakeCache.txt", error))
         configure.insert(configure.end(), {"-G", tools.generator});
-    std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--target", "raylab-agents", "-j", "2"};
+    // --config: a multi-configuration generator (Visual Studio) would build Debug otherwise.
+    std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--config", "Release",
+                                   "--target", "raylab-agents", "-j", "2"};
     if (tools.generator.find("Ninja") != std::string::npos) build.insert(build.end(), {"--", "-k", "0"});
     else if (tools.generator.find("Makefiles") != std::string::npos) build.insert(build.end(), {"--", "-k"});
     fs::remove(b.log, error);

@@ -106,12 +106,17 @@ std::wstring quoteArgument(const std::wstring& arg) {
 
 } // namespace
 
-ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOptions& options) {
-    ProcessResult result;
-    if (argv.empty()) return result;
+std::wstring windowsCommandLine(const std::vector<std::string>& argv) {
     std::wstring commandLine;
     for (const std::string& a : argv)
         commandLine += (commandLine.empty() ? L"" : L" ") + quoteArgument(std::filesystem::path(a).wstring());
+    return commandLine;
+}
+
+ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOptions& options) {
+    ProcessResult result;
+    if (argv.empty()) return result;
+    std::wstring commandLine = windowsCommandLine(argv);
     SECURITY_ATTRIBUTES inherit{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
     HANDLE out = INVALID_HANDLE_VALUE;
     STARTUPINFOW startup{};

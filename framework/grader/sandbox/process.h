@@ -9,6 +9,13 @@
 
 namespace raylab::grader {
 
+// Where output nobody reads goes.
+#ifdef _WIN32
+inline const char* const kNullDevice = "NUL";
+#else
+inline const char* const kNullDevice = "/dev/null";
+#endif
+
 struct ProcessOptions {
     std::filesystem::path workingDirectory; // empty: ours
     std::filesystem::path output;           // stdout and stderr are appended here; empty: ours
@@ -29,6 +36,11 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOpti
 
 // The program `name` as the PATH search finds it (`name.exe` on Windows); empty when it is not there.
 std::filesystem::path findProgram(const std::string& name);
+
+#ifdef _WIN32
+// `argv` as one Windows command line that CommandLineToArgvW splits back into `argv` (no shell).
+std::wstring windowsCommandLine(const std::vector<std::string>& argv);
+#endif
 
 // `args` as exec and spawn take them: a pointer to each argument's characters, then a null pointer
 // (valid while `args` lives unchanged).

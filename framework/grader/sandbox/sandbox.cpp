@@ -1,5 +1,6 @@
 #include "grader/sandbox/sandbox.h"
 
+#include "grader/sandbox/job_object.h"
 #include "grader/sandbox/process.h"
 #include "grader/sandbox/sandbox_internal.h"
 #include "grader/sandbox/scratch_file.h"
@@ -32,6 +33,14 @@ namespace fs = std::filesystem;
 std::string AgentRun::describe() const {
     std::string text;
     if (timedOut) text = tr("sandbox.timed_out");
+    else if (cpuLimit) text = tr("sandbox.cpu_limit");
+    else if (outputLimit) text = tr("sandbox.output_limit");
+#ifdef _WIN32
+    // What Windows leaves as the exit status of a process that crashed (an NTSTATUS).
+    else if (unsigned(exitCode) == 0xC0000005u || unsigned(exitCode) == 0xC00000FDu) // access violation, stack overflow
+        text = tr("sandbox.segfault");
+    else if (unsigned(exitCode) == 0xC0000409u) text = tr("sandbox.aborted"); // fail-fast: abort() and its like
+#endif
     else if (signal != 0) {
 #ifdef RAYLAB_POSIX_SANDBOX
         if (signal == SIGXCPU) text = tr("sandbox.cpu_limit");
@@ -301,7 +310,7 @@ std::string sandboxKind(const SandboxLimits& limits) {
     return "process group";
 #else
     (void)limits;
-    return "none";
+    return "job object";
 #endif
 }
 
@@ -331,16 +340,14 @@ AgentRun runAgent(const AgentCommand& command, const SandboxLimits& limits) {
 #ifdef RAYLAB_POSIX_SANDBOX
     run = runPosix(c, limits);
 #else
-    (void)limits;
-    const fs::path results = c.scratch / "results.jsonl", requestFile = c.scratch / "requests.jsonl";
-    fs::remove(results);
-    std::ofstream(requestFile, std::ios::binary) << c.requests;
-    std::vector<std::string> argv{c.program.string()};
-    argv.insert(argv.end(), c.args.begin(), c.args.end());
-    argv.insert(argv.end(), {"--request-file", requestFile.string(), "--report-file", results.string()});
-    const ProcessResult ran = runProcess(argv, {c.scratch, c.scratch / "stderr.txt"});
-    run.exitCode = ran.exitCode;
-    const ScratchFile answers = readScratchFile(results, kMaxReportBytes);
+    // Said once a run, as with --no-sandbox on Linux: the instructor must know the code is not confined.
+    static std::once_flag once;
+    std::call_once(once, [] {
+        const std::string said = tr("sandbox.without_bubblewrap", {{"why", tr("sandbox.bubblewrap_not_here")}});
+        std::fprintf(stderr, "%s\n", said.c_str());
+    });
+    run = detail::runInJob(c, limits);
+    const ScratchFile answers = readScratchFile(c.scratch / "results.jsonl", kMaxReportBytes);
     if (answers.refused) run.violations.push_back(tr("sandbox.replaced_output", {{"file", "results.jsonl"}}));
     run.lines = splitLines(answers.text);
 #endif

@@ -15,8 +15,9 @@
 // memory and file size, a wall-clock limit per item, and results read from a pipe the parent
 // opened (its stdout goes to a capped file nobody trusts; what the parent reads back from its scratch
 // folder is read without following links, see scratch_file.h).
-// Windows: a plain child process with a result file and none of these limits (the student's own
-// machine, grading the student's own code).
+// Windows: no bubblewrap, so no confinement of files or network (the grade says so, as with
+// --no-sandbox), but a Job object with the same limits: per item and in all, CPU time, memory and
+// output size, its whole tree killed at the end (job_object.h); results read from a file.
 
 #include <cstddef>
 #include <filesystem>
@@ -55,6 +56,8 @@ struct AgentRun {
     bool timedOut = false;
     int exitCode = -1; // when it exited
     int signal = 0;    // when a signal ended it
+    bool cpuLimit = false;    // Windows: the job used up its CPU time (POSIX: SIGXCPU)
+    bool outputLimit = false; // Windows: it wrote more than SandboxLimits::fileBytes (POSIX: SIGXFSZ)
     std::vector<std::string> violations; // what it tried against the grader ("sent signal 15 to the grader",
                                          // "replaced its output file stderr.txt with a link or a special file")
     std::string stderrTail; // the end of its error output, for the report
@@ -68,7 +71,7 @@ struct AgentRun {
 AgentRun runAgent(const AgentCommand& command, const SandboxLimits& limits);
 
 // How agents are confined with these limits: "bubblewrap", "unprivileged user" (the fallback; with
-// ", no seccomp filter" when built without libseccomp), "process group", or "none" (Windows).
+// ", no seccomp filter" when built without libseccomp), "process group", or "job object" (Windows).
 std::string sandboxKind(const SandboxLimits& limits);
 
 // Why bubblewrap cannot confine agents here, in the reader's language ("bubblewrap is not installed
