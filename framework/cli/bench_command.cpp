@@ -61,7 +61,8 @@ std::optional<double> yardstickSeconds(const SceneDescription& d, const std::vec
 int runBench(const std::filesystem::path& scenes, int threads, int repeats) {
     SceneDescription d = loadSceneFile(scenes / "lab5_antialiased.toml");
     const int allThreads = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-    std::printf("raylab bench: %s, %d x %d, %s sampler, median of %d timings (each of 50 ms at least)\n", d.id.c_str(), d.width, d.height,
+    std::printf("raylab bench: %s, %d x %d, %s sampler, median of %d timings (each of 50 ms at least)\n", d.id.c_str(),
+                d.width, d.height,
                 std::string(samplerName(d.sampler)).c_str(), repeats);
     // What the numbers depend on besides the code: the build and the machine.
     std::printf("  build %s (%s), %s compiler, %u hardware threads, \"all\" = %d\n",

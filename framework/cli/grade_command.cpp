@@ -98,8 +98,8 @@ struct SubmissionPlaces {
 };
 
 // Grades one body of code (this build's labs, a submission, or given agents) into a report.
-GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const Toolchain& tools, const SubmissionPlaces& places,
-                          std::string title) {
+GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const Toolchain& tools,
+                          const SubmissionPlaces& places, std::string title) {
     const fs::path& buildDir = places.buildDir;
     std::vector<AgentPlan> agents;
     bool isolated = false;

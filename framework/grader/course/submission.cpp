@@ -132,9 +132,10 @@ bool buildGradingKit(const Toolchain& tools, const fs::path& sourceDir, const fs
     std::error_code error;
     fs::remove(log, error);
     const ProcessOptions toLog{{}, log};
+    const std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--target",
+                                         "raylab-grading-kit", "-j", "2"};
     return runProcess(configureCommand(tools, sourceDir, buildDir, ""), toLog).succeeded() &&
-           runProcess({tools.cmake, "--build", fs::absolute(buildDir).string(), "--target", "raylab-grading-kit", "-j", "2"}, toLog)
-               .succeeded();
+           runProcess(build, toLog).succeeded();
 }
 
 SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDir, const fs::path& labs,
@@ -149,8 +150,8 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     for (int lab : numbers) fs::remove(labAgent(bin, lab), error);
     const std::vector<std::string> configure =
         configureCommand(tools, sourceDir, buildDir, cmakeSafe(labs, buildDir).generic_string());
-    std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--target", "raylab-submission-agents",
-                                   "-j", "2"};
+    std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--target",
+                                   "raylab-submission-agents", "-j", "2"};
     if (tools.generator.find("Ninja") != std::string::npos) build.insert(build.end(), {"--", "-k", "0"});
     else if (tools.generator.find("Makefiles") != std::string::npos) build.insert(build.end(), {"--", "-k"});
     fs::remove(b.log, error);
