@@ -81,7 +81,7 @@ for step in "${steps[@]}"; do
     # The first student's result follows the framework's build; the others', one student each.
     mapfile -t done_at < <(stat -c %Y "$work"/class-out/students/*/result.json | sort -n)
     echo "  framework built once: $(($(stat -c %Y "$work/class-out/build/grading-kit.log") - $(stat -c %Y "$work/class-out/grade-class.lock"))) s;" \
-      "then $(((done_at[-1] - done_at[0]) / (${#done_at[@]} - 1))) s a student after the first" \
+      "then $(echo "scale=1; (${done_at[-1]} - ${done_at[0]}) / (${#done_at[@]} - 1)" | bc) s a student after the first" \
       "($(( ${#done_at[@]} )) graded; grades in $work/class-out/grades.csv)"
     ;;
   bench)
