@@ -91,9 +91,16 @@ int gradeImageFolder(const GradeOptions& o, const Context& context) {
     return found > 0 && failed == 0 ? 0 : 1;
 }
 
+// Where a submission is copied and its build's output written: in its build folder, or, in a class,
+// whose build folder every student shares, in the student's own folder.
+struct SubmissionPlaces {
+    fs::path buildDir, copy, log;
+};
+
 // Grades one body of code (this build's labs, a submission, or given agents) into a report.
-GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const Toolchain& tools, const fs::path& buildDir,
-                          std::string title) {
+GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const Toolchain& tools,
+                          const SubmissionPlaces& places, std::string title) {
+    const fs::path& buildDir = places.buildDir;
     std::vector<AgentPlan> agents;
     bool isolated = false;
     std::vector<int> unbuilt;
@@ -102,7 +109,7 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
         for (const std::string& a : o.agents) agents.push_back({fs::absolute(a), 0});
     } else if (!o.labs.empty()) {
         // The grader's own copy of the lab files, wherever the submission holds them: CMake builds that alone.
-        const SubmissionCopy copy = copySubmission(o.labs, setup.labs, buildDir / "submission");
+        const SubmissionCopy copy = copySubmission(o.labs, setup.labs, places.copy);
         if (copy.labs.empty()) {
             GradeResult result = gradeWithoutLabFiles(setup, copy);
             result.title = std::move(title);
@@ -111,7 +118,8 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
         ignored = ignoredFilesNote(copy, setup.labs);
         std::printf("%s\n", tr("grade.building", {{"labs", o.labs}, {"folder", buildDir.string()}}).c_str());
         std::fflush(stdout);
-        const SubmissionBuild b = buildSubmission(tools, build::kSourceDir, copy.folder, buildDir, setup.labs.numbers());
+        const SubmissionBuild b =
+            buildSubmission(tools, build::kSourceDir, copy.folder, buildDir, setup.labs.numbers(), places.log);
         agents = b.agents;
         isolated = b.isolated;
         unbuilt = b.brokenLabs;
@@ -145,8 +153,8 @@ int gradeLabs(GradeOptions o, const Context& context) {
     const GradeSetup setup = setupFor(o, context, scratch.path());
     if (!o.item.empty()) o.lab = labOfItem(setup.labs, o.item); // its lab is graded, the item alone kept
     const fs::path buildDir = o.buildDir.empty() ? fs::path("out/grade-build") : fs::path(o.buildDir);
-    GradeResult result =
-        gradeCodeOnce(o, setup, toolchain(false), buildDir, "raylab grade " + (o.labs.empty() ? std::string("(labs/)") : o.labs));
+    GradeResult result = gradeCodeOnce(o, setup, toolchain(false), {buildDir, buildDir / "submission", {}},
+                                       "raylab grade " + (o.labs.empty() ? std::string("(labs/)") : o.labs));
     if (!o.item.empty()) result = onlyItem(result, o.item);
     std::printf("%s", terminalSummary(result).c_str());
     writeReports(result, setup.references, o.report);
@@ -214,14 +222,25 @@ int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& contex
     run.runOnlyDescriptors.push_back(scratch.lockDescriptor());
     const GradeSetup setup = setupFor(o, context, scratch.path());
     run.madeBy = resultSettings(o, setup);
+    // One build folder for the class: the framework and the reference labs are compiled once, before
+    // the first student; each student then costs their lab files and the links.
+    const fs::path classBuild = o.buildDir.empty() ? run.out / "build" : fs::path(o.buildDir);
+    if (o.agents.empty())
+        run.beforeFirstStudent = [&] {
+            const fs::path log = classBuild / "grading-kit.log";
+            std::printf("%s\n", tr("grade.building_class_kit", {{"folder", classBuild.string()}}).c_str());
+            std::fflush(stdout);
+            if (!buildGradingKit(toolchain(true), build::kSourceDir, classBuild, log))
+                std::printf("%s\n", tr("grade.class_kit_failed", {{"log", log.string()}}).c_str());
+        };
     const int status = runClass(run, [&](const StudentWork& work) {
         GradeOptions student = o;
         student.labs = work.submission.string();
-        const fs::path buildDir = o.buildDir.empty() ? work.folder / "build" : fs::path(o.buildDir) / work.folder.filename();
         const std::string title = "raylab grade " + printableName(work.name);
         GradeResult result;
         try {
-            result = gradeCodeOnce(student, setup, toolchain(true), buildDir, title);
+            result = gradeCodeOnce(student, setup, toolchain(true),
+                                   {classBuild, work.folder / "submission", work.folder / "build.log"}, title);
         } catch (const std::exception& e) { // one student's trouble never stops the class
             result = gradeBuildFailure(setup, e.what());
             result.title = title;

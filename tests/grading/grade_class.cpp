@@ -19,7 +19,7 @@ namespace {
 
 // Runs grade-class from the class's parent folder (where a command run by mistake would write).
 // Without bubblewrap where this system cannot run it (grade-class refuses otherwise).
-// Each student builds in out/students/<name>/build unless `buildDir` is given.
+// The class builds in out/build unless `buildDir` is given.
 int gradeClass(const fs::path& classDir, const fs::path& out, const fs::path& buildDir = {}) {
     std::vector<std::string> argv{(binDir() / "raylab").string(), "grade-class", classDir.string(), "--out", out.string()};
     if (!buildDir.empty()) argv.insert(argv.end(), {"--build-dir", buildDir.string()});
@@ -76,8 +76,8 @@ TEST_SUITE("class") {
 const std::vector<std::string> kHostileNames{"-dollar$(touch PWNED) back`touch PWNED`tick $HOME",
                                              "double\"single'semi;colon,comma ünicöde 名前\nline", "grades.csv", "build"};
 
-TEST_CASE("grade-class builds and grades each student in its own folder: hostile names are never run as commands, "
-          "each correct solution gets full points, a compile error costs only its labs") {
+TEST_CASE("grade-class builds the framework once and grades each student in its own folder: hostile names are never "
+          "run as commands, each correct solution gets full points, a compile error costs only its labs") {
     const fs::path root = makeClass("raylab-class-full");
     for (const std::string& name : kHostileNames)
         fs::copy(sourceDir() / "solutions", root / "class" / name, fs::copy_options::recursive);
@@ -115,9 +115,22 @@ TEST_CASE("grade-class builds and grades each student in its own folder: hostile
             CHECK(row[8].empty());
         }
     }
-    // Through ccache when it is installed, with paths relative to the folder the sources and builds share.
-    const std::string cache = readFile(root / "out" / "students" / "bob" / "build" / "CMakeCache.txt");
+    // One build folder for the class, through ccache when it is installed (with paths relative to the
+    // folder the sources and builds share); the framework compiled there once, before the first
+    // student: no student's build compiles a framework file, each compiles its own lab files.
+    const std::string cache = readFile(root / "out" / "build" / "CMakeCache.txt");
     CHECK((cache.find("CCACHE_BASEDIR=/") != std::string::npos) == !raylab::grader::findProgram("ccache").empty());
+    const std::string kitLog = readFile(root / "out" / "build" / "grading-kit.log");
+    CHECK(kitLog.find("raylab_framework.dir/src/renderer.cpp") != std::string::npos);
+    for (const char* name : {"alice", "bob"}) {
+        CAPTURE(name);
+        const std::string log = readFile(root / "out" / "students" / name / "build.log");
+        CHECK(log.find("raylab_framework.dir") == std::string::npos);
+        CHECK(log.find("raylab_grader.dir") == std::string::npos);
+        CHECK(log.find("look_at.cpp") != std::string::npos);
+        CHECK_FALSE(fs::exists(root / "out" / "students" / name / "build"));
+    }
+    CHECK(output.find("once for the class") == output.rfind("once for the class")); // built once
     CHECK(fs::exists(root / "out" / "students" / "bob" / "report" / "index.html"));
     CHECK(fs::exists(root / "out" / "students" / "alice" / "report" / "results.json"));
 }

@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 #include <vector>
@@ -148,6 +149,34 @@ TEST_CASE("scratch folders: a dead run's is removed; a live run's, and a folder 
         CHECK(fs::exists(live.path())); // still held by `live`
     }
     fs::remove_all(temporary);
+}
+
+// What the students share (the framework's build) is made once, before the first student to grade,
+// and not at all by a run with nothing to grade; each step appends its line to one file.
+TEST_CASE("a class run prepares once, before the first student it grades, and not when every student is graded") {
+    const fs::path root = fs::temp_directory_path() / "raylab-unit-prepare";
+    fs::remove_all(root);
+    for (const char* name : {"alice", "bob"}) {
+        fs::create_directories(root / "class" / name);
+        std::ofstream(root / "class" / name / "gradient.cpp") << "// work\n";
+    }
+    const fs::path steps = root / "steps.txt";
+    const auto append = [&](const std::string& line) { std::ofstream(steps, std::ios::app) << line << "\n"; };
+    raylab::grader::ClassRunOptions options;
+    options.classFolder = root / "class";
+    options.out = root / "out";
+    options.beforeFirstStudent = [&] { append("prepared"); };
+    const auto grade = [&](const raylab::grader::StudentWork& work) {
+        append(work.name);
+        return raylab::grader::StudentRecord{work.name, {{"total", "1"}}};
+    };
+    REQUIRE(raylab::grader::runClass(options, grade) == 0);
+    std::ifstream first(steps);
+    CHECK(std::string(std::istreambuf_iterator<char>(first), {}) == "prepared\nalice\nbob\n");
+    fs::remove(steps);
+    REQUIRE(raylab::grader::runClass(options, grade) == 0); // both graded: nothing to prepare
+    CHECK_FALSE(fs::exists(steps));
+    fs::remove_all(root);
 }
 
 } // TEST_SUITE

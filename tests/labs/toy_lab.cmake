@@ -13,7 +13,10 @@ foreach(var SOURCE WORK TOY)
   endif()
 endforeach()
 set(tree ${WORK}/tree)
-set(build ${WORK}/build)
+# The build folder inside the tree, as build/ is in the repository: the compiler then sees the same
+# relative paths as the repository's own build, so that ccache (with CCACHE_BASEDIR, .ci/run) reuses
+# its objects of the framework and the grader instead of compiling them again.
+set(build ${tree}/build)
 set(bin ${build}/bin)
 
 set(STEP_PREFIX "toy lab")

@@ -316,24 +316,25 @@ void bindToRun(pid_t run, const std::vector<int>& runOnlyDescriptors) {
     if (getppid() != run) onRunGone(SIGTERM); // the run died before prctl: no signal will come
 }
 
-// The student is graded in a process of its own, in its own process group with every build tool
-// it starts (the agents die with it), so that a stop ends them all and a crash costs one student.
-Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const Settings& madeBy,
-                          const std::vector<int>& runOnlyDescriptors, std::string& why) {
+// `work` runs in a process of its own, in its own process group with every build tool it starts
+// (the agents die with it), so that a stop ends them all and a crash costs one student. Returns the
+// process's wait status, or nothing when it could not start (`why` says so).
+std::optional<int> runInOwnProcess(const std::function<void()>& work, const std::vector<int>& runOnlyDescriptors,
+                                   std::string& why) {
     std::fflush(nullptr); // or the child would print our buffered lines again
     const pid_t run = getpid();
     const pid_t pid = fork();
     if (pid < 0) {
         why = std::string("cannot start a process: ") + std::strerror(errno);
-        return Outcome::Failed;
+        return std::nullopt;
     }
     if (pid == 0) {
         bindToRun(run, runOnlyDescriptors);
         int status = 0;
         try {
-            gradeAndRecord(work, grade, madeBy);
+            work();
         } catch (const std::exception& e) {
-            std::fprintf(stderr, "raylab: error: grading %s: %s\n", printableName(work.name).c_str(), e.what());
+            std::fprintf(stderr, "raylab: error: %s\n", e.what());
             status = 1;
         }
         std::fflush(nullptr);
@@ -348,7 +349,7 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, co
         if (done == pid) break;
         if (done < 0 && errno != EINTR) {
             why = std::string("lost its grading process: ") + std::strerror(errno);
-            return Outcome::Failed;
+            return std::nullopt;
         }
         if (g_stopSignal != 0 && stoppedAt == Clock::time_point{}) {
             stoppedAt = Clock::now();
@@ -359,14 +360,39 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, co
         std::this_thread::sleep_for(std::chrono::milliseconds(20)); // a signal cuts it short
     }
     kill(-pid, SIGKILL); // whatever of its group is left (its pid is not reused while the group lives)
+    return status;
+}
+
+Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const Settings& madeBy,
+                          const std::vector<int>& runOnlyDescriptors, std::string& why) {
+    const std::optional<int> status = runInOwnProcess(
+        [&] {
+            try {
+                gradeAndRecord(work, grade, madeBy);
+            } catch (const std::exception& e) {
+                throw std::runtime_error("grading " + printableName(work.name) + ": " + e.what());
+            }
+        },
+        runOnlyDescriptors, why);
+    if (!status) return Outcome::Failed;
     std::error_code error;
     if (fs::exists(work.folder / kResultFile, error)) return Outcome::Graded; // written whole, even if stopped just after
     if (g_stopSignal != 0) return Outcome::Stopped;
-    why = describeStatus(status);
+    why = describeStatus(*status);
     return Outcome::Failed;
 }
 
 #else
+
+std::optional<int> runInOwnProcess(const std::function<void()>& work, const std::vector<int>&, std::string& why) {
+    try {
+        work();
+        return 0;
+    } catch (const std::exception& e) {
+        why = e.what();
+        return 1;
+    }
+}
 
 Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, const Settings& madeBy, const std::vector<int>&,
                           std::string& why) {
@@ -433,6 +459,7 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
     const ClassEntries entries = listClass(options.classFolder, out);
     for (const std::string& line : entries.skipped) std::printf("%s\n", line.c_str());
     std::vector<std::string> unfinished;
+    bool prepared = false;
     for (const StudentWork& work : entries.students) {
         if (g_stopSignal != 0) break;
         const std::string shown = printableName(work.name);
@@ -444,10 +471,15 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
         if (const auto old = madeOtherwise.find(safe); old != madeOtherwise.end())
             std::printf("%-20s %s\n", shown.c_str(),
                         tr("grade.graded_again", {{"changes", settingsChanged(old->second.madeBy, options.madeBy)}}).c_str());
-        fs::create_directories(work.folder);
         std::string why;
         std::vector<int> runOnly = options.runOnlyDescriptors;
         runOnly.push_back(lock.descriptor());
+        if (options.beforeFirstStudent && !prepared) { // stopped with the run, as a student's grading
+            prepared = true;
+            runInOwnProcess(options.beforeFirstStudent, runOnly, why);
+            if (g_stopSignal != 0) break;
+        }
+        fs::create_directories(work.folder);
         const Outcome outcome = gradeInOwnProcess(work, grade, options.madeBy, runOnly, why);
         if (outcome == Outcome::Stopped) {
             std::printf("%-20s interrupted: not graded (the next run grades them)\n", shown.c_str());

@@ -46,6 +46,10 @@ struct ClassRunOptions {
     // grades.csv until they are.
     Settings madeBy;
     std::vector<int> runOnlyDescriptors; // locks the run holds: each student's process closes them
+    // Run once before the first student to grade (not at all when every student has a result), in a
+    // process of its own that a stop ends as it ends a student's: what the students share, such as
+    // the framework's build.
+    std::function<void()> beforeFirstStudent;
 };
 
 // Grades every student of the class not graded yet. Returns the exit status: 0; 1 when OUT is held

@@ -97,6 +97,23 @@ std::string errorLines(const fs::path& log) {
 // The agent of one lab, built with the other labs from the reference (framework/grader/CMakeLists.txt).
 fs::path labAgent(const fs::path& binDir, int lab) { return agentFile(binDir, "raylab-agent-lab" + std::to_string(lab)); }
 
+// CMake's configuration of a grading build: the agents from `submission` (empty: labs/).
+std::vector<std::string> configureCommand(const Toolchain& tools, const fs::path& sourceDir, const fs::path& buildDir,
+                                          const std::string& submission) {
+    std::vector<std::string> configure{tools.cmake, "-S", fs::absolute(sourceDir).string(), "-B",
+                                       fs::absolute(buildDir).string(), "-DCMAKE_BUILD_TYPE=Release",
+                                       "-DBUILD_TESTING=OFF", "-DRAYLAB_SUBMISSION_DIR=" + submission,
+                                       // Grading needs the same pictures, not their speed: links without
+                                       // link-time optimisation take a fraction of the time.
+                                       "-DRAYLAB_LTO=OFF"};
+    if (const std::string launcher = ccacheLauncher(tools, sourceDir, buildDir); !launcher.empty())
+        configure.push_back("-DCMAKE_CXX_COMPILER_LAUNCHER=" + launcher);
+    std::error_code error;
+    if (!tools.generator.empty() && !fs::exists(buildDir / "CMakeCache.txt", error))
+        configure.insert(configure.end(), {"-G", tools.generator});
+    return configure;
+}
+
 } // namespace
 
 std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>& labs, bool& isolated) {
@@ -110,29 +127,32 @@ std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>
     return agents;
 }
 
+bool buildGradingKit(const Toolchain& tools, const fs::path& sourceDir, const fs::path& buildDir, const fs::path& log) {
+    fs::create_directories(buildDir);
+    std::error_code error;
+    fs::remove(log, error);
+    const ProcessOptions toLog{{}, log};
+    const std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--config",
+                                         "Release", "--target", "raylab-grading-kit", "-j", "2"};
+    return runProcess(configureCommand(tools, sourceDir, buildDir, ""), toLog).succeeded() &&
+           runProcess(build, toLog).succeeded();
+}
+
 SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDir, const fs::path& labs,
-                                const fs::path& buildDir, const std::vector<int>& numbers) {
+                                const fs::path& buildDir, const std::vector<int>& numbers, const fs::path& log) {
     SubmissionBuild b;
     fs::create_directories(buildDir);
-    b.log = fs::absolute(buildDir / "build.log");
+    b.log = fs::absolute(log.empty() ? buildDir / "build.log" : log);
     const fs::path bin = buildDir / "bin";
     // A build folder serves a whole class: the last student's agents must not pass for these.
     std::error_code error;
     fs::remove(agentFile(bin, "raylab-agent"), error);
     for (int lab : numbers) fs::remove(labAgent(bin, lab), error);
-    std::vector<std::string> configure{tools.cmake, "-S", fs::absolute(sourceDir).string(), "-B",
-                                       fs::absolute(buildDir).string(), "-DCMAKE_BUILD_TYPE=Release",
-                                       "-DBUILD_TESTING=OFF", "-DRAYLAB_SUBMISSION_DIR=" + cmakeSafe(labs, buildDir).generic_string(),
-                                       // Grading needs the same pictures, not their speed: links without
-                                       // link-time optimisation take a fraction of the time.
-                                       "-DRAYLAB_LTO=OFF"};
-    if (const std::string launcher = ccacheLauncher(tools, sourceDir, buildDir); !launcher.empty())
-        configure.push_back("-DCMAKE_CXX_COMPILER_LAUNCHER=" + launcher);
-    if (!tools.generator.empty() && !fs::exists(buildDir / "CMakeCache.txt", error))
-        configure.insert(configure.end(), {"-G", tools.generator});
+    const std::vector<std::string> configure =
+        configureCommand(tools, sourceDir, buildDir, cmakeSafe(labs, buildDir).generic_string());
     // --config: a multi-configuration generator (Visual Studio) would build Debug otherwise.
     std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--config", "Release",
-                                   "--target", "raylab-agents", "-j", "2"};
+                                   "--target", "raylab-submission-agents", "-j", "2"};
     if (tools.generator.find("Ninja") != std::string::npos) build.insert(build.end(), {"--", "-k", "0"});
     else if (tools.generator.find("Makefiles") != std::string::npos) build.insert(build.end(), {"--", "-k"});
     fs::remove(b.log, error);
