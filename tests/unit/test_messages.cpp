@@ -81,7 +81,9 @@ TEST_SUITE("messages") {
     }
 
     TEST_CASE("every function check has a French title, and English shows its name") {
-        for (const grader::FunctionCheck& check : grader::functionChecks(1)) {
+        const std::filesystem::path scenes = RAYLAB_SCENES_DIR;
+        const grader::LabCatalog labs = grader::loadLabCatalog(scenes.parent_path().parent_path() / "labs", scenes);
+        for (const grader::FunctionCheck& check : grader::functionChecks(labs, 1)) {
             CHECK(messageCatalogue(Language::Fr).count(std::string(kCheckTitles) + check.name) == 1);
             const LanguageScope english(Language::En);
             CHECK(titleInLanguage(check.name) == check.name);
