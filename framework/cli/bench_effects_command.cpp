@@ -51,7 +51,7 @@ void samples(SceneDescription& d, SamplerKind kind, int n) {
 }
 
 int runBenchEffects(const std::filesystem::path& scenes, int threads, int repeats) {
-    const SceneDescription base = loadSceneFile(scenes / "lab5_antialiased.toml");
+    const SceneDescription base = sceneWithRole(loadSceneFolder(scenes), "bench", scenes);
     const std::vector<Pair> pairs = {
         {"1 centred sample", "1 random sample", [](auto& d) { samples(d, SamplerKind::Center, 1); },
          [](auto& d) { samples(d, SamplerKind::Random, 1); }},

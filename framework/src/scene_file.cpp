@@ -29,6 +29,9 @@ const double kMaxRadius = std::sqrt(kFloatMax);                                 
 // (1.2e37) is still a float.
 constexpr double kMaxCoordinate = 1e18;
 
+// What a tool finds a figure by (SceneDescription::roles).
+constexpr std::string_view kRoles[] = {"bench", "aliased", "antialiased"};
+
 constexpr Picture kPictures[] = {Picture::Gradient, Picture::Directions, Picture::Flat, Picture::PlaceholderNormal,
                                  Picture::Cosine};
 
@@ -240,6 +243,29 @@ std::string_view pictureName(Picture picture) {
     return "?";
 }
 
+namespace {
+
+// [figure] roles = ["bench", ...]: each a role of kRoles, once.
+std::vector<std::string> readRoles(const Reader& r, const toml::table& figure) {
+    const toml::node* node = figure.get("roles");
+    if (node == nullptr) return {};
+    const toml::array* list = node->as_array();
+    std::string known;
+    for (std::string_view k : kRoles) known += (known.empty() ? "" : ", ") + std::string(k);
+    if (list == nullptr) r.fail(node, "[figure] roles", "expected a list of roles (" + known + ")");
+    std::vector<std::string> roles;
+    for (const toml::node& item : *list) {
+        const std::optional<std::string> role = item.value_exact<std::string>();
+        if (!role || std::find(std::begin(kRoles), std::end(kRoles), *role) == std::end(kRoles))
+            r.fail(&item, "[figure] roles", "each role is one of " + known);
+        if (std::find(roles.begin(), roles.end(), *role) != roles.end()) r.fail(&item, "[figure] roles", *role + " is there twice");
+        roles.push_back(*role);
+    }
+    return roles;
+}
+
+} // namespace
+
 SceneDescription loadSceneFile(const std::filesystem::path& file) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(file, error)) throw SceneError(file.string() + ": no such scene file");
@@ -258,8 +284,9 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
     d.id = file.stem().string();
     d.scene.spheres.clear();
     if (const toml::table* t = r.table(root, "figure")) {
-        r.onlyKeys(*t, "[figure] ", {"title"}); // its lab is the one whose lab.toml lists it
+        r.onlyKeys(*t, "[figure] ", {"title", "roles"}); // its lab is the one whose lab.toml lists it
         d.title = r.string(*t, "[figure] ", "title").value_or("");
+        d.roles = readRoles(r, *t);
     }
     if (const toml::table* t = r.table(root, "image")) {
         r.onlyKeys(*t, "[image] ", {"width", "height"});
@@ -298,6 +325,21 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
     if (auto background = r.vec3(root, "", "background")) d.scene.background = *background;
     if (const toml::node* spheres = root.get("sphere")) readSpheres(r, *spheres, d.scene);
     return d;
+}
+
+const SceneDescription& sceneWithRole(const std::vector<SceneDescription>& scenes, std::string_view role,
+                                      const std::filesystem::path& folder) {
+    const SceneDescription* found = nullptr;
+    for (const SceneDescription& d : scenes)
+        if (std::find(d.roles.begin(), d.roles.end(), role) != d.roles.end()) {
+            if (found != nullptr)
+                throw SceneError(d.file.string() + ": [figure] roles: " + std::string(role) + " is also the role of " +
+                                 found->file.string());
+            found = &d;
+        }
+    if (found == nullptr)
+        throw SceneError(folder.string() + ": no scene file has [figure] roles = [\"" + std::string(role) + "\"]");
+    return *found;
 }
 
 std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folder) {

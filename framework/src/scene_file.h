@@ -35,6 +35,9 @@ struct SceneDescription {
     std::filesystem::path file;
     std::string id; // the file name without .toml: the figure id (its lab is the lab.toml that lists it)
     std::string title;
+    // [figure] roles: what a tool finds it by, not its id: "bench" (raylab bench, bench-effects and the
+    // antialiasing study time it), "aliased" and "antialiased" (the report's antialiasing comparison).
+    std::vector<std::string> roles;
     int width = 600;
     int height = 400;
     CameraDescription camera;
@@ -57,6 +60,11 @@ SceneDescription loadSceneFile(const std::filesystem::path& file);
 
 // Every *.toml of a folder, in the order of their id.
 std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folder);
+
+// The one scene of `scenes` (the files of `folder`) with that role; throws SceneError when none has
+// it, or two.
+const SceneDescription& sceneWithRole(const std::vector<SceneDescription>& scenes, std::string_view role,
+                                      const std::filesystem::path& folder);
 
 std::string_view pictureName(Picture picture);
 

@@ -104,7 +104,7 @@ TEST_CASE("errors name the file, the line and the key") {
     CHECK(errorOf("[camera]\nfovy = 60\nzoom = 2\n") ==
           "scene.toml:3: [camera] zoom: unknown key (known keys: position, look_at, up, fovy)");
     // A figure's lab is the lab.toml that lists it, never the scene file.
-    CHECK(errorOf("[figure]\nlab = 4\n") == "scene.toml:2: [figure] lab: unknown key (known keys: title)");
+    CHECK(errorOf("[figure]\nlab = 4\n") == "scene.toml:2: [figure] lab: unknown key (known keys: title, roles)");
     CHECK(errorOf("[image]\nwidth = \"600\"\n") == "scene.toml:2: [image] width: expected an integer, got a string");
     CHECK(errorOf("[image]\nwidth = 0\n") == "scene.toml:2: [image] width: 0 is out of range [1, 16384]");
     CHECK(errorOf("[camera]\nfovy = 180\n") ==
@@ -150,6 +150,23 @@ TEST_CASE("every number is checked against the bounds the float numerics justify
         CAPTURE(radius);
         CHECK(loadText(sphere + radius + "\n").scene.spheres.size() == 1);
     }
+}
+
+TEST_CASE("a figure's roles name it for the tools, not its id: one scene a role") {
+    const auto scenes = loadSceneFolder(RAYLAB_SCENES_DIR);
+    CHECK(sceneWithRole(scenes, "bench", RAYLAB_SCENES_DIR).id == "lab5_antialiased");
+    CHECK(sceneWithRole(scenes, "aliased", RAYLAB_SCENES_DIR).id == "lab3_cosine");
+    CHECK(sceneWithRole(scenes, "antialiased", RAYLAB_SCENES_DIR).id == "lab5_antialiased");
+    CHECK(loadText("[figure]\nroles = [\"aliased\", \"bench\"]\n").roles == std::vector<std::string>{"aliased", "bench"});
+    CHECK(errorOf("[figure]\nroles = [\"speed\"]\n") ==
+          "scene.toml:2: [figure] roles: each role is one of bench, aliased, antialiased");
+    CHECK(errorOf("[figure]\nroles = [\"bench\", \"bench\"]\n") == "scene.toml:2: [figure] roles: bench is there twice");
+    std::vector<SceneDescription> two = {loadText("[figure]\nroles = [\"bench\"]\n", "a.toml"),
+                                         loadText("[figure]\nroles = [\"bench\"]\n", "b.toml")};
+    CHECK_THROWS_WITH_AS(sceneWithRole(two, "bench", "folder"), doctest::Contains("b.toml: [figure] roles: bench is also the role of"),
+                         SceneError);
+    CHECK_THROWS_WITH_AS(sceneWithRole(two, "aliased", "folder"),
+                         "folder: no scene file has [figure] roles = [\"aliased\"]", SceneError);
 }
 
 TEST_CASE("a missing file or folder is named") {

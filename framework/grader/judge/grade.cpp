@@ -229,6 +229,10 @@ GradeSetup loadGradeSetup(const fs::path& references, const fs::path& labs, cons
     setup.mistakes = loadMistakes(references);
     setup.labs = loadLabCatalog(labs, scenes);
     functionChecks(setup.labs, 0); // the checks of the code are those of lab.toml, or it throws naming both places
+    for (const Mistake& m : setup.mistakes) // any number of labs: a mistake's lab is one that lab.toml describes
+        if (setup.labs.lab(m.lab) == nullptr)
+            throw std::runtime_error((references / "mistakes.toml").string() + ": mistake '" + m.id + "' is of lab " +
+                                     std::to_string(m.lab) + ", which no labs/*/lab.toml describes");
     setup.scenes = scenes;
     setup.scratch = scratch;
     return setup;
