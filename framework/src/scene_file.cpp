@@ -32,9 +32,6 @@ constexpr double kMaxCoordinate = 1e18;
 // What a tool finds a figure by (SceneDescription::roles).
 constexpr std::string_view kRoles[] = {"bench", "aliased", "antialiased"};
 
-constexpr Picture kPictures[] = {Picture::Gradient, Picture::Directions, Picture::Flat, Picture::PlaceholderNormal,
-                                 Picture::Cosine};
-
 // Reads one file, naming the file, the line and the key in every error.
 class Reader {
 public:
@@ -231,17 +228,6 @@ void readAdaptive(const Reader& r, const toml::table& render, SceneDescription& 
 
 } // namespace
 
-std::string_view pictureName(Picture picture) {
-    switch (picture) {
-    case Picture::Gradient: return "gradient";
-    case Picture::Directions: return "directions";
-    case Picture::Flat: return "flat";
-    case Picture::PlaceholderNormal: return "placeholder_normal";
-    case Picture::Cosine: return "cosine";
-    case Picture::Registered: return "registered";
-    }
-    return "?";
-}
 
 namespace {
 
@@ -297,18 +283,12 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
     if (const toml::table* t = r.table(root, "render")) {
         r.onlyKeys(*t, "[render] ", {"shading", "samples", "sampler", "seed", "adaptive"});
         if (auto shading = r.string(*t, "[render] ", "shading")) {
-            auto found = std::find_if(std::begin(kPictures), std::end(kPictures),
-                                      [&](Picture p) { return pictureName(p) == *shading; });
-            if (found != std::end(kPictures)) {
-                d.picture = *found;
-            } else if (isRegisteredIntegrator(*shading)) { // a lab's own (integrator_registry.h)
-                d.picture = Picture::Registered;
-                d.integrator = *shading;
-            } else {
-                std::string known = "gradient, directions, flat, placeholder_normal, cosine";
-                for (const std::string& name : registeredIntegratorNames()) known += ", " + name;
+            if (!isRegisteredIntegrator(*shading) && !isRegisteredImage(*shading)) { // registered by the labs
+                std::string known;
+                for (const std::string& name : registeredIntegratorNames()) known += (known.empty() ? "" : ", ") + name;
                 r.fail(t->get("shading"), "[render] shading", "'" + *shading + "' is not one of " + known);
             }
+            d.shading = *shading;
         }
         d.samples = int(r.integer(*t, "[render] ", "samples", 1, kMaxSamples).value_or(1));
         if (auto sampler = r.string(*t, "[render] ", "sampler")) {
