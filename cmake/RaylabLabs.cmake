@@ -64,6 +64,27 @@ foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
 endforeach()
 message(STATUS "raylab labs: ${RAYLAB_LABS}")
 
+# raylab_lab_shadings(TARGET N): TARGET (lab N's code, from wherever) also brings the pictures lab N
+# registers by name outside the student's files (framework/grader/labs/<lab>/shadings.cpp: lab 1's
+# gradient, lab 2's directions, lab 3's shadings; a scene file's [render] shading names one), compiled
+# once, into every program that links TARGET: nothing names their objects, so they are linked whole.
+function(raylab_lab_shadings target n)
+  set(source ${CMAKE_SOURCE_DIR}/framework/grader/labs/${RAYLAB_LAB_FOLDER_${n}}/shadings.cpp)
+  if(NOT EXISTS ${source})
+    return()
+  endif()
+  set(shadings raylab_lab${n}_shadings)
+  if(NOT TARGET ${shadings})
+    add_library(${shadings} OBJECT ${source})
+    target_link_libraries(${shadings} PRIVATE raylab_framework raylab_warnings)
+  endif()
+  target_link_libraries(${target} INTERFACE $<TARGET_OBJECTS:${shadings}>)
+  get_target_property(imported ${target} IMPORTED)
+  if(NOT imported) # built before whatever links TARGET
+    add_dependencies(${target} ${shadings})
+  endif()
+endfunction()
+
 # raylab_lab_target(OUT N ORIGIN): the object library of lab N from ORIGIN (labs or solutions).
 function(raylab_lab_target out n origin)
   set(folder ${RAYLAB_LAB_FOLDER_${n}})
@@ -79,6 +100,7 @@ function(raylab_lab_target out n origin)
       add_library(${target} OBJECT IMPORTED GLOBAL)
       set_target_properties(${target} PROPERTIES IMPORTED_OBJECTS "${objects}")
       target_link_libraries(${target} INTERFACE raylab_framework)
+      raylab_lab_shadings(${target} ${n})
       set(${out} ${target} PARENT_SCOPE)
       return()
     endif()
@@ -87,6 +109,7 @@ function(raylab_lab_target out n origin)
     endif()
     add_library(${target} OBJECT ${sources})
     target_link_libraries(${target} PUBLIC raylab_framework PRIVATE raylab_warnings)
+    raylab_lab_shadings(${target} ${n})
     if(origin STREQUAL "labs")
       # A stub's one-line body ignores its parameters on purpose.
       target_compile_options(${target} PRIVATE $<$<NOT:$<CXX_COMPILER_ID:MSVC>>:-Wno-unused-parameter>)

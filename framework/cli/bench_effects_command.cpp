@@ -51,7 +51,7 @@ void samples(SceneDescription& d, SamplerKind kind, int n) {
 }
 
 int runBenchEffects(const std::filesystem::path& scenes, int threads, int repeats) {
-    const SceneDescription base = loadSceneFile(scenes / "lab5_antialiased.toml");
+    const SceneDescription base = sceneWithRole(loadSceneFolder(scenes), "bench", scenes);
     const std::vector<Pair> pairs = {
         {"1 centred sample", "1 random sample", [](auto& d) { samples(d, SamplerKind::Center, 1); },
          [](auto& d) { samples(d, SamplerKind::Random, 1); }},
@@ -65,13 +65,13 @@ int runBenchEffects(const std::filesystem::path& scenes, int threads, int repeat
              d.adaptive = AdaptiveSettings{0.1f, 256, true, SamplerKind::Stratified};
          },
          [](auto& d) { samples(d, SamplerKind::Stratified, 256); }},
-        {"flat shading", "cosine shading", [](auto& d) { samples(d, SamplerKind::Center, 1), d.picture = Picture::Flat; },
-         [](auto& d) { samples(d, SamplerKind::Center, 1), d.picture = Picture::Cosine; }},
+        {"flat shading", "cosine shading", [](auto& d) { samples(d, SamplerKind::Center, 1), d.shading = "flat"; },
+         [](auto& d) { samples(d, SamplerKind::Center, 1), d.shading = "cosine"; }},
         {"no objects", "one sphere",
          [](auto& d) { samples(d, SamplerKind::Center, 1), d.scene.spheres.clear(); },
          [](auto& d) { samples(d, SamplerKind::Center, 1); }},
-        {"ray directions", "flat shading", [](auto& d) { samples(d, SamplerKind::Center, 1), d.picture = Picture::Directions; },
-         [](auto& d) { samples(d, SamplerKind::Center, 1), d.picture = Picture::Flat; }},
+        {"ray directions", "flat shading", [](auto& d) { samples(d, SamplerKind::Center, 1), d.shading = "directions"; },
+         [](auto& d) { samples(d, SamplerKind::Center, 1), d.shading = "flat"; }},
     };
     std::printf("raylab bench-effects: %s, %d x %d, median of %d renders; \"less\" must not be slower (5%% noise allowed)\n",
                 base.id.c_str(), base.width, base.height, repeats);

@@ -169,7 +169,7 @@ void callOneAtATime(const SceneDescription& d, const RenderOptions& options, int
     for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, onCrash);
     const auto in = [](const char* function) { g_inFunction = function; };
     try {
-        if (d.picture == Picture::Gradient) {
+        if (isRegisteredImage(d.shading)) {
             in("fillGradient");
             renderScene(d, options);
             return;

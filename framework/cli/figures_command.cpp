@@ -47,7 +47,7 @@ bool report(const SceneDescription& d, const FigureResult& r, const std::filesys
     std::uint64_t nonFinite = 0;
     if (!writeFigure(d.id, file, quantize(*r.image, &nonFinite))) return false;
     std::string speed;
-    if (d.picture != Picture::Gradient && r.stats.seconds > 0.)
+    if (!isRegisteredImage(d.shading) && r.stats.seconds > 0.)
         speed = tr("figures.speed", {{"mrays", formatFixed(double(r.stats.primaryRays) / r.stats.seconds * 1e-6, 1)}});
     std::printf("  %-24s %s\n", d.id.c_str(),
                 tr("figures.rendered", {{"seconds", formatFixed(r.stats.seconds, 3)}, {"speed", speed}, {"file", file.string()}})
@@ -118,7 +118,7 @@ int runRender(const std::filesystem::path& scene, std::filesystem::path out, int
     const SceneDescription d = loadSceneFile(scene);
     if (out.empty()) out = std::filesystem::path("out") / (d.id + ".png");
     std::printf("%s\n", tr("figures.render_header", {{"scene", scene.string()}, {"width", std::to_string(d.width)},
-                                                   {"height", std::to_string(d.height)}, {"picture", std::string(pictureName(d.picture))},
+                                                   {"height", std::to_string(d.height)}, {"picture", d.shading},
                                                    {"samples", std::to_string(d.samples)}, {"sampler", std::string(samplerName(d.sampler))}})
                             .c_str());
     const grader::LabCatalog labs = courseLabs();

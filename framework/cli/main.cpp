@@ -3,6 +3,7 @@
 #include "commands.h"
 
 #include "src/messages.h"
+#include "src/windows_api.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -12,15 +13,6 @@
 #include <regex>
 #include <string>
 #include <string_view>
-#ifdef _WIN32
-#ifndef WIN32_LEAN_AND_MEAN
-#define WIN32_LEAN_AND_MEAN
-#endif
-#ifndef NOMINMAX // libstdc++ defines it (MinGW)
-#define NOMINMAX
-#endif
-#include <windows.h>
-#endif
 
 namespace {
 

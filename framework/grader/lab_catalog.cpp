@@ -187,7 +187,7 @@ std::vector<LabFigure> readFigures(const Reader& r, const toml::table& root, con
 std::vector<LabCheck> readChecks(const Reader& r, const toml::table& root, const LabDescription& lab) {
     return r.list<LabCheck>(root, "check", [&](const toml::table& t, const std::string& where) {
         r.onlyKeys(t, where, {"name", "points", "uses"});
-        LabCheck c{r.text(t, where, "name"), r.points(t, where), itemUses(r, lab, t, where, {})};
+        LabCheck c{r.text(t, where, "name"), r.points(t, where), itemUses(r, lab, t, where, {}), int(t.source().begin.line)};
         if (c.name.find_first_of(",*?") != std::string::npos)
             r.fail(t.get("name"), where + "name", "\"" + c.name + "\": doctest's filters split names on , * ?");
         return c;
@@ -253,10 +253,11 @@ std::vector<int> LabCatalog::numbers() const {
     return n;
 }
 
-double LabCatalog::checkPoints(int number, const std::string& name, double fallback) const {
+double LabCatalog::checkPoints(int number, const std::string& name) const {
     const LabDescription* l = lab(number);
     const LabCheck* c = l != nullptr ? l->check(name) : nullptr;
-    return c != nullptr ? c->points : fallback;
+    if (c == nullptr) throw std::logic_error("lab " + std::to_string(number) + " has no check \"" + name + "\"");
+    return c->points;
 }
 
 double LabCatalog::figurePoints(const std::string& id, double fallback) const {

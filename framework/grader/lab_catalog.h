@@ -32,6 +32,7 @@ struct LabCheck {
     std::string name; // the check's name, as the agent reports it
     double points = 0.;
     std::vector<int> uses; // the other labs whose code it calls (none unless it says)
+    int line = 0;          // of its [[check]] in lab.toml
 };
 
 struct LabDescription {
@@ -61,8 +62,10 @@ struct LabCatalog {
     // The number of the lab that lists the figure; 0 when none does.
     int labNumberOfFigure(const std::string& id) const;
     std::vector<int> numbers() const;
-    // The points of a check or a figure; `fallback` when its lab's description does not name it.
-    double checkPoints(int lab, const std::string& name, double fallback) const;
+    // The points of a check; a check its lab's description does not name is a std::logic_error (the
+    // grader's checks are those of lab.toml: functionChecks).
+    double checkPoints(int lab, const std::string& name) const;
+    // The points of a figure; `fallback` when no lab's description names it.
     double figurePoints(const std::string& id, double fallback) const;
 };
 

@@ -124,16 +124,27 @@ Image8 enlarge(const Image8& image, const CloseUp& z) {
 }
 
 // The antialiasing comparison's close-ups (OUT/zoom), at the aliased reference's silhouette.
-std::optional<CloseUp> cropCloseUps(const std::map<std::string, Image8>& images, const ReferenceSet& references, const fs::path& out) {
-    const FigureReference* shape = references.find(kAliasedFigure);
-    if (shape == nullptr || references.find(kAntialiasedFigure) == nullptr) return std::nullopt;
+std::optional<CloseUp> cropCloseUps(const std::map<std::string, Image8>& images, const ReferenceSet& references,
+                                    const fs::path& scenes, const fs::path& out) {
+    // A course without both roles has no comparison (two scenes with one role is an error).
+    const std::vector<SceneDescription> described = loadSceneFolder(scenes);
+    const auto hasRole = [&](const char* role) {
+        return std::any_of(described.begin(), described.end(), [&](const SceneDescription& d) {
+            return std::find(d.roles.begin(), d.roles.end(), role) != d.roles.end();
+        });
+    };
+    if (!hasRole("aliased") || !hasRole("antialiased")) return std::nullopt;
+    const std::string aliased = sceneWithRole(described, "aliased", scenes).id,
+                      antialiased = sceneWithRole(described, "antialiased", scenes).id;
+    const FigureReference* shape = references.find(aliased);
+    if (shape == nullptr || references.find(antialiased) == nullptr) return std::nullopt;
     const auto [cx, cy] = silhouette(shape->image);
-    CloseUp z{0, 0, 40, 28, 10};
+    CloseUp z{0, 0, 40, 28, 10, aliased, antialiased};
     z.x = std::clamp(cx - z.width / 2, 0, std::max(0, shape->image.width - z.width));
     z.y = std::clamp(cy - z.height / 2, 0, std::max(0, shape->image.height - z.height));
-    for (const char* id : {kAliasedFigure, kAntialiasedFigure}) {
+    for (const std::string& id : {aliased, antialiased}) {
         const auto image = images.find(id);
-        if (image != images.end()) writePng(out / "zoom" / (std::string(id) + ".png"), enlarge(image->second, z));
+        if (image != images.end()) writePng(out / "zoom" / (id + ".png"), enlarge(image->second, z));
     }
     return z;
 }
@@ -185,7 +196,7 @@ int writeReportKit(const ReportRequest& request) {
     writeReports(result, setup.references, out / "grade");
     fs::remove_all(scratch);
     compareFigures(figures, images, result, setup.references, out);
-    const std::optional<CloseUp> closeUp = cropCloseUps(images, setup.references, out);
+    const std::optional<CloseUp> closeUp = cropCloseUps(images, setup.references, request.scenes, out);
     writePages(KitContent{words, title, result, setup.labs, std::move(figures), closeUp}, out);
 
     std::printf("%s", terminalSummary(result).c_str());

@@ -146,7 +146,7 @@ std::string comparisonMarkdown(const KitContent& c) {
     const CloseUp& z = *c.closeUp;
     std::string text = std::string("### ") + w.text("comparison") + "\n\n" + w.text("comparison_intro") + "\n\n";
     std::string pictures, closeUps, costs;
-    for (const auto& [id, label] : {std::pair{kAliasedFigure, w.text("aliased")}, std::pair{kAntialiasedFigure, w.text("antialiased")}}) {
+    for (const auto& [id, label] : {std::pair{z.aliased, w.text("aliased")}, std::pair{z.antialiased, w.text("antialiased")}}) {
         const KitFigure* f = findFigure(c, id);
         if (f == nullptr || !f->rendered) {
             pictures += std::string("**") + (f ? f->message : std::string("no figure ") + id) + "** ";
@@ -157,7 +157,7 @@ std::string comparisonMarkdown(const KitContent& c) {
         costs += costLine(*f, label, w);
     }
     text += pictures + "\n\n" + costs + "\n" + closeUps + "\n\n";
-    const KitFigure* aliased = findFigure(c, kAliasedFigure);
+    const KitFigure* aliased = findFigure(c, z.aliased);
     text += w.text("close_up", {{"x_first", std::to_string(z.x)}, {"x_last", std::to_string(z.x + z.width - 1)},
                                  {"y_first", std::to_string(z.y)}, {"y_last", std::to_string(z.y + z.height - 1)},
                                  {"width", std::to_string(aliased ? aliased->width : 0)},
@@ -167,8 +167,9 @@ std::string comparisonMarkdown(const KitContent& c) {
 }
 
 bool drawsComparison(const KitContent& c, int lab) {
-    const grader::LabDescription* owner = c.labs.labOfFigure(kAntialiasedFigure);
-    return c.closeUp && owner != nullptr && owner->number == lab;
+    if (!c.closeUp) return false;
+    const grader::LabDescription* owner = c.labs.labOfFigure(c.closeUp->antialiased);
+    return owner != nullptr && owner->number == lab;
 }
 
 void appendLab(std::vector<Segment>& document, const LabOutcome& lab, const KitContent& c) {

@@ -27,9 +27,11 @@ struct KitFigure {
     const grader::FigureOutcome* grade = nullptr; // null when the grader has no such figure
 };
 
-// The antialiasing section's close-up: a block of both renders, enlarged.
+// The antialiasing section's close-up: a block of both renders, enlarged; the figures are those whose
+// scene files have the roles "aliased" and "antialiased".
 struct CloseUp {
     int x = 0, y = 0, width = 0, height = 0, zoom = 1;
+    std::string aliased, antialiased;
 };
 
 struct KitContent {
@@ -40,10 +42,6 @@ struct KitContent {
     std::vector<KitFigure> figures; // in the handout's order
     std::optional<CloseUp> closeUp;  // set when the kit draws the antialiasing comparison
 };
-
-// The antialiasing comparison's figures: aliased, then antialiased.
-inline constexpr const char* kAliasedFigure = "lab3_cosine";
-inline constexpr const char* kAntialiasedFigure = "lab5_antialiased";
 
 // This run's document, each student segment holding its placeholder.
 std::vector<Segment> reportSegments(const KitContent& content);

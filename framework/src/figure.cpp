@@ -1,6 +1,5 @@
 #include "src/figure.h"
 
-#include "raylab/gradient.h"
 #include "raylab/integrator_registry.h"
 #include "raylab/todo.h"
 
@@ -13,7 +12,7 @@ namespace {
 
 // The default camera sits at the world origin, so its render space is world space.
 RenderSpace renderSpaceOf(const SceneDescription& d) {
-    if (d.picture == Picture::Gradient) throw std::invalid_argument(d.id + ": a gradient is drawn without rays");
+    if (isRegisteredImage(d.shading)) throw std::invalid_argument(d.id + ": " + d.shading + " is drawn without rays");
     return RenderSpace(d.camera.lookAt ? d.camera.position : glm::vec3(0.f));
 }
 
@@ -24,20 +23,9 @@ PerspectiveCamera makeCamera(const SceneDescription& d, const RenderSpace& space
     return PerspectiveCamera(d.width, d.height, space.toRender(c.position), space.toRender(c.target), c.up, c.fovy);
 }
 
-std::unique_ptr<Integrator> makeIntegrator(const SceneDescription& d) {
-    switch (d.picture) {
-    case Picture::Registered: return makeRegisteredIntegrator(d.integrator);
-    case Picture::Directions: return std::make_unique<DirectionIntegrator>();
-    case Picture::Flat: return std::make_unique<RayCastIntegrator>(Shading::Flat);
-    case Picture::PlaceholderNormal: return std::make_unique<RayCastIntegrator>(Shading::PlaceholderNormal);
-    default: return std::make_unique<RayCastIntegrator>(Shading::Cosine);
-    }
-}
-
-Texture renderGradient(const SceneDescription& d, RenderStats& stats) {
+Texture renderWithoutRays(const SceneDescription& d, RenderStats& stats) {
     const auto start = std::chrono::steady_clock::now();
-    Texture texture(d.width, d.height);
-    fillGradient(texture);
+    Texture texture = makeRegisteredImage(d.shading, d.width, d.height);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return texture;
 }
@@ -46,7 +34,7 @@ Texture renderGradient(const SceneDescription& d, RenderStats& stats) {
 
 SceneRender::SceneRender(const SceneDescription& d, const RenderOptions& options)
     : m_space(renderSpaceOf(d)), m_scene(m_space.toRender(d.scene)), m_camera(makeCamera(d, m_space)),
-      m_integrator(makeIntegrator(d)), m_renderer(m_scene, m_camera, *m_integrator) {
+      m_integrator(makeRegisteredIntegrator(d.shading)), m_renderer(m_scene, m_camera, *m_integrator) {
     m_renderer.setThreads(options.threads);
     m_renderer.setProgress(options.progress);
     m_renderer.setSampler(d.sampler);
@@ -59,8 +47,8 @@ SceneRender::SceneRender(const SceneDescription& d, const RenderOptions& options
 FigureResult renderScene(const SceneDescription& d, const RenderOptions& options) {
     FigureResult result;
     try {
-        if (d.picture == Picture::Gradient) {
-            result.image = renderGradient(d, result.stats);
+        if (isRegisteredImage(d.shading)) {
+            result.image = renderWithoutRays(d, result.stats);
         } else {
             SceneRender render(d, options);
             result.image = render.renderer().renderImage();

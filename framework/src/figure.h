@@ -4,6 +4,7 @@
 #include "raylab/perspective_camera.h"
 #include "src/render_space.h"
 #include "raylab/renderer.h"
+#include "raylab/integrator_registry.h"
 #include "src/scene_file.h"
 #include "raylab/todo.h"
 

@@ -1,4 +1,5 @@
 #include "src/messages.h"
+#include "src/windows_api.h"
 
 #include <toml++/toml.h>
 
@@ -6,15 +7,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
-#ifdef _WIN32
-#ifndef WIN32_LEAN_AND_MEAN
-#define WIN32_LEAN_AND_MEAN
-#endif
-#ifndef NOMINMAX // libstdc++ defines it (MinGW)
-#define NOMINMAX
-#endif
-#include <windows.h>
-#endif
 
 namespace raylab {
 
@@ -39,12 +31,30 @@ void flatten(const toml::table& table, const std::string& prefix, std::map<std::
     }
 }
 
-std::map<std::string, std::string> parseCatalogue(const char* const* parts, const char* name) {
-    std::map<std::string, std::string> out;
-    try {
-        flatten(toml::parse(joinedText(parts)), "", out);
-    } catch (const toml::parse_error& e) {
-        throw std::logic_error(std::string("message catalogue ") + name + ": " + std::string(e.description()));
+// The catalogue's text is its parts one after the other, each after a line "#@raylab-messages FILE"
+// (framework/CMakeLists.txt): framework/messages/<language>.toml, then each lab's own. Each part is a
+// TOML document; an id in two parts is an error naming both.
+std::map<std::string, std::string> parseCatalogue(std::string_view text) {
+    constexpr std::string_view kMarker = "#@raylab-messages ";
+    std::map<std::string, std::string> out, fileOf;
+    for (std::size_t at = text.find(kMarker); at != std::string_view::npos;) {
+        const std::size_t end = text.find('\n', at);
+        const std::string file(text.substr(at + kMarker.size(), end - at - kMarker.size()));
+        const std::size_t next = text.find(kMarker, end);
+        const std::string_view part = text.substr(end + 1, next == std::string_view::npos ? next : next - end - 1);
+        std::map<std::string, std::string> own;
+        try {
+            flatten(toml::parse(part, file), "", own);
+        } catch (const toml::parse_error& e) {
+            throw std::logic_error(file + ":" + std::to_string(e.source().begin.line) + ": " +
+                                   std::string(e.description()));
+        }
+        for (auto& [id, message] : own) {
+            if (const auto [first, added] = fileOf.emplace(id, file); !added)
+                throw std::logic_error(file + ": the message " + id + " is also in " + first->second);
+            out[id] = std::move(message);
+        }
+        at = next;
     }
     return out;
 }
@@ -84,8 +94,8 @@ Language languageFromEnvironment() {
 const char* languageCode(Language language) { return language == Language::Fr ? "fr" : "en"; }
 
 const std::map<std::string, std::string>& messageCatalogue(Language language) {
-    static const std::map<std::string, std::string> en = parseCatalogue(kMessagesEn, "en.toml");
-    static const std::map<std::string, std::string> fr = parseCatalogue(kMessagesFr, "fr.toml");
+    static const std::map<std::string, std::string> en = parseCatalogue(joinedText(kMessagesEn));
+    static const std::map<std::string, std::string> fr = parseCatalogue(joinedText(kMessagesFr));
     return language == Language::Fr ? fr : en;
 }
 

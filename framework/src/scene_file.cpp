@@ -30,8 +30,8 @@ const double kMaxRadius = std::sqrt(kFloatMax);                                 
 // (1.2e37) is still a float.
 constexpr double kMaxCoordinate = 1e18;
 
-constexpr Picture kPictures[] = {Picture::Gradient, Picture::Directions, Picture::Flat, Picture::PlaceholderNormal,
-                                 Picture::Cosine};
+// What a tool finds a figure by (SceneDescription::roles).
+constexpr std::string_view kRoles[] = {"bench", "aliased", "antialiased"};
 
 // Reads one file, naming the file, the line and the key in every error.
 class Reader {
@@ -229,17 +229,29 @@ void readAdaptive(const Reader& r, const toml::table& render, SceneDescription& 
 
 } // namespace
 
-std::string_view pictureName(Picture picture) {
-    switch (picture) {
-    case Picture::Gradient: return "gradient";
-    case Picture::Directions: return "directions";
-    case Picture::Flat: return "flat";
-    case Picture::PlaceholderNormal: return "placeholder_normal";
-    case Picture::Cosine: return "cosine";
-    case Picture::Registered: return "registered";
+
+namespace {
+
+// [figure] roles = ["bench", ...]: each a role of kRoles, once.
+std::vector<std::string> readRoles(const Reader& r, const toml::table& figure) {
+    const toml::node* node = figure.get("roles");
+    if (node == nullptr) return {};
+    const toml::array* list = node->as_array();
+    std::string known;
+    for (std::string_view k : kRoles) known += (known.empty() ? "" : ", ") + std::string(k);
+    if (list == nullptr) r.fail(node, "[figure] roles", "expected a list of roles (" + known + ")");
+    std::vector<std::string> roles;
+    for (const toml::node& item : *list) {
+        const std::optional<std::string> role = item.value_exact<std::string>();
+        if (!role || std::find(std::begin(kRoles), std::end(kRoles), *role) == std::end(kRoles))
+            r.fail(&item, "[figure] roles", "each role is one of " + known);
+        if (std::find(roles.begin(), roles.end(), *role) != roles.end()) r.fail(&item, "[figure] roles", *role + " is there twice");
+        roles.push_back(*role);
     }
-    return "?";
+    return roles;
 }
+
+} // namespace
 
 SceneDescription loadSceneFile(const std::filesystem::path& file) {
     std::error_code error;
@@ -259,8 +271,9 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
     d.id = file.stem().string();
     d.scene.spheres.clear();
     if (const toml::table* t = r.table(root, "figure")) {
-        r.onlyKeys(*t, "[figure] ", {"title"}); // its lab is the one whose lab.toml lists it
+        r.onlyKeys(*t, "[figure] ", {"title", "roles"}); // its lab is the one whose lab.toml lists it
         d.title = r.string(*t, "[figure] ", "title").value_or("");
+        d.roles = readRoles(r, *t);
     }
     if (const toml::table* t = r.table(root, "image")) {
         r.onlyKeys(*t, "[image] ", {"width", "height"});
@@ -271,18 +284,12 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
     if (const toml::table* t = r.table(root, "render")) {
         r.onlyKeys(*t, "[render] ", {"shading", "samples", "sampler", "seed", "adaptive"});
         if (auto shading = r.string(*t, "[render] ", "shading")) {
-            auto found = std::find_if(std::begin(kPictures), std::end(kPictures),
-                                      [&](Picture p) { return pictureName(p) == *shading; });
-            if (found != std::end(kPictures)) {
-                d.picture = *found;
-            } else if (isRegisteredIntegrator(*shading)) { // a lab's own (integrator_registry.h)
-                d.picture = Picture::Registered;
-                d.integrator = *shading;
-            } else {
-                std::string known = "gradient, directions, flat, placeholder_normal, cosine";
-                for (const std::string& name : registeredIntegratorNames()) known += ", " + name;
+            if (!isRegisteredIntegrator(*shading) && !isRegisteredImage(*shading)) { // registered by the labs
+                std::string known;
+                for (const std::string& name : registeredIntegratorNames()) known += (known.empty() ? "" : ", ") + name;
                 r.fail(t->get("shading"), "[render] shading", "'" + *shading + "' is not one of " + known);
             }
+            d.shading = *shading;
         }
         d.samples = int(r.integer(*t, "[render] ", "samples", 1, kMaxSamples).value_or(1));
         if (auto sampler = r.string(*t, "[render] ", "sampler")) {
@@ -299,6 +306,21 @@ SceneDescription loadSceneFile(const std::filesystem::path& file) {
     if (auto background = r.vec3(root, "", "background")) d.scene.background = *background;
     if (const toml::node* spheres = root.get("sphere")) readSpheres(r, *spheres, d.scene);
     return d;
+}
+
+const SceneDescription& sceneWithRole(const std::vector<SceneDescription>& scenes, std::string_view role,
+                                      const std::filesystem::path& folder) {
+    const SceneDescription* found = nullptr;
+    for (const SceneDescription& d : scenes)
+        if (std::find(d.roles.begin(), d.roles.end(), role) != d.roles.end()) {
+            if (found != nullptr)
+                throw SceneError(d.file.string() + ": [figure] roles: " + std::string(role) + " is also the role of " +
+                                 found->file.string());
+            found = &d;
+        }
+    if (found == nullptr)
+        throw SceneError(folder.string() + ": no scene file has [figure] roles = [\"" + std::string(role) + "\"]");
+    return *found;
 }
 
 std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folder) {

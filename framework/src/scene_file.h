@@ -13,16 +13,6 @@
 
 namespace raylab {
 
-// What the pixels show; each asks for no more work than it needs.
-enum class Picture {
-    Gradient,          // lab 1: no camera, no rays
-    Directions,        // lab 2: the ray directions, no objects
-    Flat,              // lab 3: hit or miss, no normals
-    PlaceholderNormal, // lab 3: cosine shading with a constant normal
-    Cosine,            // lab 3: cosine shading with the true normal
-    Registered,        // a lab's own integrator, named by SceneDescription::integrator (integrator_registry.h)
-};
-
 struct CameraDescription {
     bool lookAt = false; // false: the default camera (origin, looking along +z, up +y)
     glm::vec3 position{0.f, 0.f, 0.f};
@@ -35,12 +25,17 @@ struct SceneDescription {
     std::filesystem::path file;
     std::string id; // the file name without .toml: the figure id (its lab is the lab.toml that lists it)
     std::string title;
+    // [figure] roles: what a tool finds it by, not its id: "bench" (raylab bench, bench-effects and the
+    // antialiasing study time it), "aliased" and "antialiased" (the report's antialiasing comparison).
+    std::vector<std::string> roles;
     int width = 600;
     int height = 400;
     CameraDescription camera;
     Scene scene;
-    Picture picture = Picture::Cosine;
-    std::string integrator; // with Picture::Registered: the registered integrator's name
+    // What the pixels show: an integrator or a picture without rays, registered by name by a lab
+    // (raylab/integrator_registry.h; "gradient", "directions", "flat", "placeholder_normal", "cosine"
+    // by labs 1 to 3, each in its folder framework/grader/labs/<lab>/shadings.cpp).
+    std::string shading = "cosine";
     int samples = 1;
     SamplerKind sampler = SamplerKind::Center;
     std::uint64_t seed = 0;
@@ -58,6 +53,9 @@ SceneDescription loadSceneFile(const std::filesystem::path& file);
 // Every *.toml of a folder, in the order of their id.
 std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folder);
 
-std::string_view pictureName(Picture picture);
+// The one scene of `scenes` (the files of `folder`) with that role; throws SceneError when none has
+// it, or two.
+const SceneDescription& sceneWithRole(const std::vector<SceneDescription>& scenes, std::string_view role,
+                                      const std::filesystem::path& folder);
 
 } // namespace raylab

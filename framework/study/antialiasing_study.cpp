@@ -56,13 +56,13 @@ Rendered render(const SceneDescription& scene, const Job& job, int runs, int thr
 CentredSphere centredSphere(const SceneDescription& d) {
     const bool fits = !d.camera.lookAt && d.scene.spheres.size() == 1 && d.scene.spheres[0].center().x == 0.f &&
                       d.scene.spheres[0].center().y == 0.f && d.scene.spheres[0].center().z > d.scene.spheres[0].radius() &&
-                      (d.picture == Picture::Cosine || d.picture == Picture::Flat);
+                      (d.shading == "cosine" || d.shading == "flat");
     if (!fits)
         throw std::runtime_error(d.file.string() + ": the exact reference needs one sphere on the default camera's axis "
                                  "(center [0, 0, z]), shaded flat or cosine");
     const SphereGeometry& s = d.scene.spheres[0];
     return CentredSphere{d.width, d.height, d.camera.fovy, s.center().z, s.radius(), s.color(), d.scene.background,
-                         d.picture == Picture::Cosine};
+                         d.shading == "cosine"};
 }
 
 std::string fmt(const char* format, double v) {

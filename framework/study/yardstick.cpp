@@ -12,7 +12,7 @@
 namespace raylab::study {
 
 std::vector<Color> renderYardstick(const SceneDescription& d) {
-    if (d.camera.lookAt || d.scene.spheres.size() != 1 || d.picture != Picture::Cosine ||
+    if (d.camera.lookAt || d.scene.spheres.size() != 1 || d.shading != "cosine" ||
         d.sampler != SamplerKind::Random)
         throw std::invalid_argument("yardstick: " + d.id + " is not lab 5's kind of scene (default camera, one sphere, "
                                     "cosine shading, random sampler)");

@@ -11,6 +11,13 @@ namespace protocol = raylab::grader::protocol;
 
 namespace {
 
+// Lab 3's probe computeNormal (7 inputs, 3 outputs), registered by its grading folder.
+const protocol::ProbeSpec* computeNormal() {
+    const protocol::ProbeSpec* probe = protocol::probeNamed("computeNormal");
+    REQUIRE(probe != nullptr);
+    return probe;
+}
+
 // Two checks of one call each, passing when the call returned 1, and a figure.
 struct Session {
     std::vector<FunctionCheck> checks;
@@ -24,10 +31,11 @@ struct Session {
     Session() {
         for (const char* name : {"first", "second"})
             checks.push_back(
-                {1,
-                 name,
-                 {{protocol::Probe::ComputeNormal, std::vector<double>(7)}},
-                 [](const auto& out, Judge& judge) { judge.expectNear("value", out[0][0], 1., 0., "return 1"); }});
+                {name,
+                 {{computeNormal(), std::vector<double>(7)}},
+                 [](const auto& out, Judge& judge) { judge.expectNear("value", out[0][0], 1., 0., "return 1"); },
+                 1,
+                 1.});
         figure.id = "fig";
         figure.lab = 1;
         items = {{1, &checks[0], nullptr, false}, {2, &checks[1], nullptr, false}, {3, nullptr, &figure, false}};

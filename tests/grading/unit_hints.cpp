@@ -7,6 +7,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <cmath>
+#include <filesystem>
 
 #include <functional>
 #include <string>
@@ -21,14 +22,12 @@ using Fill = std::function<glm::dvec3(int i, int j, int width, int height)>;
 double ramp(int k, int n) { return n > 1 ? double(k) / (n - 1) : 0.; }
 
 using Answer = std::function<std::vector<double>(const protocol::Call&)>;
-using AddChecks = void (*)(std::vector<FunctionCheck>&, CaseRandom&);
-
 // Every check of a lab (or the one named `only`) judged on what `answer` returns to its calls; its
 // message (empty when it passes) by name.
-std::vector<std::pair<std::string, std::string>> judge(AddChecks addChecks, const Answer& answer, const std::string& only = "") {
-    std::vector<FunctionCheck> checks;
+std::vector<std::pair<std::string, std::string>> judge(int lab, const Answer& answer, const std::string& only = "") {
+    const LabCatalog labs = loadLabCatalog(std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
     CaseRandom random(2026);
-    addChecks(checks, random);
+    const std::vector<FunctionCheck> checks = labChecks(*labs.lab(lab), random);
     std::vector<std::pair<std::string, std::string>> messages;
     for (const FunctionCheck& check : checks) {
         if (!only.empty() && check.name != only) continue;
@@ -43,7 +42,7 @@ std::vector<std::pair<std::string, std::string>> judge(AddChecks addChecks, cons
 
 // Lab 1's checks on the gradient `fill` draws.
 std::vector<std::pair<std::string, std::string>> judgeLab1(const Fill& fill) {
-    return judge(addLab1Checks, [&fill](const protocol::Call& call) {
+    return judge(1, [&fill](const protocol::Call& call) {
         const int width = int(call.inputs[0]), height = int(call.inputs[1]);
         std::vector<double> out;
         for (int j = 0; j < height; ++j)
@@ -97,7 +96,7 @@ TEST_CASE("lab 3: an inward normal is told to point outwards, a normal of length
         CAPTURE(inward);
         const std::string name = "computeNormal: unit and pointing outwards";
         const auto messages = judge(
-            addLab3Checks,
+            3,
             [inward](const protocol::Call& call) {
                 const glm::dvec3 centre(call.inputs[0], call.inputs[1], call.inputs[2]),
                     point(call.inputs[4], call.inputs[5], call.inputs[6]);
@@ -117,7 +116,7 @@ TEST_CASE("lab 3: an inward normal is told to point outwards, a normal of length
 TEST_CASE("lab 4: u and v made rightly from an unnormalized w are sent to w, and so is the screen") {
     // The lookAt constructor with w = position - target, the rest as the handout says.
     auto unnormalizedW = [](const protocol::Call& call) {
-        if (call.probe != protocol::Probe::LookAt) return std::vector<double>{1.};
+        if (call.probe->name != "lookAt") return std::vector<double>{1.};
         const double width = call.inputs[0], height = call.inputs[1];
         const glm::dvec3 position(call.inputs[2], call.inputs[3], call.inputs[4]),
             target(call.inputs[5], call.inputs[6], call.inputs[7]), up(call.inputs[8], call.inputs[9], call.inputs[10]);
@@ -130,7 +129,7 @@ TEST_CASE("lab 4: u and v made rightly from an unnormalized w are sent to w, and
         return out;
     };
     for (const char* name : {"lookAt: the basis of the handout's four cameras", "lookAt: the viewport follows the new frame"}) {
-        const auto messages = judge(addLab4Checks, unnormalizedW, name);
+        const auto messages = judge(4, unnormalizedW, name);
         REQUIRE(messages.size() == 1);
         const std::string& message = messages[0].second;
         CAPTURE(name);
@@ -147,7 +146,7 @@ TEST_CASE("lab 2: sx and sy swapped is not blamed on the position of a camera aw
     auto swapped = [](const protocol::Call& call) {
         const double width = call.inputs[0], height = call.inputs[1];
         const double h = 2. * std::tan(glm::radians(call.inputs[2]) / 2.), wide = h * width / height;
-        if (call.probe == protocol::Probe::Viewport) {
+        if (call.probe->name == "viewport") {
             const glm::dvec3 topLeft(wide / 2., h / 2., 1.);
             return std::vector<double>{h, wide, topLeft.x, topLeft.y, topLeft.z};
         }
@@ -156,7 +155,7 @@ TEST_CASE("lab 2: sx and sy swapped is not blamed on the position of a camera aw
         const glm::dvec3 d = glm::normalize(glm::dvec3(wide / 2. - sx * wide, h / 2. - sy * h, 1.));
         return std::vector<double>{position.x, position.y, position.z, d.x, d.y, d.z};
     };
-    const auto messages = judge(addLab2Checks, swapped, "generateRay: a camera away from the origin starts its rays at its position");
+    const auto messages = judge(2, swapped, "generateRay: a camera away from the origin starts its rays at its position");
     REQUIRE(messages.size() == 1);
     const std::string& message = messages[0].second;
     CHECK_FALSE(message.empty());

@@ -1,6 +1,7 @@
 // The labs' descriptions (labs/<lab>/lab.toml): the instructor's files, read strictly, and the
 // course's own, which agree with the references.
 #include "grader/lab_catalog.h"
+#include "grader/judge/checks/checks.h"
 #include "grader/judge/references.h"
 
 #include "src/scene_file.h"
@@ -82,9 +83,9 @@ TEST_CASE("a lab's items, points, titles and the labs it uses") {
     CHECK(catalog.figure("lab2_picture")->uses == std::vector<int>{1}); // the lab's, unless it says
     CHECK(catalog.labOfFigure("lab2_picture") == &lab);
     CHECK(catalog.figurePoints("lab2_picture", 7.) == 1.5);
-    CHECK(catalog.checkPoints(2, "trace: a check", 7.) == 3.);
-    CHECK(catalog.checkPoints(2, "unknown", 7.) == 7.);
-    CHECK(catalog.checkPoints(1, "trace: a check", 7.) == 7.);
+    CHECK(catalog.checkPoints(2, "trace: a check") == 3.);
+    CHECK_THROWS_AS(catalog.checkPoints(2, "unknown"), std::logic_error); // no silent default
+    CHECK_THROWS_AS(catalog.checkPoints(1, "trace: a check"), std::logic_error);
     CHECK(lab.check("trace: a check")->uses.empty()); // a check runs its own lab's code unless it says
     CHECK(lab.check("trace: another check")->uses == std::vector<int>{1});
 }
@@ -174,3 +175,41 @@ TEST_CASE("the course's descriptions agree with the references and the scene fil
 }
 
 } // TEST_SUITE
+
+TEST_CASE(
+    "a check of the code lab.toml does not name, or one of lab.toml with no code, is an error naming both places") {
+    const LabCatalog real = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
+    LabDescription lab = *real.lab(3);
+    CaseRandom random(1);
+    const std::vector<FunctionCheck> checks = labChecks(lab, random);
+    REQUIRE(checks.size() == lab.checks.size());
+    CHECK(checks[0].points == lab.checks[0].points); // the points are lab.toml's
+    CHECK(checks[0].lab == 3);
+
+    // Renamed in lab.toml only: the code's check is in no lab.toml, lab.toml's has no code.
+    const std::string code = checks[0].name, file = lab.file.string(), line = std::to_string(lab.checks[0].line);
+    lab.checks[0].name = "intersect: renamed in lab.toml";
+    CHECK(lab.checks[0].line > 10);
+    try {
+        labChecks(lab, random);
+        FAIL("a renamed check was accepted");
+    } catch (const std::runtime_error& e) {
+        const std::string message = e.what();
+        CHECK_MESSAGE(message.find("framework/grader/labs/lab3_sphere/checks.cpp:") != std::string::npos, message);
+        CHECK_MESSAGE(message.find("the check \"" + code + "\" is not in " + file) != std::string::npos, message);
+        CHECK_MESSAGE(message.find(file + ":" + line +
+                                   ": the check \"intersect: renamed in lab.toml\" has no code: "
+                                   "framework/grader/labs/lab3_sphere/checks.cpp:") != std::string::npos,
+                      message);
+    }
+
+    // A lab with checks whose grading folder registers none; and a registered lab no lab.toml describes.
+    lab = *real.lab(3);
+    lab.id = "lab3_elsewhere";
+    CHECK_THROWS_WITH_AS(labChecks(lab, random),
+                         doctest::Contains("no grading folder registers the checks of lab3_elsewhere"),
+                         std::runtime_error);
+    LabCatalog without = real;
+    without.labs.erase(without.labs.begin() + 2);
+    CHECK_THROWS_WITH_AS(functionChecks(without, 1), doctest::Contains("lab3_sphere/checks.cpp:"), std::runtime_error);
+}

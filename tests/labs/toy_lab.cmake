@@ -1,7 +1,9 @@
-# The toy-lab test: adding a lab is one folder. In a copy of the tree it adds labs/lab6_toy/ (its
-# lab.toml, one stub function, a README), its completed twin in solutions/ and its scene file, then
-# builds, renders, makes lab 6's references, grades and reports it as an instructor and a student
-# would, and checks that framework/'s sources are the same as before.
+# The toy-lab test: adding a lab, function checks included, is its own folders. In a copy of the tree
+# it adds labs/lab6_toy/ (its lab.toml, one stub function, a README), its completed twin in
+# solutions/, its scene file and its grading folder framework/grader/labs/lab6_toy/ (a probe, a check,
+# its English and French messages), then builds, renders, makes lab 6's references, grades and
+# reports it as an instructor and a student would, and lists what changed under framework/: only
+# the new lab's grading folder and the references `raylab references` made.
 #
 #   cmake -DSOURCE=<tree> -DWORK=<scratch folder> -DTOY=tests/labs/toy [-DGENERATOR=Ninja]
 #         [-DCCACHE=<ccache>] -P tests/labs/toy_lab.cmake
@@ -32,6 +34,7 @@ file(COPY ${SOURCE}/CMakeLists.txt ${SOURCE}/CMakePresets.json DESTINATION ${tre
 file(COPY ${TOY}/lab.toml ${TOY}/README.md ${TOY}/toy_colour.cpp DESTINATION ${tree}/labs/lab6_toy)
 file(COPY ${TOY}/solution/toy_colour.cpp DESTINATION ${tree}/solutions/lab6_toy)
 file(COPY ${TOY}/lab6_toy.toml DESTINATION ${tree}/scenes/figures)
+file(COPY ${TOY}/grading/ DESTINATION ${tree}/framework/grader/labs/lab6_toy)
 
 # 2. Configure and build the programs a course uses (no test suite: tests/ is not copied).
 # Without link-time optimisation: this test is about adding a lab, not its speed (quicker links).
@@ -65,10 +68,11 @@ expect("${output}" "lab6_toy" "raylab references made lab 6's reference")
 # 4. Graded: the reference code gets every point, the stub is told to write toyColour.
 run(output 0 ${bin}/raylab grade --lab 6 --agent ${bin}/raylab-agent-reference --report ${WORK}/grade-reference)
 expect("${output}" "PASS  lab6  figure lab6_toy" "the reference's figure passes")
-expect("${output}" "lab 6: 5 / 5 points" "the reference gets lab 6's points")
+expect("${output}" "PASS  lab6  toyColour: 1 - (d + 1) / 2 for each direction d" "the reference passes lab 6's check")
+expect("${output}" "lab 6: 7 / 7 points" "the reference gets lab 6's points")
 run(output nonzero ${bin}/raylab grade --lab 6 --report ${WORK}/grade-student)
 expect("${output}" "lab 6 not done yet: write toyColour" "the stub is not done yet")
-expect("${output}" "lab 6: 0 / 5 points" "the stub gets no point")
+expect("${output}" "lab 6: 0 / 7 points" "the stub gets no point")
 
 # 5. Reported: the lab's section with its title, handout number and caption, from its lab.toml.
 run(output 0 ${bin}/raylab report --impl reference --out ${WORK}/report-reference)
@@ -93,11 +97,11 @@ file(READ ${TOY}/solution/toy_colour.cpp written)
 file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}")
 run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-written)
 expect("${output}" "labs/lab6_toy/toy_colour.cpp changed since the last build: rebuilding first" "raylab grade rebuilds")
-expect("${output}" "lab 6: 5 / 5 points" "the grade follows the code written after the build")
+expect("${output}" "lab 6: 7 / 7 points" "the grade follows the code written after the build")
 file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}\nint unfinished(\n")
 run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-broken)
 expect("${output}" "grading labs/ as a submission" "a build that fails is graded as a submission")
-expect("${output}" "lab 6: 0 / 5 points" "lab 6 that does not compile gets no point")
+expect("${output}" "lab 6: 0 / 7 points" "lab 6 that does not compile gets no point")
 expect("${output}" "lab 1: 0 / 10 points" "the other labs are graded (lab 1 is a stub)")
 file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}")
 file(READ ${SOURCE}/solutions/lab1_first_image/gradient.cpp written)
@@ -113,20 +117,50 @@ file(WRITE ${tree}/labs/lab1_first_image/gradient.cpp "#include \"raylab/gradien
 run(output 1 ${bin}/raylab figures --out ${WORK}/figures-crash)
 expect("${output}" "lab 1: fillGradient in labs/lab1_first_image/ crashed (" "the crash names lab 1 and fillGradient")
 expect("${output}" "lab2_directions" "the figures after the crash are still drawn")
+# A wrong toyColour fails the check with the lab's own English hint, and its French one in French.
+file(READ ${TOY}/solution/toy_colour.cpp written)
+string(REPLACE "Color(1.f) - (ray.direction + 1.f) * 0.5f" "(ray.direction + 1.f) * 0.5f" wrong "${written}")
+if(wrong STREQUAL written)
+  message(FATAL_ERROR "toy lab: the solution's formula was not found to make a wrong one")
+endif()
+file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${wrong}")
+run(output nonzero ${bin}/raylab grade --lab 6 --report ${WORK}/grade-wrong)
+expect("${output}" "toyColour returns 1 - (d + 1) / 2: the direction's colour, inverted" "the check's English hint")
+run(output nonzero ${bin}/raylab grade --lab 6 --lang fr --report ${WORK}/grade-wrong-fr)
+expect("${output}" "toyColour renvoie 1 - (d + 1) / 2" "the check's French hint")
+expect("${output}" "1 - (d + 1) / 2 pour chaque direction d" "the check's French title")
 
-# 6. framework/'s sources are those of the tree: the lab needed none of its files changed (its
-# data folder holds what `raylab references` made).
+# 6. What adding the lab changed under framework/, listed: files added in lab 6's grading folder and
+# the references `raylab references` made for it, nothing else added, changed or removed.
 file(GLOB_RECURSE sources RELATIVE ${SOURCE}/framework ${SOURCE}/framework/*)
 file(GLOB_RECURSE copied RELATIVE ${tree}/framework ${tree}/framework/*)
-list(FILTER copied EXCLUDE REGEX "^grader/data/references/lab6_toy\\.")
-if(NOT sources STREQUAL copied)
-  message(FATAL_ERROR "toy lab: framework/ has other files than the tree's")
-endif()
+set(added ${copied})
+list(REMOVE_ITEM added ${sources})
+set(removed ${sources})
+list(REMOVE_ITEM removed ${copied})
+set(changed "")
 foreach(file IN LISTS sources)
-  file(SHA256 ${SOURCE}/framework/${file} a)
-  file(SHA256 ${tree}/framework/${file} b)
-  if(NOT a STREQUAL b)
-    message(FATAL_ERROR "toy lab: framework/${file} changed")
+  if(EXISTS ${tree}/framework/${file})
+    file(SHA256 ${SOURCE}/framework/${file} a)
+    file(SHA256 ${tree}/framework/${file} b)
+    if(NOT a STREQUAL b)
+      list(APPEND changed ${file})
+    endif()
   endif()
 endforeach()
-message(STATUS "toy lab: lab 6 built, rendered, graded and reported; framework/ unchanged")
+string(REPLACE ";" "\n    " listed "${added}")
+message(STATUS "toy lab: framework/ files added by lab 6:\n    ${listed}")
+set(outside ${added})
+list(FILTER outside EXCLUDE REGEX "^grader/labs/lab6_toy/[^/]+$")
+list(FILTER outside EXCLUDE REGEX "^grader/data/references/lab6_toy\\.")
+if(changed OR removed OR outside)
+  message(FATAL_ERROR "toy lab: adding lab 6 changed framework/ outside its grading folder: changed [${changed}], "
+                      "removed [${removed}], added [${outside}]")
+endif()
+foreach(file checks.cpp probes.cpp probes.h messages.en.toml messages.fr.toml)
+  list(FIND added grader/labs/lab6_toy/${file} at) # (a script has no IN_LIST without a policy)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "toy lab: lab 6's grading folder has no ${file}")
+  endif()
+endforeach()
+message(STATUS "toy lab: lab 6 built, rendered, graded and reported; framework/ changed only in lab 6's grading folder")

@@ -119,7 +119,7 @@ TEST_CASE("1 x 1, 1 x N and N x 1 images: no W - 1 = 0 division, every pixel fin
         d.width = w;
         d.height = h;
         d.scene = makeTp1Scene();
-        d.picture = Picture::Cosine;
+        d.shading = "cosine";
         const FigureResult r = renderScene(d, RenderOptions{1, false});
         REQUIRE(r.status == FigureResult::Status::Rendered);
         (void)quantize(*r.image, &nonFinite);

@@ -28,7 +28,7 @@ float fovy() { return float(glm::degrees(2. * std::atan(screenRadius() * (kSize 
 SceneDescription farSphere(const glm::vec3& cameraPosition) {
     SceneDescription d;
     d.width = d.height = kSize;
-    d.picture = Picture::Flat;
+    d.shading = "flat";
     d.camera.fovy = fovy();
     const glm::dvec3 towards(0.36, 0.48, 0.8);
     const glm::vec3 centre(glm::dvec3(cameraPosition) + kDistance * towards);
@@ -75,7 +75,7 @@ TEST_CASE("the far sphere renders as a clean disc of the analytic area (within 0
 
 TEST_CASE("the far sphere's cosine shading is within one 8-bit level of the long double one, two on the rim") {
     SceneDescription d = farSphere(glm::vec3(0.f));
-    d.picture = Picture::Cosine;
+    d.shading = "cosine";
     const FigureResult r = renderScene(d, RenderOptions{0, false});
     REQUIRE(r.status == FigureResult::Status::Rendered);
     const Image8 image = quantize(*r.image);

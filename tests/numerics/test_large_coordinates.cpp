@@ -20,7 +20,7 @@ SceneDescription sphereSeenFrom(const glm::vec3& position) {
     SceneDescription d;
     d.width = 60;
     d.height = 40;
-    d.picture = Picture::Cosine;
+    d.shading = "cosine";
     d.camera.lookAt = true;
     d.camera.position = position;
     d.camera.target = position + glm::vec3(0.f, 0.f, 1.f);

@@ -17,6 +17,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 using namespace raylab;
 
@@ -70,7 +71,7 @@ struct LanguageScope {
 } // namespace
 
 TEST_SUITE("messages") {
-    TEST_CASE("each catalogue is compiled in parts a compiler accepts, cut after a line, that join into the file") {
+    TEST_CASE("each catalogue is compiled in parts a compiler accepts, cut after a line, that join into its files") {
         const std::pair<const char* const*, const char*> catalogues[] = {{kMessagesEn, "en.toml"},
                                                                           {kMessagesFr, "fr.toml"}};
         for (const auto& [parts, name] : catalogues) {
@@ -82,10 +83,26 @@ TEST_SUITE("messages") {
                 CHECK_MESSAGE((!text.empty() && text.back() == '\n'), name << " part " << count << " ends in a line");
             }
             CHECK_MESSAGE(count > 1, name); // both catalogues are over 12,000 bytes
-            std::ifstream file(std::filesystem::path(RAYLAB_MESSAGES_DIR) / name, std::ios::binary);
-            const std::string whole{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-            REQUIRE(!whole.empty());
-            CHECK_MESSAGE(joinedText(parts) == whole, name);
+            // The joined text: framework/messages/<language>.toml, then each lab's own messages, each
+            // file whole after its marker line (framework/CMakeLists.txt).
+            const std::filesystem::path top = std::filesystem::path(RAYLAB_MESSAGES_DIR).parent_path().parent_path();
+            const std::string joined = joinedText(parts), marker = "#@raylab-messages ";
+            std::vector<std::string> files;
+            for (std::size_t at = joined.find(marker); at != std::string::npos;) {
+                const std::size_t end = joined.find('\n', at);
+                const std::string file = joined.substr(at + marker.size(), end - at - marker.size());
+                const std::size_t next = joined.find(marker, end);
+                std::ifstream in(top / file, std::ios::binary);
+                const std::string whole{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+                CHECK_MESSAGE(!whole.empty(), file);
+                CHECK_MESSAGE(joined.substr(end + 1, next == std::string::npos ? next : next - end - 1) == whole + "\n", file);
+                files.push_back(file);
+                at = next;
+            }
+            REQUIRE(!files.empty());
+            CHECK(joined.rfind(marker, 0) == 0);
+            CHECK(files.front() == "framework/messages/" + std::string(name));
+            CHECK(files.size() > 5); // and the labs' own: lab 1 to 5, at least
         }
     }
 
@@ -107,7 +124,9 @@ TEST_SUITE("messages") {
     }
 
     TEST_CASE("every function check has a French title, and English shows its name") {
-        for (const grader::FunctionCheck& check : grader::functionChecks(1)) {
+        const std::filesystem::path scenes = RAYLAB_SCENES_DIR;
+        const grader::LabCatalog labs = grader::loadLabCatalog(scenes.parent_path().parent_path() / "labs", scenes);
+        for (const grader::FunctionCheck& check : grader::functionChecks(labs, 1)) {
             CHECK(messageCatalogue(Language::Fr).count(std::string(kCheckTitles) + check.name) == 1);
             const LanguageScope english(Language::En);
             CHECK(titleInLanguage(check.name) == check.name);

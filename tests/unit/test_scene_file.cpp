@@ -1,3 +1,4 @@
+#include "raylab/integrator_registry.h"
 #include "src/scene_file.h"
 
 #include <doctest/doctest.h>
@@ -82,7 +83,7 @@ radius = 2
     CHECK(d.camera.position == glm::vec3(1.f, 2.f, 3.f));
     CHECK(d.camera.up == glm::vec3(0.f, 1.f, 0.f));
     CHECK(d.camera.fovy == 45.f);
-    CHECK(d.picture == Picture::Flat);
+    CHECK(d.shading == "flat");
     CHECK(d.samples == 4);
     CHECK(d.sampler == SamplerKind::Stratified);
     CHECK(d.seed == 9);
@@ -104,7 +105,7 @@ TEST_CASE("errors name the file, the line and the key") {
     CHECK(errorOf("[camera]\nfovy = 60\nzoom = 2\n") ==
           "scene.toml:3: [camera] zoom: unknown key (known keys: position, look_at, up, fovy)");
     // A figure's lab is the lab.toml that lists it, never the scene file.
-    CHECK(errorOf("[figure]\nlab = 4\n") == "scene.toml:2: [figure] lab: unknown key (known keys: title)");
+    CHECK(errorOf("[figure]\nlab = 4\n") == "scene.toml:2: [figure] lab: unknown key (known keys: title, roles)");
     CHECK(errorOf("[image]\nwidth = \"600\"\n") == "scene.toml:2: [image] width: expected an integer, got a string");
     CHECK(errorOf("[image]\nwidth = 0\n") == "scene.toml:2: [image] width: 0 is out of range [1, 16384]");
     CHECK(errorOf("[camera]\nfovy = 180\n") ==
@@ -115,7 +116,7 @@ TEST_CASE("errors name the file, the line and the key") {
     CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\n") == "scene.toml:1: [[sphere]]: a sphere needs a center and a radius");
     CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\nradius = -1\n") == "scene.toml:3: [[sphere]] radius: -1 must be positive");
     CHECK(errorOf("[render]\nshading = \"phong\"\n") ==
-          "scene.toml:2: [render] shading: 'phong' is not one of gradient, directions, flat, placeholder_normal, cosine");
+          "scene.toml:2: [render] shading: 'phong' is not one of cosine, directions, flat, gradient, placeholder_normal");
     CHECK(errorOf("[render]\nsampler = \"magic\"\n") ==
           "scene.toml:2: [render] sampler: 'magic' is not one of center, random, stratified, grid, sobol, r2, adaptive");
     CHECK(errorOf("[camera]\nlook_at = [0, 0, 1]\n") ==
@@ -150,6 +151,38 @@ TEST_CASE("every number is checked against the bounds the float numerics justify
         CAPTURE(radius);
         CHECK(loadText(sphere + radius + "\n").scene.spheres.size() == 1);
     }
+}
+
+TEST_CASE("a figure's roles name it for the tools, not its id: one scene a role") {
+    const auto scenes = loadSceneFolder(RAYLAB_SCENES_DIR);
+    CHECK(sceneWithRole(scenes, "bench", RAYLAB_SCENES_DIR).id == "lab5_antialiased");
+    CHECK(sceneWithRole(scenes, "aliased", RAYLAB_SCENES_DIR).id == "lab3_cosine");
+    CHECK(sceneWithRole(scenes, "antialiased", RAYLAB_SCENES_DIR).id == "lab5_antialiased");
+    CHECK(loadText("[figure]\nroles = [\"aliased\", \"bench\"]\n").roles == std::vector<std::string>{"aliased", "bench"});
+    CHECK(errorOf("[figure]\nroles = [\"speed\"]\n") ==
+          "scene.toml:2: [figure] roles: each role is one of bench, aliased, antialiased");
+    CHECK(errorOf("[figure]\nroles = [\"bench\", \"bench\"]\n") == "scene.toml:2: [figure] roles: bench is there twice");
+    std::vector<SceneDescription> two = {loadText("[figure]\nroles = [\"bench\"]\n", "a.toml"),
+                                         loadText("[figure]\nroles = [\"bench\"]\n", "b.toml")};
+    CHECK_THROWS_WITH_AS(sceneWithRole(two, "bench", "folder"), doctest::Contains("b.toml: [figure] roles: bench is also the role of"),
+                         SceneError);
+    CHECK_THROWS_WITH_AS(sceneWithRole(two, "aliased", "folder"),
+                         "folder: no scene file has [figure] roles = [\"aliased\"]", SceneError);
+}
+
+TEST_CASE("every shading is a name a lab registers: one path for the figures") {
+    // Labs 1 to 3 register theirs from framework/grader/labs/<lab>/shadings.cpp.
+    CHECK(registeredIntegratorNames() == std::vector<std::string>{"cosine", "directions", "flat", "gradient", "placeholder_normal"});
+    CHECK(isRegisteredImage("gradient")); // drawn without rays
+    CHECK_FALSE(isRegisteredImage("cosine"));
+    CHECK(isRegisteredIntegrator("cosine"));
+    const Texture gradient = makeRegisteredImage("gradient", 3, 2); // lab 1's fillGradient (the reference here)
+    CHECK(gradient.width() == 3);
+    CHECK(gradient.getPixel(2, 1) == Color(1.f, 1.f, 0.f));
+    CHECK_THROWS_AS(registerImage("cosine", [](int w, int h) { return Texture(w, h); }), std::logic_error);
+    CHECK_THROWS_AS(registerIntegrator("gradient", [] { return std::unique_ptr<Integrator>(); }), std::logic_error);
+    CHECK(loadText("[render]\nshading = \"gradient\"\n").shading == "gradient");
+    CHECK(loadText("").shading == "cosine");
 }
 
 TEST_CASE("a missing file or folder is named") {

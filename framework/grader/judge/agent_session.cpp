@@ -12,8 +12,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // The drawn cases come from a seed the child never sees: each grading draws new ones.
-std::vector<FunctionCheck> freshlyDrawnChecks() {
-    return functionChecks((std::uint64_t(std::random_device{}()) << 32) ^ std::random_device{}());
+std::vector<FunctionCheck> freshlyDrawnChecks(const LabCatalog& labs) {
+    return functionChecks(labs, (std::uint64_t(std::random_device{}()) << 32) ^ std::random_device{}());
 }
 
 // The checks, then the figures, of the plan's lab (of every lab for plan.lab 0), numbered from 1.
@@ -88,7 +88,7 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan, bool withC
     const fs::path scratch = fs::absolute(setup.scratch / ("agent-" + agentName(plan)));
     fs::remove_all(scratch);
     fs::create_directories(scratch);
-    const std::vector<FunctionCheck> checks = withChecks ? freshlyDrawnChecks() : std::vector<FunctionCheck>{};
+    const std::vector<FunctionCheck> checks = withChecks ? freshlyDrawnChecks(setup.labs) : std::vector<FunctionCheck>{};
     std::vector<Item> items = itemsOf(plan, checks, setup.references);
     const std::map<std::uint64_t, Item*> index = byId(items);
     Ledger ledger(reported);

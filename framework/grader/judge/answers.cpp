@@ -48,8 +48,8 @@ bool accept(Ledger& ledger, Item& item, const protocol::Answer& answer, std::str
         return false;
     }
     for (std::size_t k = 0; k < calls.size(); ++k)
-        if (!protocol::outputsValid(calls[k].probe, calls[k].inputs, values->outputs[k])) {
-            violation = "the output of " + std::string(protocol::spec(calls[k].probe).name) + " has the wrong size";
+        if (!protocol::outputsValid(*calls[k].probe, calls[k].inputs, values->outputs[k])) {
+            violation = "the output of " + calls[k].probe->name + " has the wrong size";
             return false;
         }
     Judge judge;

@@ -54,9 +54,9 @@ std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
         mistake.check = (*m)["check"].value_or(std::string());
         mistake.function = (*m)["function"].value_or(std::string());
         if (mistake.id.empty() || mistake.nameEn.empty() || mistake.hintEn.empty() || mistake.nameFr.empty() ||
-            mistake.hintFr.empty() || mistake.function.empty() || mistake.lab < 1 || mistake.lab > 5)
+            mistake.hintFr.empty() || mistake.function.empty() || mistake.lab < 1)
             throw std::runtime_error(file.string() + ": mistake '" + mistake.id +
-                                     "' needs id, name, name_fr, hint, hint_fr, function and lab 1 ... 5");
+                                     "' needs id, name, name_fr, hint, hint_fr, function and lab (a lab's number)");
         const fs::path folder = referenceFolder / "mistakes" / mistake.id;
         if (fs::is_directory(folder, error))
             for (const auto& entry : fs::directory_iterator(folder))

@@ -1,6 +1,7 @@
 #include "grader/judge/grade.h"
 
 #include "grader/judge/agent_session.h"
+#include "grader/judge/checks/checks.h"
 #include "grader/judge/failure_causes.h"
 
 #include "raylab/image_io.h"
@@ -17,7 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kDefaultCheckPoints = 1.;
 constexpr double kDefaultFigurePoints = 2.;
 
 void scoreLabs(const LabCatalog& catalog, GradeResult& result) {
@@ -43,7 +43,7 @@ void scoreLabs(const LabCatalog& catalog, GradeResult& result) {
 }
 
 void addCheck(const GradeSetup& setup, GradeResult& result, CheckOutcome c) {
-    c.maxPoints = setup.labs.checkPoints(c.lab, c.name, kDefaultCheckPoints);
+    c.maxPoints = setup.labs.checkPoints(c.lab, c.name);
     c.points = c.passed ? c.maxPoints : 0.;
     result.checks.push_back(std::move(c));
 }
@@ -228,6 +228,11 @@ GradeSetup loadGradeSetup(const fs::path& references, const fs::path& labs, cons
     setup.references = loadReferences(references);
     setup.mistakes = loadMistakes(references);
     setup.labs = loadLabCatalog(labs, scenes);
+    functionChecks(setup.labs, 0); // the checks of the code are those of lab.toml, or it throws naming both places
+    for (const Mistake& m : setup.mistakes) // any number of labs: a mistake's lab is one that lab.toml describes
+        if (setup.labs.lab(m.lab) == nullptr)
+            throw std::runtime_error((references / "mistakes.toml").string() + ": mistake '" + m.id + "' is of lab " +
+                                     std::to_string(m.lab) + ", which no labs/*/lab.toml describes");
     setup.scenes = scenes;
     setup.scratch = scratch;
     return setup;

@@ -133,7 +133,7 @@ RenderedReference renderReference(const SceneDescription& d, int lab, int thread
     if (isStatistical(d)) {
         f.stats = convergedStatistics(d, threads);
         rendered.margins = measureRmseLimit(d, f, threads);
-    } else if (d.picture != Picture::Gradient) {
+    } else if (!isRegisteredImage(d.shading)) {
         f.ambiguous = ambiguousPixels(d, threads);
     }
     return rendered;

@@ -5,29 +5,14 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <stdexcept>
 
 namespace raylab::grader::protocol {
 
 using nlohmann::json;
 
 namespace {
-
-constexpr std::array<ProbeSpec, 10> kProbes{{
-    {Probe::FillGradient, "fillGradient", 1, 2, 0},
-    {Probe::Viewport, "viewport", 2, 3, 5},
-    {Probe::GenerateRay, "generateRay", 2, 8, 6},
-    {Probe::Intersect, "intersect", 3, 12, 5},
-    {Probe::ComputeNormal, "computeNormal", 3, 7, 3},
-    {Probe::Li, "Li", 3, 17, 3},
-    {Probe::LookAt, "lookAt", 4, 12, 17},
-    {Probe::LookAtRefused, "lookAtRefused", 4, 9, 1},
-    {Probe::SetSamples, "setNbPixelSamples", 5, 1, 2},
-    {Probe::RenderPixel, "renderPixel", 5, 6, 0},
-}};
-
-// The largest image or point list an honest answer holds; anything larger is refused unread.
-constexpr double kMaxPixels = 4096. * 4096.;
-constexpr double kMaxRays = 1 << 16;
 
 json number(double v) {
     if (std::isnan(v)) return "nan";
@@ -100,11 +85,11 @@ Request readRequest(const json& j) {
     if (type != "check") throw std::runtime_error("unknown request type " + type);
     CheckRequest request{item, {}};
     for (const json& c : field<json>(j, "calls")) {
-        const std::optional<Probe> probe = probeNamed(field<std::string>(c, "probe"));
-        if (!probe) throw std::runtime_error("unknown probe");
+        const ProbeSpec* probe = probeNamed(field<std::string>(c, "probe"));
+        if (probe == nullptr) throw std::runtime_error("unknown probe");
         std::vector<double> inputs = numbersFrom(field<json>(c, "inputs"), "inputs");
-        if (inputs.size() != spec(*probe).inputs) throw std::runtime_error("wrong number of inputs");
-        request.calls.push_back({*probe, std::move(inputs)});
+        if (inputs.size() != probe->inputs) throw std::runtime_error("wrong number of inputs");
+        request.calls.push_back({probe, std::move(inputs)});
     }
     return request;
 }
@@ -140,25 +125,26 @@ Answer readAnswer(const json& j) {
 
 } // namespace
 
-const ProbeSpec& spec(Probe probe) {
-    return kProbes[std::size_t(probe)];
+// Built on first use: the probes register during static initialisation, in any order of files.
+std::map<std::string, ProbeSpec, std::less<>>& probes() {
+    static std::map<std::string, ProbeSpec, std::less<>> registered;
+    return registered;
 }
 
-std::optional<Probe> probeNamed(std::string_view name) {
-    for (const ProbeSpec& s : kProbes)
-        if (name == s.name) return s.probe;
-    return std::nullopt;
+const ProbeSpec& registerProbe(ProbeSpec spec) {
+    const auto [at, added] = probes().emplace(spec.name, spec);
+    if (!added) throw std::logic_error("the probe '" + spec.name + "' is registered twice");
+    return at->second;
 }
 
-bool outputsValid(Probe probe, std::span<const double> inputs, std::span<const double> outputs) {
-    switch (probe) {
-    case Probe::FillGradient:
-        return inputs[0] * inputs[1] <= kMaxPixels && double(outputs.size()) == 3. * inputs[0] * inputs[1];
-    case Probe::RenderPixel: // k, then the colour, then k points
-        return !outputs.empty() && outputs[0] >= 0. && outputs[0] <= kMaxRays && outputs[0] == std::floor(outputs[0]) &&
-               double(outputs.size()) == 4. + 2. * outputs[0];
-    default: return outputs.size() == spec(probe).outputs;
-    }
+const ProbeSpec* probeNamed(std::string_view name) {
+    const auto it = probes().find(name);
+    return it != probes().end() ? &it->second : nullptr;
+}
+
+bool outputsValid(const ProbeSpec& probe, std::span<const double> inputs, std::span<const double> outputs) {
+    if (probe.validOutputs != nullptr) return probe.validOutputs(inputs, outputs);
+    return outputs.size() == probe.outputs;
 }
 
 std::string serialize(const Request& request) {
@@ -171,7 +157,7 @@ std::string serialize(const Request& request) {
     const auto& c = std::get<CheckRequest>(request);
     json calls = json::array();
     for (const Call& call : c.calls)
-        calls.push_back({{"probe", spec(call.probe).name}, {"inputs", numbers(call.inputs)}});
+        calls.push_back({{"probe", call.probe->name}, {"inputs", numbers(call.inputs)}});
     return dump({{"type", "check"}, {"item", c.item}, {"calls", calls}});
 }
 

@@ -23,35 +23,29 @@ namespace raylab::grader::protocol {
 
 inline constexpr int kVersion = 1;
 
-// What the child can be asked to call: each probe calls one student function in a fixed way.
-enum class Probe {
-    FillGradient,  // lab 1: (W, H) -> the W x H texture (pre-filled with -1), 3 W H values
-    Viewport,      // lab 2: default camera (W, H, fovy) -> height, width, topLeft
-    GenerateRay,   // lab 2: camera (W, H, fovy, px, py, pz) moved to p, generateRay(sx, sy) -> origin, direction
-    Intersect,     // lab 3: sphere (c, r), ray (o, d), tMin, tMax -> hit, t, position (t untouched: -7)
-    ComputeNormal, // lab 3: sphere (c, r), point -> normal
-    Li,            // lab 3: shading, sphere (c, r, colour), background, ray (o, d) -> colour
-    LookAt,        // lab 4: (W, H, position, target, up, fovy) -> u, v, w, position, height, width, topLeft
-    LookAtRefused, // lab 4: (position, target, up) -> 1 when std::invalid_argument, 0 when built
-    SetSamples,    // lab 5: setNbPixelSamples(n) -> refused (0 or 1), nbPixelSamples()
-    RenderPixel,   // lab 5: (W, H, i, j, n, seed) -> rays traced k, colour, k screen points (sx, sy)
-};
-
+// What the child can be asked to call: each probe calls one student function in a fixed way. A
+// lab's grading folder declares its probes (framework/grader/labs/<lab>/probes.h), by name.
 struct ProbeSpec {
-    Probe probe;
-    const char* name;
-    int lab;
+    std::string name;
     std::size_t inputs;
-    std::size_t outputs; // 0: depends on the inputs or the outputs (see outputsValid)
+    std::size_t outputs; // 0: `validOutputs` decides from the inputs or the outputs
+    bool (*validOutputs)(std::span<const double> inputs, std::span<const double> outputs) = nullptr;
 };
 
-const ProbeSpec& spec(Probe probe);
-std::optional<Probe> probeNamed(std::string_view name);
+// Keeps `spec` for the life of the program (at static initialisation, from a lab's probes.h); the same
+// name twice is a std::logic_error (two labs would answer one probe).
+const ProbeSpec& registerProbe(ProbeSpec spec);
+// The registered probe of that name; nullptr when there is none.
+const ProbeSpec* probeNamed(std::string_view name);
 // Whether `outputs` has the size the probe gives for `inputs`.
-bool outputsValid(Probe probe, std::span<const double> inputs, std::span<const double> outputs);
+bool outputsValid(const ProbeSpec& probe, std::span<const double> inputs, std::span<const double> outputs);
+
+// The largest image or point list an honest answer holds; anything larger is refused unread.
+inline constexpr double kMaxPixels = 4096. * 4096.;
+inline constexpr double kMaxRays = 1 << 16;
 
 struct Call {
-    Probe probe;
+    const ProbeSpec* probe;
     std::vector<double> inputs;
 };
 

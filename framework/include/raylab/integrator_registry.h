@@ -1,10 +1,12 @@
 #pragma once
 // Integrators by name. A lab adds its own from its own file, and a scene file's `[render] shading`
-// names it: a new lab draws its figures with no change to the framework.
+// names it: a new lab draws its figures with no change to the framework. A picture drawn without
+// rays (lab 1's gradient) registers the whole image instead, under a name of the same kind.
 //
 //   RAYLAB_REGISTER_INTEGRATOR("toy_normals", ToyNormalIntegrator);  // at namespace scope, in the lab's file
 
 #include "raylab/integrator.h"
+#include "raylab/texture.h"
 
 #include <functional>
 #include <memory>
@@ -23,14 +25,29 @@ bool isRegisteredIntegrator(const std::string& name);
 // A new integrator of that name; throws std::invalid_argument naming the registered ones if none.
 std::unique_ptr<Integrator> makeRegisteredIntegrator(const std::string& name);
 
-// The registered names, sorted.
+// The registered names (integrators and images), sorted.
 std::vector<std::string> registeredIntegratorNames();
+
+// A picture with no rays: the W x H image at once.
+using ImageMaker = std::function<Texture(int width, int height)>;
+
+// Adds `name`; a name registered twice, as an image or an integrator, throws std::logic_error.
+void registerImage(const std::string& name, ImageMaker maker);
+
+bool isRegisteredImage(const std::string& name);
+
+// The image of that name, W x H; throws std::invalid_argument when there is none.
+Texture makeRegisteredImage(const std::string& name, int width, int height);
 
 // Registers at static initialisation: the macro below declares one.
 struct IntegratorRegistrar {
     IntegratorRegistrar(const std::string& name, IntegratorFactory factory) {
         registerIntegrator(name, std::move(factory));
     }
+};
+
+struct ImageRegistrar {
+    ImageRegistrar(const std::string& name, ImageMaker maker) { registerImage(name, std::move(maker)); }
 };
 
 } // namespace raylab

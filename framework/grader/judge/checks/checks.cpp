@@ -5,7 +5,11 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <algorithm>
+#include <iterator>
 #include <map>
+#include <set>
+#include <stdexcept>
 #include <utility>
 
 namespace raylab::grader {
@@ -76,14 +80,92 @@ void appendInputs(std::vector<double>& inputs, const glm::dvec3& v) {
     inputs.insert(inputs.end(), {v.x, v.y, v.z});
 }
 
-std::vector<FunctionCheck> functionChecks(std::uint64_t seed) {
-    CaseRandom random(seed);
+namespace {
+
+struct RegisteredLab {
+    CheckMaker maker;
+    std::source_location where;
+};
+
+// Built on first use: the labs' checks register during static initialisation, in any order of files.
+std::map<std::string, RegisteredLab>& registeredLabs() {
+    static std::map<std::string, RegisteredLab> labs;
+    return labs;
+}
+
+// "framework/grader/labs/lab1_first_image/checks.cpp:75": the path from the tree's top when it has one.
+std::string place(const std::source_location& where) {
+    const std::string file = where.file_name();
+    const std::size_t top = file.rfind("framework/");
+    return (top != std::string::npos ? file.substr(top) : file) + ":" + std::to_string(where.line());
+}
+
+[[noreturn]] void refuse(const std::vector<std::string>& problems) {
+    std::string text;
+    for (const std::string& p : problems)
+        text += (text.empty() ? "" : "\n") + p;
+    throw std::runtime_error(text);
+}
+
+} // namespace
+
+void registerChecks(const std::string& labId, CheckMaker maker, std::source_location where) {
+    const auto [at, added] = registeredLabs().emplace(labId, RegisteredLab{maker, where});
+    if (!added)
+        throw std::logic_error(place(where) + ": the checks of " + labId + " are registered twice (first at " +
+                               place(at->second.where) + ")");
+}
+
+std::vector<FunctionCheck> labChecks(const LabDescription& lab, CaseRandom& random) {
+    const auto registered = registeredLabs().find(lab.id);
+    std::vector<std::string> problems;
+    const std::string labToml = lab.file.string();
+    if (registered == registeredLabs().end()) {
+        for (const LabCheck& c : lab.checks)
+            problems.push_back(
+                tr("check.lab_without_code",
+                   {{"lab_toml", labToml}, {"line", std::to_string(c.line)}, {"name", c.name}, {"id", lab.id}}));
+        if (!problems.empty()) refuse(problems);
+        return {};
+    }
+    LabChecks added;
+    registered->second.maker(added, random);
     std::vector<FunctionCheck> checks;
-    addLab1Checks(checks, random);
-    addLab2Checks(checks, random);
-    addLab3Checks(checks, random);
-    addLab4Checks(checks, random);
-    addLab5Checks(checks, random);
+    std::set<std::string> coded;
+    for (LabChecks::Added& a : added.added()) {
+        const LabCheck* declared = lab.check(a.check.name);
+        if (declared == nullptr) {
+            problems.push_back(tr("check.not_in_lab_toml",
+                                  {{"where", place(a.where)}, {"name", a.check.name}, {"lab_toml", labToml}}));
+            continue;
+        }
+        coded.insert(a.check.name);
+        a.check.lab = lab.number;
+        a.check.points = declared->points;
+        checks.push_back(std::move(a.check));
+    }
+    for (const LabCheck& c : lab.checks)
+        if (coded.count(c.name) == 0)
+            problems.push_back(tr("check.no_code", {{"lab_toml", labToml},
+                                                    {"line", std::to_string(c.line)},
+                                                    {"name", c.name},
+                                                    {"registered", place(registered->second.where)}}));
+    if (!problems.empty()) refuse(problems);
+    return checks;
+}
+
+std::vector<FunctionCheck> functionChecks(const LabCatalog& labs, std::uint64_t seed) {
+    std::vector<std::string> problems;
+    for (const auto& [id, registered] : registeredLabs())
+        if (std::none_of(labs.labs.begin(), labs.labs.end(), [&](const LabDescription& l) { return l.id == id; }))
+            problems.push_back(tr("check.unknown_lab", {{"where", place(registered.where)}, {"id", id}}));
+    if (!problems.empty()) refuse(problems);
+    CaseRandom random(seed); // one generator through the labs in order: each lab draws after the one before
+    std::vector<FunctionCheck> checks;
+    for (const LabDescription& lab : labs.labs) {
+        std::vector<FunctionCheck> own = labChecks(lab, random);
+        checks.insert(checks.end(), std::make_move_iterator(own.begin()), std::make_move_iterator(own.end()));
+    }
     return checks;
 }
 

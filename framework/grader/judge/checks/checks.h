@@ -4,6 +4,7 @@
 // functions on them through probes (protocol.h), and decides from the raw outputs, in double,
 // with a message that says what was expected, what came and a hint.
 
+#include "grader/lab_catalog.h"
 #include "grader/protocol/protocol.h"
 
 #include <glm/vec3.hpp>
@@ -11,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <random>
+#include <source_location>
 #include <string>
 #include <vector>
 
@@ -46,11 +48,12 @@ std::string show(const glm::dvec3& v);
 using Outputs = protocol::NumberReader;
 
 struct FunctionCheck {
-    int lab = 0;
-    std::string name;
+    std::string name; // as its lab's lab.toml declares it
     std::vector<protocol::Call> calls;
     // Judges the outputs of `calls` (one list a call, each of the size its probe gives).
     std::function<void(const std::vector<std::vector<double>>& outputs, Judge& judge)> judge;
+    int lab = 0;        // the lab's number, from its lab.toml
+    double points = 0.; // from its lab.toml
 };
 
 // Where the drawn cases come from: the parent's own generator, seeded where the child cannot see.
@@ -69,16 +72,53 @@ private:
     std::mt19937_64 m_engine;
 };
 
-void addLab1Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
-void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
-void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
-void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
-void addLab5Checks(std::vector<FunctionCheck>& checks, CaseRandom& random);
+// A lab's checks, as its grading folder adds them (framework/grader/labs/<lab>/checks.cpp), each by
+// the name its lab.toml declares; `where` is the line that adds it, for the catalogue's errors.
+class LabChecks {
+public:
+    struct Added {
+        FunctionCheck check;
+        std::source_location where;
+    };
+    void add(FunctionCheck check, std::source_location where = std::source_location::current()) {
+        m_added.push_back({std::move(check), where});
+    }
+    std::vector<Added>& added() { return m_added; }
 
-// Every lab's checks in order, their drawn cases from `seed`.
-std::vector<FunctionCheck> functionChecks(std::uint64_t seed);
+private:
+    std::vector<Added> m_added;
+};
+
+using CheckMaker = void (*)(LabChecks& checks, CaseRandom& random);
+
+// Adds the checks of the lab whose id (its folder's name) is `labId`; a lab registered twice is a
+// std::logic_error.
+void registerChecks(const std::string& labId, CheckMaker maker, std::source_location where);
+
+struct ChecksRegistrar {
+    ChecksRegistrar(const std::string& labId, CheckMaker maker,
+                    std::source_location where = std::source_location::current()) {
+        registerChecks(labId, maker, where);
+    }
+};
+
+// One lab's checks, their drawn cases from `random`, each with its number and points. Throws
+// std::runtime_error naming both places (file:line) when a check of the code is not in the lab's
+// lab.toml, or one of lab.toml has no code.
+std::vector<FunctionCheck> labChecks(const LabDescription& lab, CaseRandom& random);
+
+// Every lab's checks in the order of the labs, their drawn cases from `seed`. Throws as labChecks,
+// and when checks are registered for a lab that no lab.toml describes.
+std::vector<FunctionCheck> functionChecks(const LabCatalog& labs, std::uint64_t seed);
 
 // Inputs helpers: a call's inputs from numbers and vectors, in order.
 void appendInputs(std::vector<double>& inputs, const glm::dvec3& v);
 
 } // namespace raylab::grader
+
+#define RAYLAB_CHECKS_CONCAT_(a, b) a##b
+#define RAYLAB_CHECKS_CONCAT(a, b) RAYLAB_CHECKS_CONCAT_(a, b)
+// At namespace scope in a lab's checks.cpp: RAYLAB_REGISTER_CHECKS("lab1_first_image", addChecks);
+#define RAYLAB_REGISTER_CHECKS(labId, maker)                                                                           \
+    static const ::raylab::grader::ChecksRegistrar RAYLAB_CHECKS_CONCAT(raylabChecksRegistrar, __LINE__)((labId),      \
+                                                                                                         (maker))

@@ -1,14 +1,53 @@
 #pragma once
 // The child's half of the function checks: each probe calls one student function with the inputs
-// the parent drew and returns what came out, unjudged.
+// the parent drew and returns what came out, unjudged. A lab's grading folder registers its probes
+// (framework/grader/labs/<lab>/probes.cpp), by the name its probes.h declares:
+//
+//   RAYLAB_REGISTER_PROBE(fillGradient, fillGradientProbe);  // at namespace scope
 
 #include "grader/protocol/protocol.h"
+
+#include <glm/vec3.hpp>
 
 #include <vector>
 
 namespace raylab::agent {
 
-// Throws whatever the student's code throws (NotDoneYet included).
+// A call's inputs in order, as the student's functions take them (float, int).
+class ProbeInputs {
+public:
+    explicit ProbeInputs(const std::vector<double>& values) : m_numbers(values) {}
+    double number() { return m_numbers.number(); }
+    float real() { return float(number()); }
+    int integer() { return int(number()); }
+    glm::vec3 vec3() { return glm::vec3(m_numbers.vec3()); }
+
+private:
+    grader::protocol::NumberReader m_numbers;
+};
+
+// Appends a vector's three components to a probe's outputs.
+void appendOutputs(std::vector<double>& out, const glm::vec3& v);
+
+using ProbeFunction = std::vector<double> (*)(ProbeInputs inputs);
+
+// Adds the function that answers `probe`; a probe answered twice is a std::logic_error.
+void registerProbeFunction(const grader::protocol::ProbeSpec& probe, ProbeFunction function);
+
+// Throws whatever the student's code throws (NotDoneYet included); std::invalid_argument when no
+// function answers the probe.
 std::vector<double> callProbe(const grader::protocol::Call& call);
 
+struct ProbeRegistrar {
+    ProbeRegistrar(const grader::protocol::ProbeSpec& probe, ProbeFunction function) {
+        registerProbeFunction(probe, function);
+    }
+};
+
 } // namespace raylab::agent
+
+#define RAYLAB_PROBE_CONCAT_(a, b) a##b
+#define RAYLAB_PROBE_CONCAT(a, b) RAYLAB_PROBE_CONCAT_(a, b)
+#define RAYLAB_REGISTER_PROBE(probe, function)                                                                         \
+    static const ::raylab::agent::ProbeRegistrar RAYLAB_PROBE_CONCAT(raylabProbeRegistrar, __LINE__)((probe),          \
+                                                                                                     (function))

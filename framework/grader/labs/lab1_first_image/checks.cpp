@@ -1,6 +1,7 @@
 // Lab 1's function checks: the gradient, value by value, on the handout's sizes and on sizes drawn
 // at grading time.
 #include "grader/judge/checks/checks.h"
+#include "probes.h"
 
 #include "src/messages.h"
 
@@ -11,8 +12,6 @@
 namespace raylab::grader {
 
 namespace {
-
-using protocol::Probe;
 
 // A value may be quantized to 8 bits (by rounding or truncating) before it is stored: a PNG keeps
 // no more, so the checks allow one level.
@@ -59,20 +58,18 @@ struct Size {
 FunctionCheck gradientCheck(std::string name, std::vector<Size> sizes,
                             std::function<void(const std::vector<Gradient>& textures, Judge& judge)> judge) {
     std::vector<protocol::Call> calls;
-    for (const Size& s : sizes) calls.push_back({Probe::FillGradient, {double(s.width), double(s.height)}});
-    return {1, std::move(name), std::move(calls), [sizes, judge](const auto& out, Judge& j) {
+    for (const Size& s : sizes) calls.push_back({&probes::fillGradient, {double(s.width), double(s.height)}});
+    return {std::move(name), std::move(calls), [sizes, judge](const auto& out, Judge& j) {
                 std::vector<Gradient> textures;
                 for (std::size_t k = 0; k < sizes.size(); ++k) textures.push_back({sizes[k].width, sizes[k].height, out[k]});
                 judge(textures, j);
             }};
 }
 
-} // namespace
-
-void addLab1Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+void addChecks(LabChecks& checks, CaseRandom& random) {
     // Drawn sizes never equal the fixed ones: an answer learnt by heart for those fails these.
     const int width = random.integer(6, 40), height = random.integer(4, 30);
-    checks.push_back(gradientCheck(
+    checks.add(gradientCheck(
         "fillGradient: the corners and the middle of a 5 x 3 image", {{5, 3}, {width, height}},
         [](const std::vector<Gradient>& textures, Judge& judge) {
             const Gradient& fixed = textures[0];
@@ -84,28 +81,32 @@ void addLab1Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
             // The corners right and the middle wrong: 1 / 4 and 1 / 2 lost to an integer division.
             const bool cornersRight = judge.passed();
             judge.expectNear(pixel(1, 1), fixed.pixel(1, 1), {0.25, 0.5, 0.}, kLevel,
-                             cornersRight ? tr("hint.lab1.float_division") : fixed.hint(1, 1));
+                      cornersRight ? tr("hint.lab1.float_division") : fixed.hint(1, 1));
             const Gradient& drawn = textures[1];
             const int w = drawn.width, h = drawn.height;
             for (const auto& [i, j] : {std::pair{0, 0}, {w - 1, 0}, {0, h - 1}, {w - 1, h - 1}, {w / 2, h / 2}})
-                drawn.expectPixel(judge, i, j, kLevel);
+         drawn.expectPixel(judge, i, j, kLevel);
         }));
 
     const int otherWidth = random.integer(8, 40), otherHeight = random.integer(5, 30);
-    checks.push_back(gradientCheck("fillGradient: every pixel is written", {{7, 4}, {otherWidth, otherHeight}},
-                                   [](const std::vector<Gradient>& textures, Judge& judge) {
-                                       for (const Gradient& g : textures)
-                                           for (int j = 0; j < g.height; ++j)
-                                               for (int i = 0; i < g.width; ++i)
-                                                   if (!g.expectPixel(judge, i, j, kLevel)) return;
-                                   }));
+    checks.add(gradientCheck("fillGradient: every pixel is written", {{7, 4}, {otherWidth, otherHeight}},
+                            [](const std::vector<Gradient>& textures, Judge& judge) {
+                                for (const Gradient& g : textures)
+                                    for (int j = 0; j < g.height; ++j)
+                                        for (int i = 0; i < g.width; ++i)
+                                            if (!g.expectPixel(judge, i, j, kLevel)) return;
+                            }));
 
     const int tall = random.integer(4, 20), wide = random.integer(5, 20);
-    checks.push_back(gradientCheck("fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN",
-                                   {{1, 3}, {4, 1}, {1, tall}, {wide, 1}},
-                                   [](const std::vector<Gradient>& textures, Judge& judge) {
-                                       for (const Gradient& g : textures) g.expectPixel(judge, g.width - 1, g.height - 1, 1e-6);
-                                   }));
+    checks.add(gradientCheck("fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN",
+                            {{1, 3}, {4, 1}, {1, tall}, {wide, 1}},
+                            [](const std::vector<Gradient>& textures, Judge& judge) {
+                                for (const Gradient& g : textures) g.expectPixel(judge, g.width - 1, g.height - 1, 1e-6);
+                            }));
 }
+
+} // namespace
+
+RAYLAB_REGISTER_CHECKS("lab1_first_image", addChecks);
 
 } // namespace raylab::grader

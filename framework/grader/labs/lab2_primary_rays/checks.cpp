@@ -1,6 +1,7 @@
 // Lab 2's function checks: the viewport and the primary rays of known cameras and of cameras
 // drawn at grading time. Every camera is built without lookAt (lab 4): lab 2 is graded on its own.
 #include "grader/judge/checks/checks.h"
+#include "probes.h"
 
 #include "src/messages.h"
 
@@ -12,8 +13,6 @@
 namespace raylab::grader {
 
 namespace {
-
-using protocol::Probe;
 
 struct Camera {
     int width, height;
@@ -29,9 +28,9 @@ struct Camera {
         return glm::normalize(glm::dvec3(width / 2., height / 2., 1.) + sx * width * glm::dvec3(-1., 0., 0.) -
                               sy * height * glm::dvec3(0., 1., 0.));
     }
-    protocol::Call viewport() const { return {Probe::Viewport, {double(width), double(height), fovy}}; }
+    protocol::Call viewport() const { return {&probes::viewport, {double(width), double(height), fovy}}; }
     protocol::Call ray(double sx, double sy) const {
-        return {Probe::GenerateRay, {double(width), double(height), fovy, position.x, position.y, position.z, sx, sy}};
+        return {&probes::generateRay, {double(width), double(height), fovy, position.x, position.y, position.z, sx, sy}};
     }
     std::string name() const {
         return tr("what.lab2.camera", {{"width", std::to_string(width)}, {"height", std::to_string(height)}, {"fovy", show(fovy)}});
@@ -120,29 +119,25 @@ void expectRays(Judge& judge, const Camera& c, const SeenViewport& viewport, con
     }
 }
 
-} // namespace
-
-void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+void addChecks(LabChecks& checks, CaseRandom& random) {
     const Camera handout{600, 400, 60.};
     const Camera drawn = drawnCamera(random);
-    checks.push_back({2,
-                      "updateViewport: the viewport of the default camera",
-                      {handout.viewport(), drawn.viewport()},
-                      [handout, drawn](const auto& out, Judge& judge) {
-                          expectViewport(judge, handout, out[0], false);
-                          expectViewport(judge, drawn, out[1], true);
-                      }});
+    checks.add({"updateViewport: the viewport of the default camera",
+               {handout.viewport(), drawn.viewport()},
+               [handout, drawn](const auto& out, Judge& judge) {
+                   expectViewport(judge, handout, out[0], false);
+                   expectViewport(judge, drawn, out[1], true);
+               }});
 
     const Camera square{100, 100, 90.}, wide{100, 100, CaseRandom::asFloat(random.uniform(20., 120.))};
-    checks.push_back(
-        {2,
-         "updateViewport: fovy is in degrees and halved",
+    checks.add(
+        {"updateViewport: fovy is in degrees and halved",
          {square.viewport(), wide.viewport()},
          [square, wide](const auto& out, Judge& judge) {
-             const std::string hint = tr("hint.lab2.fovy_degrees_halved");
-             for (const auto& [c, o] : {std::pair{square, out[0]}, std::pair{wide, out[1]}})
-                 judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}), o[0], c.viewportHeight(), 1e-5,
-                                  hint);
+      const std::string hint = tr("hint.lab2.fovy_degrees_halved");
+      for (const auto& [c, o] : {std::pair{square, out[0]}, std::pair{wide, out[1]}})
+          judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}), o[0], c.viewportHeight(), 1e-5,
+                           hint);
          }});
 
     std::vector<Point> corners{{0.5, 0.5, tr("what.lab2.centre", {{"sx", show(0.5)}, {"sy", show(0.5)}})},
@@ -164,13 +159,13 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         calls.push_back(other.ray(p.sx, p.sy));
     calls.push_back(handout.viewport());
     calls.push_back(other.viewport());
-    checks.push_back({2, "generateRay: the centre and the four corners of the default camera", calls,
-                      [handout, other, corners, drawnPoints, fixedCorners](const auto& out, Judge& judge) {
-                          const std::size_t viewports = fixedCorners + drawnPoints.size();
-                          expectRays(judge, handout, SeenViewport(handout, out[viewports]), corners, out, 0);
-                          expectRays(judge, other, SeenViewport(other, out[viewports + 1]), drawnPoints, out,
-                                     fixedCorners);
-                      }});
+    checks.add({"generateRay: the centre and the four corners of the default camera", calls,
+               [handout, other, corners, drawnPoints, fixedCorners](const auto& out, Judge& judge) {
+                   const std::size_t viewports = fixedCorners + drawnPoints.size();
+                   expectRays(judge, handout, SeenViewport(handout, out[viewports]), corners, out, 0);
+                   expectRays(judge, other, SeenViewport(other, out[viewports + 1]), drawnPoints, out,
+                              fixedCorners);
+               }});
 
     const Camera unit{640, 480, 75.};
     std::vector<std::pair<double, double>> screen;
@@ -182,24 +177,24 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     calls.clear();
     for (const auto& [sx, sy] : screen)
         calls.push_back(unit.ray(sx, sy));
-    checks.push_back(
-        {2, "generateRay: directions are unit vectors", calls, [screen](const auto& out, Judge& judge) {
-             // A direction that ignores (sx, sy), such as Ray{}'s, is a unit vector without normalizing anything.
-             const glm::dvec3 first = rayDirection(out[0]);
-             bool follows = false;
-             for (std::size_t k = 1; k < screen.size(); ++k)
-                 follows = follows || !withinEach(rayDirection(out[k]), first, 1e-6);
-             if (!judge.expectTrue(tr("what.lab2.directions_follow"), follows, tr("what.lab2.directions_differ"),
-                                   tr("what.lab2.one_direction", {{"direction", show(first)}}), tr("hint.lab2.one_direction")))
-                 return;
-             for (std::size_t k = 0; k < screen.size(); ++k) {
-                 Outputs o(out[k]);
-                 o.vec3();
-                 if (!judge.expectNear(
-                         tr("what.lab2.direction_length", {{"sx", show(screen[k].first)}, {"sy", show(screen[k].second)}}),
-                         glm::length(o.vec3()), 1., 1e-5, tr("hint.lab2.normalize")))
-                     return;
-             }
+    checks.add(
+        {"generateRay: directions are unit vectors", calls, [screen](const auto& out, Judge& judge) {
+      // A direction that ignores (sx, sy), such as Ray{}'s, is a unit vector without normalizing anything.
+      const glm::dvec3 first = rayDirection(out[0]);
+      bool follows = false;
+      for (std::size_t k = 1; k < screen.size(); ++k)
+          follows = follows || !withinEach(rayDirection(out[k]), first, 1e-6);
+      if (!judge.expectTrue(tr("what.lab2.directions_follow"), follows, tr("what.lab2.directions_differ"),
+                            tr("what.lab2.one_direction", {{"direction", show(first)}}), tr("hint.lab2.one_direction")))
+          return;
+      for (std::size_t k = 0; k < screen.size(); ++k) {
+          Outputs o(out[k]);
+          o.vec3();
+          if (!judge.expectNear(
+                  tr("what.lab2.direction_length", {{"sx", show(screen[k].first)}, {"sy", show(screen[k].second)}}),
+                  glm::length(o.vec3()), 1., 1e-5, tr("hint.lab2.normalize")))
+              return;
+      }
          }});
 
     const Camera away{300, 200, 60., {2., 3., -4.}};
@@ -210,24 +205,27 @@ void addLab2Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     // position's fault, and the hint says so instead of blaming the position.
     Camera awayAtOrigin = away, drawnAtOrigin = drawnAway;
     awayAtOrigin.position = drawnAtOrigin.position = glm::dvec3(0.);
-    checks.push_back({2,
-                      "generateRay: a camera away from the origin starts its rays at its position",
-                      {away.ray(0., 0.), drawnAway.ray(sx, sy), away.viewport(), drawnAway.viewport(),
-                       awayAtOrigin.ray(0., 0.), drawnAtOrigin.ray(sx, sy)},
-                      [away, drawnAway, sx, sy](const auto& out, Judge& judge) {
-                          for (const auto& [c, o, viewport, atOrigin, x, y] :
-                               {std::tuple{away, out[0], out[2], out[4], 0., 0.},
-                                std::tuple{drawnAway, out[1], out[3], out[5], sx, sy}}) {
-                              Outputs here(o), there(atOrigin);
-                              here.vec3();
-                              there.vec3();
-                              const bool sameAsAtOrigin = withinEach(here.vec3(), there.vec3(), 1e-5);
-                              expectRays(judge, c, SeenViewport(c, viewport),
-                                         {{x, y, tr("what.lab2.away_point", {{"sx", show(x)}, {"sy", show(y)},
-                                                                             {"position", show(c.position)}})}},
-                                         {o}, 0, tr(sameAsAtOrigin ? "hint.lab2.away_as_at_origin" : "hint.lab2.away_direction"));
-                          }
-                      }});
+    checks.add({"generateRay: a camera away from the origin starts its rays at its position",
+               {away.ray(0., 0.), drawnAway.ray(sx, sy), away.viewport(), drawnAway.viewport(),
+                awayAtOrigin.ray(0., 0.), drawnAtOrigin.ray(sx, sy)},
+               [away, drawnAway, sx, sy](const auto& out, Judge& judge) {
+                   for (const auto& [c, o, viewport, atOrigin, x, y] :
+                        {std::tuple{away, out[0], out[2], out[4], 0., 0.},
+                         std::tuple{drawnAway, out[1], out[3], out[5], sx, sy}}) {
+                       Outputs here(o), there(atOrigin);
+                       here.vec3();
+                       there.vec3();
+                       const bool sameAsAtOrigin = withinEach(here.vec3(), there.vec3(), 1e-5);
+                       expectRays(judge, c, SeenViewport(c, viewport),
+                                  {{x, y, tr("what.lab2.away_point", {{"sx", show(x)}, {"sy", show(y)},
+                                                                      {"position", show(c.position)}})}},
+                                  {o}, 0, tr(sameAsAtOrigin ? "hint.lab2.away_as_at_origin" : "hint.lab2.away_direction"));
+                   }
+               }});
 }
+
+} // namespace
+
+RAYLAB_REGISTER_CHECKS("lab2_primary_rays", addChecks);
 
 } // namespace raylab::grader

@@ -2,6 +2,7 @@
 // docs/numerics.md that are fair to ask), normals and shading; each also on cases drawn at
 // grading time.
 #include "grader/judge/checks/checks.h"
+#include "probes.h"
 
 #include "src/messages.h"
 
@@ -10,13 +11,12 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <source_location>
 #include <utility>
 
 namespace raylab::grader {
 
 namespace {
-
-using protocol::Probe;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -53,7 +53,7 @@ protocol::Call call(const Case& c) {
     appendInputs(in, c.ray.origin);
     appendInputs(in, c.ray.direction);
     in.insert(in.end(), {c.tMin, c.tMax});
-    return {Probe::Intersect, in};
+    return {&probes::intersect, in};
 }
 
 // The two roots of the ray's line on the sphere, in double (nullopt when it misses the line).
@@ -95,37 +95,41 @@ bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
     return !found;
 }
 
-void addIntersect(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<Case> cases) {
+void addIntersect(LabChecks& checks, const std::string& name, std::vector<Case> cases,
+                  std::source_location where = std::source_location::current()) {
     std::vector<protocol::Call> calls;
     for (const Case& c : cases)
         calls.push_back(call(c));
-    checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
-                          for (std::size_t k = 0; k < cases.size(); ++k)
-                              judgeCase(judge, cases[k], out[k]);
-                      }});
+    checks.add({name, calls, [cases](const auto& out, Judge& judge) {
+                   for (std::size_t k = 0; k < cases.size(); ++k)
+                       judgeCase(judge, cases[k], out[k]);
+               }},
+               where);
 }
 
 // A far sphere's cases, judged after a near sphere confirms the root choice: the discriminant's
 // cancellation is blamed only when the near root is taken where it should be, and the hint says
 // what the near sphere showed otherwise.
-void addFarIntersect(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<Case> cases) {
+void addFarIntersect(LabChecks& checks, const std::string& name, std::vector<Case> cases,
+                     std::source_location where = std::source_location::current()) {
     const Case nearSphere{"", kSphere, kAlongZ, 0., kInf, 2., 1e-5, ""};
     std::vector<protocol::Call> calls{call(nearSphere)};
     for (const Case& c : cases)
         calls.push_back(call(c));
-    checks.push_back({3, name, calls, [cases](const auto& out, Judge& judge) {
-                          Outputs near(out[0]);
-                          const bool found = near.number() != 0.;
-                          const double t = near.number();
-                          const bool rootChoiceRight = found && std::abs(t - 2.) <= 1e-5;
-                          for (std::size_t k = 0; k < cases.size(); ++k) {
-                              Case c = cases[k];
-                              if (!rootChoiceRight)
-                                  c.hint = tr("hint.lab3.near_first", {{"got", found ? "t = " + show(t) : tr("what.lab3.no_hit")}}) +
-                                           (found && std::abs(t - 4.) <= 1e-5 ? tr("hint.lab3.and_far_root") : "");
-                              judgeCase(judge, c, out[k + 1]);
-                          }
-                      }});
+    checks.add({name, calls, [cases](const auto& out, Judge& judge) {
+                   Outputs near(out[0]);
+                   const bool found = near.number() != 0.;
+                   const double t = near.number();
+                   const bool rootChoiceRight = found && std::abs(t - 2.) <= 1e-5;
+                   for (std::size_t k = 0; k < cases.size(); ++k) {
+                       Case c = cases[k];
+                       if (!rootChoiceRight)
+                           c.hint = tr("hint.lab3.near_first", {{"got", found ? "t = " + show(t) : tr("what.lab3.no_hit")}}) +
+                                    (found && std::abs(t - 4.) <= 1e-5 ? tr("hint.lab3.and_far_root") : "");
+                       judgeCase(judge, c, out[k + 1]);
+                   }
+               }},
+               where);
 }
 
 Sphere drawnSphere(CaseRandom& random) {
@@ -167,7 +171,7 @@ protocol::Call liCall(int shading, const Sphere& s, const glm::dvec3& colour, co
     appendInputs(in, background);
     appendInputs(in, r.origin);
     appendInputs(in, r.direction);
-    return {Probe::Li, in};
+    return {&probes::li, in};
 }
 
 enum Shading { kFlat = 0, kPlaceholder = 1, kCosine = 2 };
@@ -201,7 +205,7 @@ protocol::Call normalCall(const Sphere& s, const glm::dvec3& point) {
     appendInputs(in, s.centre);
     in.push_back(s.radius);
     appendInputs(in, point);
-    return {Probe::ComputeNormal, in};
+    return {&probes::computeNormal, in};
 }
 
 // What Li returns for the hit (or miss) `intersect` gave: the background, or the shading at that hit
@@ -219,7 +223,8 @@ glm::dvec3 liForHit(const LiCase& c, bool found, double t) {
 // Li calls the student's intersect, and cosine shading their computeNormal: the check also asks
 // intersect for each ray, and computeNormal at the true hit, so that a Li right for a wrong hit or a
 // wrong normal is sent to that function, not told to fix its own formula.
-void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vector<LiCase> cases) {
+void addLi(LabChecks& checks, const std::string& name, std::vector<LiCase> cases,
+           std::source_location where = std::source_location::current()) {
     std::vector<protocol::Call> calls;
     for (const LiCase& c : cases)
         calls.push_back(liCall(c.shading, c.sphere, c.colour, c.background, c.ray));
@@ -231,33 +236,34 @@ void addLi(std::vector<FunctionCheck>& checks, const std::string& name, std::vec
             normalAt[k] = calls.size();
             calls.push_back(normalCall(cases[k].sphere, CaseRandom::asFloat(cases[k].ray.at(*t))));
         }
-    checks.push_back({3, name, calls, [cases, normalAt, hitsAt](const auto& out, Judge& judge) {
-                          for (std::size_t k = 0; k < cases.size(); ++k) {
-                              const LiCase& c = cases[k];
-                              const glm::dvec3 got = Outputs(out[k]).vec3();
-                              std::string hint = c.hint;
-                              Outputs hit(out[hitsAt + k]);
-                              const bool found = hit.number() != 0.;
-                              const double t = hit.number();
-                              const std::optional<double> trueT = nearestHit(c.sphere, c.ray);
-                              const bool hitWrong = found != trueT.has_value() ||
-                                                    (found && std::abs(t - *trueT) > 1e-4 * std::max(1., *trueT));
-                              if (hitWrong && withinEach(got, liForHit(c, found, t), c.tolerance))
-                                  hint = tr("hint.lab3.li_through_intersect",
-                                            {{"got", found ? "t = " + show(t) : tr("what.lab3.no_hit")},
-                                             {"expected", trueT ? "t = " + show(*trueT) : tr("what.lab3.no_hit")}});
-                              else if (normalAt[k] != 0) {
-                                  const glm::dvec3 n = Outputs(out[normalAt[k]]).vec3(),
-                                                   d = glm::normalize(c.ray.direction);
-                                  const glm::dvec3 forTheirNormal = c.colour * std::max(-glm::dot(d, n), 0.);
-                                  if (withinEach(got, forTheirNormal, c.tolerance)) hint = tr("hint.lab3.cosine_own_normal");
-                              }
-                              judge.expectNear(c.what, got, expectedLi(c), c.tolerance, hint);
-                          }
-                      }});
+    checks.add({name, calls, [cases, normalAt, hitsAt](const auto& out, Judge& judge) {
+                   for (std::size_t k = 0; k < cases.size(); ++k) {
+                       const LiCase& c = cases[k];
+                       const glm::dvec3 got = Outputs(out[k]).vec3();
+                       std::string hint = c.hint;
+                       Outputs hit(out[hitsAt + k]);
+                       const bool found = hit.number() != 0.;
+                       const double t = hit.number();
+                       const std::optional<double> trueT = nearestHit(c.sphere, c.ray);
+                       const bool hitWrong = found != trueT.has_value() ||
+                                             (found && std::abs(t - *trueT) > 1e-4 * std::max(1., *trueT));
+                       if (hitWrong && withinEach(got, liForHit(c, found, t), c.tolerance))
+                           hint = tr("hint.lab3.li_through_intersect",
+                                     {{"got", found ? "t = " + show(t) : tr("what.lab3.no_hit")},
+                                      {"expected", trueT ? "t = " + show(*trueT) : tr("what.lab3.no_hit")}});
+                       else if (normalAt[k] != 0) {
+                           const glm::dvec3 n = Outputs(out[normalAt[k]]).vec3(),
+                                            d = glm::normalize(c.ray.direction);
+                           const glm::dvec3 forTheirNormal = c.colour * std::max(-glm::dot(d, n), 0.);
+                           if (withinEach(got, forTheirNormal, c.tolerance)) hint = tr("hint.lab3.cosine_own_normal");
+                       }
+                       judge.expectNear(c.what, got, expectedLi(c), c.tolerance, hint);
+                   }
+               }},
+               where);
 }
 
-void addIntersectChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+void addIntersectChecks(LabChecks& checks, CaseRandom& random) {
     {
         const std::string hint = tr("hint.lab3.quadratic");
         const Sphere s = drawnSphere(random);
@@ -403,7 +409,7 @@ void addIntersectChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) 
     }
 }
 
-void addNormalCheck(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+void addNormalCheck(LabChecks& checks, CaseRandom& random) {
     const Sphere big{{1., 2., 3.}, 2.}, drawn = drawnSphere(random);
     const glm::dvec3 n = random.unitVector(), point = CaseRandom::asFloat(drawn.centre + n * drawn.radius);
     const std::vector<std::pair<Sphere, glm::dvec3>> cases{
@@ -416,20 +422,20 @@ void addNormalCheck(std::vector<FunctionCheck>& checks, CaseRandom& random) {
         if (glm::dot(got, expected) < 0.) return tr("hint.lab3.normal_outwards");
         return tr("hint.lab3.normal");
     };
-    checks.push_back(
-        {3, "computeNormal: unit and pointing outwards", calls, [cases, hint](const auto& out, Judge& judge) {
-             const std::string what[] = {tr("what.lab3.normal_at", {{"point", show(glm::dvec3(0., 0., 2.))}}),
-                                         tr("what.lab3.normal_radius_2", {{"point", show(glm::dvec3(1., 2., 5.))}}),
-                                         tr("what.lab3.normal_of", {{"point", show(cases[2].second)}, {"sphere", describe(cases[2].first)}})};
-             for (std::size_t k = 0; k < cases.size(); ++k) {
-                 const auto& [s, p] = cases[k];
-                 const glm::dvec3 got = Outputs(out[k]).vec3(), expected = (p - s.centre) / s.radius;
-                 judge.expectNear(what[k], got, expected, k < 2 ? 1e-6 : 1e-5, hint(got, expected));
-             }
+    checks.add(
+        {"computeNormal: unit and pointing outwards", calls, [cases, hint](const auto& out, Judge& judge) {
+      const std::string what[] = {tr("what.lab3.normal_at", {{"point", show(glm::dvec3(0., 0., 2.))}}),
+                                  tr("what.lab3.normal_radius_2", {{"point", show(glm::dvec3(1., 2., 5.))}}),
+                                  tr("what.lab3.normal_of", {{"point", show(cases[2].second)}, {"sphere", describe(cases[2].first)}})};
+      for (std::size_t k = 0; k < cases.size(); ++k) {
+          const auto& [s, p] = cases[k];
+          const glm::dvec3 got = Outputs(out[k]).vec3(), expected = (p - s.centre) / s.radius;
+          judge.expectNear(what[k], got, expected, k < 2 ? 1e-6 : 1e-5, hint(got, expected));
+      }
          }});
 }
 
-void addLiChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+void addLiChecks(LabChecks& checks, CaseRandom& random) {
     const Sphere drawn = drawnSphere(random);
     const glm::dvec3 colour = CaseRandom::asFloat(random.vec3(0.1, 1.)),
                      background = CaseRandom::asFloat(random.vec3(0., 1.));
@@ -474,13 +480,15 @@ void addLiChecks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
             drawn, colour, background, hitting, 1e-5, tr("hint.lab3.placeholder")}});
 }
 
-} // namespace
-
 // The draws happen in this order: intersect, computeNormal, then Li.
-void addLab3Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+void addChecks(LabChecks& checks, CaseRandom& random) {
     addIntersectChecks(checks, random);
     addNormalCheck(checks, random);
     addLiChecks(checks, random);
 }
+
+} // namespace
+
+RAYLAB_REGISTER_CHECKS("lab3_sphere", addChecks);
 
 } // namespace raylab::grader

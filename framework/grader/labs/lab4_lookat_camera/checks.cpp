@@ -2,6 +2,7 @@
 // is not perpendicular to the view direction, and of cameras drawn at grading time; the viewport
 // of a camera rebuilt after construction; and the cameras that cannot be built.
 #include "grader/judge/checks/checks.h"
+#include "probes.h"
 
 #include "src/messages.h"
 
@@ -14,8 +15,6 @@
 namespace raylab::grader {
 
 namespace {
-
-using protocol::Probe;
 
 struct LookAt {
     std::string name;
@@ -34,7 +33,7 @@ struct LookAt {
         for (const glm::dvec3& p : {position, target, up})
             appendInputs(in, p);
         in.push_back(fovy);
-        return {Probe::LookAt, in};
+        return {&probes::lookAt, in};
     }
 };
 
@@ -85,7 +84,7 @@ protocol::Call refusedCall(const glm::dvec3& position, const glm::dvec3& target,
     std::vector<double> in;
     for (const glm::dvec3& p : {position, target, up})
         appendInputs(in, p);
-    return {Probe::LookAtRefused, in};
+    return {&probes::lookAtRefused, in};
 }
 
 // A lookAt check, one call a camera: `expect` judges what each camera was built as.
@@ -93,66 +92,64 @@ FunctionCheck lookAtCheck(std::string name, std::vector<LookAt> cameras,
                           std::function<void(const LookAt& camera, const Built& built, Judge& judge)> expect) {
     std::vector<protocol::Call> calls;
     for (const LookAt& c : cameras) calls.push_back(c.call());
-    return {4, std::move(name), std::move(calls), [cameras, expect](const auto& out, Judge& judge) {
+    return {std::move(name), std::move(calls), [cameras, expect](const auto& out, Judge& judge) {
                 for (std::size_t k = 0; k < cameras.size(); ++k) expect(cameras[k], Built(out[k]), judge);
             }};
 }
 
-} // namespace
-
-void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
+void addChecks(LabChecks& checks, CaseRandom& random) {
     std::vector<LookAt> cameras = handoutCameras();
     const glm::dvec3 obliqueUp{0.3, 1., 0.4};
     cameras.push_back({tr("what.lab4.oblique_camera", {{"up", show(obliqueUp)}}), {4., -1., 0.}, {-1., -1., 2.}, obliqueUp});
     cameras.push_back(drawnCamera(random));
     cameras.push_back(drawnCamera(random));
-    checks.push_back(lookAtCheck("lookAt: the basis of the handout's four cameras", cameras,
-                                 [](const LookAt& c, const Built& b, Judge& judge) {
-                                     auto what = [&c](const char* part) {
-                                         return tr("what.lab4.part", {{"camera", c.name}, {"part", part}});
-                                     };
-                                     // u and v made rightly from a wrong w are sent to w.
-                                     const bool wRight = judge.expectNear(what("w"), b.w, c.w(), 1e-5, tr("hint.lab4.w"));
-                                     const bool uFromW = withinEach(b.u, glm::normalize(glm::cross(c.up, b.w)), 1e-5);
-                                     judge.expectNear(what("u"), b.u, c.u(), 1e-5,
-                                                      tr(!wRight && uFromW ? "hint.lab4.from_w" : "hint.lab4.u"));
-                                     const bool vFromW = withinEach(b.v, glm::cross(b.w, b.u), 1e-5);
-                                     judge.expectNear(what("v"), b.v, c.v(), 1e-5,
-                                                      tr(!wRight && vFromW ? "hint.lab4.from_w" : "hint.lab4.v"));
-                                     judge.expectNear(what("position"), b.position, c.position, 1e-6,
-                                                      tr("hint.lab4.position"));
-                                 }));
+    checks.add(lookAtCheck("lookAt: the basis of the handout's four cameras", cameras,
+                          [](const LookAt& c, const Built& b, Judge& judge) {
+                              auto what = [&c](const char* part) {
+                                  return tr("what.lab4.part", {{"camera", c.name}, {"part", part}});
+                              };
+                              // u and v made rightly from a wrong w are sent to w.
+                              const bool wRight = judge.expectNear(what("w"), b.w, c.w(), 1e-5, tr("hint.lab4.w"));
+                              const bool uFromW = withinEach(b.u, glm::normalize(glm::cross(c.up, b.w)), 1e-5);
+                              judge.expectNear(what("u"), b.u, c.u(), 1e-5,
+                                               tr(!wRight && uFromW ? "hint.lab4.from_w" : "hint.lab4.u"));
+                              const bool vFromW = withinEach(b.v, glm::cross(b.w, b.u), 1e-5);
+                              judge.expectNear(what("v"), b.v, c.v(), 1e-5,
+                                               tr(!wRight && vFromW ? "hint.lab4.from_w" : "hint.lab4.v"));
+                              judge.expectNear(what("position"), b.position, c.position, 1e-6,
+                                               tr("hint.lab4.position"));
+                          }));
 
     const std::vector<LookAt> moved{handoutCameras()[3], drawnCamera(random)};
-    checks.push_back(lookAtCheck(
+    checks.add(lookAtCheck(
         "lookAt: the viewport follows the new frame", moved, [](const LookAt& c, const Built& b, Judge& judge) {
             // A screen placed rightly in a wrong frame: updateViewport was called, the frame is at fault.
             const glm::dvec3 ownTopLeft =
-                b.position - b.w + b.v * (b.viewportHeight / 2.) - b.u * (b.viewportWidth / 2.);
+         b.position - b.w + b.v * (b.viewportHeight / 2.) - b.u * (b.viewportWidth / 2.);
             const bool frameRight = withinEach(b.u, c.u(), 1e-5) && withinEach(b.v, c.v(), 1e-5) && withinEach(b.w, c.w(), 1e-5);
             const std::string hint =
-                tr(!frameRight && withinEach(b.topLeft, ownTopLeft, 1e-4) ? "hint.lab4.viewport_frame" : "hint.lab4.viewport");
+         tr(!frameRight && withinEach(b.topLeft, ownTopLeft, 1e-4) ? "hint.lab4.viewport_frame" : "hint.lab4.viewport");
             auto what = [&c](const std::string& part) { return tr("what.lab4.part", {{"camera", c.name}, {"part", part}}); };
             judge.expectNear(what(tr("what.lab4.viewport_height")), b.viewportHeight, c.viewportHeight(), 1e-5, hint);
             judge.expectNear(what(tr("what.lab4.viewport_width")), b.viewportWidth, c.viewportWidth(), 1e-5, hint);
             judge.expectNear(what(tr("what.lab4.top_left")), b.topLeft, c.topLeft(), 1e-4,
-                             frameRight ? tr("hint.lab4.viewport_position", {{"hint", hint}}) : hint);
+                      frameRight ? tr("hint.lab4.viewport_position", {{"hint", hint}}) : hint);
         }));
 
     // The default camera is what the delegated constructor already built: the same camera turned
     // round (looking along -z) shows that lookAt built it, and the same handedness.
     const LookAt origin{"", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}};
     const LookAt turned{"", {0., 0., 0.}, {0., 0., -1.}, {0., 1., 0.}};
-    checks.push_back(
-        {4, "lookAt: the default camera as a lookAt camera", {origin.call(), turned.call()}, [](const auto& out, Judge& judge) {
-             const Built b(out[0]), t(out[1]);
-             judge.expectNear("u", b.u, {-1., 0., 0.}, 1e-6, tr("hint.lab4.default_u"));
-             judge.expectNear("v", b.v, {0., 1., 0.}, 1e-6, tr("hint.lab4.default_v"));
-             const std::string turnedPart = tr("what.lab4.turned_camera");
-             judge.expectNear(tr("what.lab4.part", {{"camera", turnedPart}, {"part", "u"}}), t.u, {1., 0., 0.}, 1e-6,
-                              tr("hint.lab4.turned_u"));
-             judge.expectNear(tr("what.lab4.part", {{"camera", turnedPart}, {"part", "v"}}), t.v, {0., 1., 0.}, 1e-6,
-                              tr("hint.lab4.default_v"));
+    checks.add(
+        {"lookAt: the default camera as a lookAt camera", {origin.call(), turned.call()}, [](const auto& out, Judge& judge) {
+      const Built b(out[0]), t(out[1]);
+      judge.expectNear("u", b.u, {-1., 0., 0.}, 1e-6, tr("hint.lab4.default_u"));
+      judge.expectNear("v", b.v, {0., 1., 0.}, 1e-6, tr("hint.lab4.default_v"));
+      const std::string turnedPart = tr("what.lab4.turned_camera");
+      judge.expectNear(tr("what.lab4.part", {{"camera", turnedPart}, {"part", "u"}}), t.u, {1., 0., 0.}, 1e-6,
+                       tr("hint.lab4.turned_u"));
+      judge.expectNear(tr("what.lab4.part", {{"camera", turnedPart}, {"part", "v"}}), t.v, {0., 1., 0.}, 1e-6,
+                       tr("hint.lab4.default_v"));
          }});
 
     // A constructor that refuses everything earns nothing: a valid camera must be built first, and
@@ -161,23 +158,26 @@ void addLab4Checks(std::vector<FunctionCheck>& checks, CaseRandom& random) {
     const glm::dvec3 p = CaseRandom::asFloat(random.vec3(-5., 5.));
     // Along an axis, so that the view and up are exactly parallel in float too.
     const glm::dvec3 along{0., double(random.integer(1, 9)) * (random.integer(0, 1) ? 1. : -1.), 0.};
-    checks.push_back(
-        {4,
-         "lookAt: a degenerate camera is refused with an error",
+    checks.add(
+        {"lookAt: a degenerate camera is refused with an error",
          {valid.call(), refusedCall({0., 0., 0.}, {0., 2., 0.}, {0., 1., 0.}),
           refusedCall({1., 2., 3.}, {1., 2., 3.}, {0., 1., 0.}), refusedCall(p, p, {0., 1., 0.}),
           refusedCall(p, p + along, {0., 2., 0.})},
          [p](const auto& out, Judge& judge) {
-             const Built built(out[0]);
-             judge.expectNear(tr("what.lab4.valid_w"), built.w, {-2. / 3., 1. / 3., -2. / 3.}, 1e-6, tr("hint.lab4.valid_w"));
-             judge.expectNear(tr("what.lab4.valid_position"), built.position, {1., 2., 3.}, 1e-6, tr("hint.lab4.position"));
-             const std::string names[] = {tr("what.lab4.up_parallel"), tr("what.lab4.position_is_target"),
-                                          tr("what.lab4.position_is_target_at", {{"position", show(p)}}),
-                                          tr("what.lab4.up_parallel_from", {{"position", show(p)}})};
-             for (std::size_t k = 1; k < out.size(); ++k)
-                 judge.expectTrue(names[k - 1], out[k][0] == 1., tr("what.lab4.refused"), tr("what.lab4.built"),
-                                  tr("hint.lab4.refuse"));
+      const Built built(out[0]);
+      judge.expectNear(tr("what.lab4.valid_w"), built.w, {-2. / 3., 1. / 3., -2. / 3.}, 1e-6, tr("hint.lab4.valid_w"));
+      judge.expectNear(tr("what.lab4.valid_position"), built.position, {1., 2., 3.}, 1e-6, tr("hint.lab4.position"));
+      const std::string names[] = {tr("what.lab4.up_parallel"), tr("what.lab4.position_is_target"),
+                                   tr("what.lab4.position_is_target_at", {{"position", show(p)}}),
+                                   tr("what.lab4.up_parallel_from", {{"position", show(p)}})};
+      for (std::size_t k = 1; k < out.size(); ++k)
+          judge.expectTrue(names[k - 1], out[k][0] == 1., tr("what.lab4.refused"), tr("what.lab4.built"),
+                           tr("hint.lab4.refuse"));
          }});
 }
+
+} // namespace
+
+RAYLAB_REGISTER_CHECKS("lab4_lookat_camera", addChecks);
 
 } // namespace raylab::grader

@@ -1,0 +1,29 @@
+// Lab 1's probes, in the agent: fillGradient on a texture whose every pixel starts at -1.
+#include "grader/protocol/agent/probes.h"
+#include "probes.h"
+
+#include "raylab/gradient.h"
+
+namespace raylab::agent {
+
+namespace {
+
+std::vector<double> fillGradientProbe(ProbeInputs in) {
+    const int width = in.integer(), height = in.integer();
+    Texture t(width, height);
+    for (int j = 0; j < height; ++j) // a pixel never written stays visible
+        for (int i = 0; i < width; ++i)
+            t.setPixel(i, j, Color(-1.f));
+    fillGradient(t);
+    std::vector<double> out;
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i)
+            appendOutputs(out, t.getPixel(i, j));
+    return out;
+}
+
+} // namespace
+
+RAYLAB_REGISTER_PROBE(grader::probes::fillGradient, fillGradientProbe);
+
+} // namespace raylab::agent
