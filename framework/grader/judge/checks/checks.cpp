@@ -84,7 +84,7 @@ namespace {
 
 struct RegisteredLab {
     CheckMaker maker;
-    std::source_location where;
+    SourcePlace where;
 };
 
 // Built on first use: the labs' checks register during static initialisation, in any order of files.
@@ -94,10 +94,10 @@ std::map<std::string, RegisteredLab>& registeredLabs() {
 }
 
 // "framework/grader/labs/lab1_first_image/checks.cpp:75": the path from the tree's top when it has one.
-std::string place(const std::source_location& where) {
-    const std::string file = where.file_name();
+std::string place(const SourcePlace& where) {
+    const std::string file = where.file;
     const std::size_t top = file.rfind("framework/");
-    return (top != std::string::npos ? file.substr(top) : file) + ":" + std::to_string(where.line());
+    return (top != std::string::npos ? file.substr(top) : file) + ":" + std::to_string(where.line);
 }
 
 [[noreturn]] void refuse(const std::vector<std::string>& problems) {
@@ -109,7 +109,7 @@ std::string place(const std::source_location& where) {
 
 } // namespace
 
-void registerChecks(const std::string& labId, CheckMaker maker, std::source_location where) {
+void registerChecks(const std::string& labId, CheckMaker maker, SourcePlace where) {
     const auto [at, added] = registeredLabs().emplace(labId, RegisteredLab{maker, where});
     if (!added)
         throw std::logic_error(place(where) + ": the checks of " + labId + " are registered twice (first at " +
@@ -156,9 +156,11 @@ std::vector<FunctionCheck> labChecks(const LabDescription& lab, CaseRandom& rand
 
 std::vector<FunctionCheck> functionChecks(const LabCatalog& labs, std::uint64_t seed) {
     std::vector<std::string> problems;
-    for (const auto& [id, registered] : registeredLabs())
+    for (const auto& registered : registeredLabs()) { // no structured binding: Clang 14 cannot capture one
+        const std::string& id = registered.first;
         if (std::none_of(labs.labs.begin(), labs.labs.end(), [&](const LabDescription& l) { return l.id == id; }))
-            problems.push_back(tr("check.unknown_lab", {{"where", place(registered.where)}, {"id", id}}));
+            problems.push_back(tr("check.unknown_lab", {{"where", place(registered.second.where)}, {"id", id}}));
+    }
     if (!problems.empty()) refuse(problems);
     CaseRandom random(seed); // one generator through the labs in order: each lab draws after the one before
     std::vector<FunctionCheck> checks;

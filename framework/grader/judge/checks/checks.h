@@ -12,7 +12,6 @@
 #include <cstdint>
 #include <functional>
 #include <random>
-#include <source_location>
 #include <string>
 #include <vector>
 
@@ -72,15 +71,25 @@ private:
     std::mt19937_64 m_engine;
 };
 
+// Where a line of code is: the file and line of the call whose default argument is here() (as
+// std::source_location, which Clang 14 lacks with libstdc++; GCC, Clang and MSVC have these builtins).
+struct SourcePlace {
+    const char* file = "";
+    unsigned line = 0;
+    static constexpr SourcePlace here(const char* file = __builtin_FILE(), unsigned line = __builtin_LINE()) {
+        return {file, line};
+    }
+};
+
 // A lab's checks, as its grading folder adds them (framework/grader/labs/<lab>/checks.cpp), each by
 // the name its lab.toml declares; `where` is the line that adds it, for the catalogue's errors.
 class LabChecks {
 public:
     struct Added {
         FunctionCheck check;
-        std::source_location where;
+        SourcePlace where;
     };
-    void add(FunctionCheck check, std::source_location where = std::source_location::current()) {
+    void add(FunctionCheck check, SourcePlace where = SourcePlace::here()) {
         m_added.push_back({std::move(check), where});
     }
     std::vector<Added>& added() { return m_added; }
@@ -93,11 +102,11 @@ using CheckMaker = void (*)(LabChecks& checks, CaseRandom& random);
 
 // Adds the checks of the lab whose id (its folder's name) is `labId`; a lab registered twice is a
 // std::logic_error.
-void registerChecks(const std::string& labId, CheckMaker maker, std::source_location where);
+void registerChecks(const std::string& labId, CheckMaker maker, SourcePlace where);
 
 struct ChecksRegistrar {
     ChecksRegistrar(const std::string& labId, CheckMaker maker,
-                    std::source_location where = std::source_location::current()) {
+                    SourcePlace where = SourcePlace::here()) {
         registerChecks(labId, maker, where);
     }
 };

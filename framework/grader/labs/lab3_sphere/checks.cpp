@@ -11,7 +11,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <source_location>
 #include <utility>
 
 namespace raylab::grader {
@@ -96,7 +95,7 @@ bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
 }
 
 void addIntersect(LabChecks& checks, const std::string& name, std::vector<Case> cases,
-                  std::source_location where = std::source_location::current()) {
+                  SourcePlace where = SourcePlace::here()) {
     std::vector<protocol::Call> calls;
     for (const Case& c : cases)
         calls.push_back(call(c));
@@ -111,7 +110,7 @@ void addIntersect(LabChecks& checks, const std::string& name, std::vector<Case> 
 // cancellation is blamed only when the near root is taken where it should be, and the hint says
 // what the near sphere showed otherwise.
 void addFarIntersect(LabChecks& checks, const std::string& name, std::vector<Case> cases,
-                     std::source_location where = std::source_location::current()) {
+                     SourcePlace where = SourcePlace::here()) {
     const Case nearSphere{"", kSphere, kAlongZ, 0., kInf, 2., 1e-5, ""};
     std::vector<protocol::Call> calls{call(nearSphere)};
     for (const Case& c : cases)
@@ -224,7 +223,7 @@ glm::dvec3 liForHit(const LiCase& c, bool found, double t) {
 // intersect for each ray, and computeNormal at the true hit, so that a Li right for a wrong hit or a
 // wrong normal is sent to that function, not told to fix its own formula.
 void addLi(LabChecks& checks, const std::string& name, std::vector<LiCase> cases,
-           std::source_location where = std::source_location::current()) {
+           SourcePlace where = SourcePlace::here()) {
     std::vector<protocol::Call> calls;
     for (const LiCase& c : cases)
         calls.push_back(liCall(c.shading, c.sphere, c.colour, c.background, c.ray));
