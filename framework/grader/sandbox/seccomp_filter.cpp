@@ -40,9 +40,11 @@ bool haveSeccomp() {
 namespace {
 
 bool addRules(scmp_filter_ctx filter) {
-    // No network: a local socket (AF_UNIX) is all a program of the labs could want.
+    // No network: a local socket (AF_UNIX) is all a program of the labs could want. The condition
+    // is written out, not with SCMP_A0: its C compound literal is not C++.
+    const scmp_arg_cmp domainNotUnix{0, SCMP_CMP_NE, AF_UNIX, 0};
     for (const int call : {SCMP_SYS(socket), SCMP_SYS(socketpair)})
-        if (seccomp_rule_add(filter, SCMP_ACT_ERRNO(EAFNOSUPPORT), call, 1, SCMP_A0(SCMP_CMP_NE, AF_UNIX)) != 0)
+        if (seccomp_rule_add(filter, SCMP_ACT_ERRNO(EAFNOSUPPORT), call, 1, domainNotUnix) != 0)
             return false;
     // No reading or writing another process (another agent of the same user): ptrace, process_vm_*;
     // io_uring would open sockets without the socket call.
