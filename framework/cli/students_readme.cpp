@@ -43,7 +43,7 @@ std::string readme(const fs::path& tree, const grader::LabCatalog& labs, Languag
                 "\n";
     }
     return text + "\n" + say("distribute.readme_build", {{"build", kStudentsBuildCommand}}) +
-           say("distribute.readme_use") + tr(language, "distribute.readme_holds") + "\n";
+           say("distribute.readme_use") + say("distribute.readme_windows") + tr(language, "distribute.readme_holds") + "\n";
 }
 
 } // namespace

@@ -114,6 +114,11 @@ TEST_CASE("the students' README and LISEZMOI: their tree, their commands, no sol
         REQUIRE(at != std::string::npos);
         const std::string preset = readme.substr(at + build.size(), readme.find('\n', at) - at - build.size());
         CHECK_MESSAGE(distributed.output.find(build + preset) != std::string::npos, distributed.output);
+        // Windows: the workflow preset it names is one of the tree's (vcpkg.json is a link, above).
+        const std::string windows = "cmake --workflow --preset windows-figures";
+        CHECK_MESSAGE(readme.find(windows) != std::string::npos, name);
+        const std::vector<std::string> presets = workflowPresets(tree);
+        CHECK(std::find(presets.begin(), presets.end(), "windows-figures") != presets.end());
     }
     CHECK(readFile(tree / "README.md").find("[LISEZMOI.md](LISEZMOI.md)") != std::string::npos);
     CHECK(readFile(tree / "LISEZMOI.md").find("[docs/glossaire.md](docs/glossaire.md)") != std::string::npos);
