@@ -118,7 +118,8 @@ TEST_CASE("a bad description is refused, naming the file, the line and the key")
         return text.replace(text.find(from), from.size(), to);
     };
     refused(replaced(kLab2, "points = 3", "points = -1"), ":19: [[check]] #1 points: points must be a number >= 0");
-    refused(replaced(kLab2, "points = 1.5", "points = \"two\""), ":15: [[figure]] #1 points: points must be a number >= 0");
+    refused(replaced(kLab2, "points = 1.5", "points = \"two\""), ":15: [[figure]] #1 points: expected a number, got a string");
+    refused(replaced(kLab2, "points = 1.5", "points = nan"), ":15: [[figure]] #1 points: must be finite, got nan");
     refused(replaced(kLab2, "uses = [1]\n\n[[function]]", "uses = [1, 3]\n\n[[function]]"), "uses: there is no lab 3");
     refused(replaced(kLab2, "points = 1\nuses = [1]", "points = 1\nuses = [4]"), ":24: [[check]] #2 uses: lab 4 is not in the lab's uses");
     refused(replaced(kLab2, "id = \"lab2_rays\"", "id = \"lab2_other\""), ":2: id: \"lab2_other\" is not the folder's name");
@@ -133,7 +134,7 @@ TEST_CASE("a bad description is refused, naming the file, the line and the key")
     refused(replaced(kLab2, ", fr = \"Rayons\" }", " }"), "title.fr: missing");
     refused(replaced(kLab2, "[[check]]\nname = \"trace: another check\"", "[[check]]\nname = \"trace: a check\""),
             "check: the name \"trace: a check\" is there twice");
-    refused(replaced(kLab2, "number = 2\n", "number = 2\n[oops\n"), "lab.toml:2: not valid TOML");
+    refused(replaced(kLab2, "number = 2\n", "number = 2\n[oops\n"), "lab.toml:2:6: not valid TOML: ");
     course.lab("lab2_rays", kLab2);
     course.lab("lab1_again", replaced(kLab1, "lab1_first", "lab1_again"));
     CHECK_THROWS_WITH_AS(course.load(), doctest::Contains("number: 1 is also the number of"), std::runtime_error);
