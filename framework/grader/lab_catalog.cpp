@@ -4,6 +4,7 @@
 #include "src/toml_reader.h"
 
 #include <algorithm>
+#include <charconv>
 #include <limits>
 #include <map>
 #include <optional>
@@ -68,16 +69,33 @@ bool plainFileName(const std::string& name) {
     return plain && name.size() > 4 && name.compare(name.size() - 4, 4, ".cpp") == 0;
 }
 
-// The lab's number, id (its folder's name, "labN_..."), titles and the labs it uses.
+// The N of a folder named lab<N>_<name> (N without a leading zero), as CMake reads it
+// (cmake/RaylabLabs.cmake); nullopt for any other name.
+std::optional<int> folderNumber(const std::string& folder) {
+    const std::size_t underscore = folder.find('_');
+    if (folder.rfind("lab", 0) != 0 || underscore == std::string::npos || underscore + 1 == folder.size() ||
+        underscore == 3 || folder[3] == '0')
+        return std::nullopt;
+    const char* first = folder.data() + 3;
+    const char* last = folder.data() + underscore;
+    int number = 0;
+    const auto [end, error] = std::from_chars(first, last, number);
+    const bool digits = std::all_of(first, last, [](char c) { return c >= '0' && c <= '9'; });
+    if (!digits || error != std::errc() || end != last) return std::nullopt;
+    return number;
+}
+
+// The lab's number and id, which its folder's name lab<N>_<name> says too (CMake builds the labs
+// from their folders' names without reading lab.toml), its titles and the labs it uses.
 void readHeading(const TomlReader& r, const toml::table& root, const fs::path& file, LabDescription& lab) {
     lab.number = int(r.requiredInteger(root, "", "number", 1, std::numeric_limits<int>::max()));
     lab.id = r.text(root, "", "id");
     const std::string folder = file.parent_path().filename().string();
     if (lab.id != folder) r.fail(root.get("id"), "id", "\"" + lab.id + "\" is not the folder's name, " + folder);
-    const std::string prefix = "lab" + std::to_string(lab.number) + "_";
-    if (lab.id.rfind(prefix, 0) != 0)
-        r.fail(root.get("id"), "id",
-               "\"" + lab.id + "\" must begin with " + prefix + " (number = " + std::to_string(lab.number) + ")");
+    const std::optional<int> number = folderNumber(folder);
+    if (!number) r.fail(root.get("id"), "id", tr("toml.lab_folder", {{"folder", folder}}));
+    if (lab.number != *number)
+        r.fail(root.get("number"), "number", tr("toml.lab_number", {{"number", std::to_string(lab.number)}, {"folder", folder}}));
     std::tie(lab.titleEn, lab.titleFr) = inTwoLanguages(r, root, "", "title");
     lab.uses = labs(r, root, "").value_or(std::vector<int>{});
     if (contains(lab.uses, lab.number)) r.fail(root.get("uses"), "uses", "a lab does not use itself");
