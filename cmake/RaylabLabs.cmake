@@ -2,9 +2,9 @@
 # from solutions/ (the reference), when solutions/ is there. A program links one of each lab:
 # which one comes from where is a list of the labs taken from solutions/.
 #
-# The labs are found, not listed: every labs/lab*/lab.toml is a lab, whose `number` and `id` (its
-# folder's name) are read here. Sets RAYLAB_LAB_NUMBERS (sorted), RAYLAB_LAB_FOLDER_<n> and
-# RAYLAB_LABS (the folders, in the order of their numbers).
+# The labs are found, not listed: every labs/lab<N>_<name>/lab.toml is lab N, whose id is its
+# folder's name. Sets RAYLAB_LAB_NUMBERS (sorted), RAYLAB_LAB_FOLDER_<n> and RAYLAB_LABS (the
+# folders, in the order of their numbers).
 
 #
 # The reference labs are solutions/<lab folder>/*.cpp, or, in Gradescope's image, the objects compiled
@@ -24,32 +24,20 @@ else()
   set(RAYLAB_HAVE_REFERENCE_LABS OFF)
 endif()
 
-# raylab_read_lab_key(OUT FILE KEY REGEX): the value of FILE's top-level line `KEY = value` (the
-# lines before its first [table]; the figures' and checks' keys come after).
-function(raylab_read_lab_key out file key value_regex)
-  file(READ ${file} text)
-  string(REGEX REPLACE "\n\\[.*" "" top "${text}")
-  string(REGEX MATCHALL "(^|\n)${key}[ \t]*=[^\n]*" lines "${top}")
-  list(LENGTH lines count)
-  string(STRIP "${lines}" line)
-  if(NOT count EQUAL 1 OR NOT line MATCHES "^${key}[ \t]*=[ \t]*${value_regex}[ \t]*(#.*)?$")
-    message(FATAL_ERROR "${file}: expected one top-level line `${key} = ...` matching ${value_regex} (see docs/instructors.md)")
-  endif()
-  set(${out} ${CMAKE_MATCH_1} PARENT_SCOPE)
-endfunction()
-
+# A lab's number and id come from its folder's name, lab<N>_<name> (N without a leading zero), not
+# from lab.toml, which CMake cannot parse; the grader's catalogue (framework/grader/lab_catalog.cpp)
+# checks that lab.toml's `number` and `id` say the same.
 file(GLOB raylab_lab_files CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/labs/lab*/lab.toml)
 set(RAYLAB_LAB_NUMBERS "")
 foreach(file IN LISTS raylab_lab_files)
   get_filename_component(folder_path ${file} DIRECTORY)
   get_filename_component(folder ${folder_path} NAME)
-  raylab_read_lab_key(number ${file} number "([0-9]+)")
-  raylab_read_lab_key(id ${file} id "\"([^\"]+)\"")
-  if(NOT id STREQUAL folder OR NOT id MATCHES "^lab${number}_")
-    message(FATAL_ERROR "${file}: id = \"${id}\" must be the folder's name and begin with lab${number}_")
+  if(NOT folder MATCHES "^lab([1-9][0-9]*)_.")
+    message(FATAL_ERROR "${file}: the folder ${folder} is not named lab<number>_<name>, such as lab3_sphere (see docs/instructors.md)")
   endif()
+  set(number ${CMAKE_MATCH_1})
   if(number IN_LIST RAYLAB_LAB_NUMBERS)
-    message(FATAL_ERROR "${file}: number = ${number} is also lab ${RAYLAB_LAB_FOLDER_${number}}'s")
+    message(FATAL_ERROR "${file}: the folders ${RAYLAB_LAB_FOLDER_${number}} and ${folder} both have the number ${number} (one lab a number)")
   endif()
   list(APPEND RAYLAB_LAB_NUMBERS ${number})
   set(RAYLAB_LAB_FOLDER_${number} ${folder})

@@ -1,11 +1,11 @@
 #include "grader/lab_catalog.h"
 
 #include "src/messages.h"
-
-#include <toml++/toml.h>
+#include "src/toml_reader.h"
 
 #include <algorithm>
-#include <initializer_list>
+#include <charconv>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -16,88 +16,46 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Reads one lab.toml strictly: every problem names the file, the line and the key.
-class Reader {
-public:
-    explicit Reader(fs::path file) : m_file(std::move(file)) {}
-
-    [[noreturn]] void fail(const toml::node* node, const std::string& key, const std::string& problem) const {
-        const int line = node != nullptr ? int(node->source().begin.line) : 0;
-        throw std::runtime_error(m_file.string() + ":" + (line > 0 ? std::to_string(line) + ":" : std::string()) + " " +
-                                 key + ": " + problem);
+// A lab's `uses`, or an item's: lab numbers.
+std::optional<std::vector<int>> labs(const TomlReader& r, const toml::table& t, const std::string& where) {
+    const toml::array* list = r.array(t, where, "uses");
+    if (list == nullptr) return std::nullopt;
+    std::vector<int> numbers;
+    for (const toml::node& n : *list) {
+        const std::optional<int64_t> value = n.value_exact<int64_t>();
+        if (!value || *value < 1) r.fail(&n, where + "uses", "expected a list of lab numbers, e.g. [2, 3]");
+        numbers.push_back(int(*value));
     }
+    return numbers;
+}
 
-    void onlyKeys(const toml::table& t, const std::string& where, std::initializer_list<std::string_view> keys) const {
-        for (const auto& [key, node] : t)
-            if (std::find(keys.begin(), keys.end(), key.str()) == keys.end()) {
-                std::string known;
-                for (std::string_view k : keys)
-                    known += (known.empty() ? "" : ", ") + std::string(k);
-                fail(&node, where + std::string(key.str()), "unknown key (expected " + known + ")");
-            }
-    }
+double points(const TomlReader& r, const toml::table& t, const std::string& where) {
+    const double value = r.requiredNumber(t, where, "points");
+    if (value < 0.) r.fail(t.get("points"), where + "points", "points must be a number >= 0");
+    return value;
+}
 
-    std::string text(const toml::table& t, const std::string& where, std::string_view key) const {
-        const toml::node* node = t.get(key);
-        if (node == nullptr) fail(&t, where + std::string(key), "missing");
-        const std::optional<std::string> value = node->value_exact<std::string>();
-        if (!value || value->empty()) fail(node, where + std::string(key), "expected a non-empty string");
-        return *value;
-    }
+// `{ en = "...", fr = "..." }`
+std::pair<std::string, std::string> inTwoLanguages(const TomlReader& r, const toml::table& t, const std::string& where,
+                                                   std::string_view key) {
+    const toml::node* node = t.get(key);
+    const toml::table* both = node != nullptr ? node->as_table() : nullptr;
+    if (both == nullptr)
+        r.fail(node != nullptr ? node : &t, where + std::string(key), "expected { en = \"...\", fr = \"...\" }");
+    const std::string inner = where + std::string(key) + ".";
+    r.onlyKeys(*both, inner, {"en", "fr"});
+    return {r.text(*both, inner, "en"), r.text(*both, inner, "fr")};
+}
 
-    double points(const toml::table& t, const std::string& where) const {
-        const toml::node* node = t.get("points");
-        if (node == nullptr) fail(&t, where + "points", "missing");
-        const std::optional<double> value = node->value<double>();
-        if (!value || *value < 0.) fail(node, where + "points", "points must be a number >= 0");
-        return *value;
-    }
-
-    std::optional<std::vector<int>> labs(const toml::table& t, const std::string& where) const {
-        const toml::node* node = t.get("uses");
-        if (node == nullptr) return std::nullopt;
-        const toml::array* list = node->as_array();
-        if (list == nullptr) fail(node, where + "uses", "expected a list of lab numbers, e.g. [2, 3]");
-        std::vector<int> numbers;
-        for (const toml::node& n : *list) {
-            const std::optional<int64_t> value = n.value_exact<int64_t>();
-            if (!value || *value < 1) fail(&n, where + "uses", "expected a list of lab numbers, e.g. [2, 3]");
-            numbers.push_back(int(*value));
-        }
-        return numbers;
-    }
-
-    // `{ en = "...", fr = "..." }`
-    std::pair<std::string, std::string> inTwoLanguages(const toml::table& t, const std::string& where,
-                                                       std::string_view key) const {
-        const toml::node* node = t.get(key);
-        const toml::table* both = node != nullptr ? node->as_table() : nullptr;
-        if (both == nullptr)
-            fail(node != nullptr ? node : &t, where + std::string(key), "expected { en = \"...\", fr = \"...\" }");
-        const std::string inner = where + std::string(key) + ".";
-        onlyKeys(*both, inner, {"en", "fr"});
-        return {text(*both, inner, "en"), text(*both, inner, "fr")};
-    }
-
-    template <class Item, class ReadOne>
-    std::vector<Item> list(const toml::table& root, std::string_view key, ReadOne readOne) const {
-        std::vector<Item> items;
-        const toml::node* node = root.get(key);
-        if (node == nullptr) return items;
-        const toml::array* array = node->as_array();
-        if (array == nullptr || !array->is_array_of_tables())
-            fail(node, std::string(key), "expected [[" + std::string(key) + "]] tables");
-        for (std::size_t k = 0; k < array->size(); ++k)
-            items.push_back(
-                readOne(*(*array)[k].as_table(), "[[" + std::string(key) + "]] #" + std::to_string(k + 1) + " "));
-        return items;
-    }
-
-    const fs::path& file() const { return m_file; }
-
-private:
-    fs::path m_file;
-};
+// The [[key]] tables, each read by readOne(table, "[[key]] #n ").
+template <class Item, class ReadOne>
+std::vector<Item> list(const TomlReader& r, const toml::table& root, std::string_view key, ReadOne readOne) {
+    std::vector<Item> items;
+    const std::vector<const toml::table*> tables = r.tables(root, key);
+    for (std::size_t k = 0; k < tables.size(); ++k)
+        items.push_back(readOne(*tables[k], "[[" + std::string(key) + "]] #" + std::to_string(k + 1) + " "));
+    return items;
+}
 
 bool contains(const std::vector<int>& list, int value) {
     return std::find(list.begin(), list.end(), value) != list.end();
@@ -111,35 +69,40 @@ bool plainFileName(const std::string& name) {
     return plain && name.size() > 4 && name.compare(name.size() - 4, 4, ".cpp") == 0;
 }
 
-toml::table parseToml(const fs::path& file) {
-    try {
-        return toml::parse_file(file.string());
-    } catch (const toml::parse_error& e) {
-        throw std::runtime_error(file.string() + ":" + std::to_string(e.source().begin.line) +
-                                 ": not valid TOML: " + std::string(e.description()));
-    }
+// The N of a folder named lab<N>_<name> (N without a leading zero), as CMake reads it
+// (cmake/RaylabLabs.cmake); nullopt for any other name.
+std::optional<int> folderNumber(const std::string& folder) {
+    const std::size_t underscore = folder.find('_');
+    if (folder.rfind("lab", 0) != 0 || underscore == std::string::npos || underscore + 1 == folder.size() ||
+        underscore == 3 || folder[3] == '0')
+        return std::nullopt;
+    const char* first = folder.data() + 3;
+    const char* last = folder.data() + underscore;
+    int number = 0;
+    const auto [end, error] = std::from_chars(first, last, number);
+    const bool digits = std::all_of(first, last, [](char c) { return c >= '0' && c <= '9'; });
+    if (!digits || error != std::errc() || end != last) return std::nullopt;
+    return number;
 }
 
-// The lab's number, id (its folder's name, "labN_..."), titles and the labs it uses.
-void readHeading(const Reader& r, const toml::table& root, const fs::path& file, LabDescription& lab) {
-    const toml::node* number = root.get("number");
-    if (number == nullptr || !number->is_integer() || number->value_or(int64_t(0)) < 1)
-        r.fail(number != nullptr ? number : &root, "number", "expected the lab's number, an integer >= 1");
-    lab.number = int(number->value_or(int64_t(0)));
+// The lab's number and id, which its folder's name lab<N>_<name> says too (CMake builds the labs
+// from their folders' names without reading lab.toml), its titles and the labs it uses.
+void readHeading(const TomlReader& r, const toml::table& root, const fs::path& file, LabDescription& lab) {
+    lab.number = int(r.requiredInteger(root, "", "number", 1, std::numeric_limits<int>::max()));
     lab.id = r.text(root, "", "id");
     const std::string folder = file.parent_path().filename().string();
     if (lab.id != folder) r.fail(root.get("id"), "id", "\"" + lab.id + "\" is not the folder's name, " + folder);
-    const std::string prefix = "lab" + std::to_string(lab.number) + "_";
-    if (lab.id.rfind(prefix, 0) != 0)
-        r.fail(root.get("id"), "id",
-               "\"" + lab.id + "\" must begin with " + prefix + " (number = " + std::to_string(lab.number) + ")");
-    std::tie(lab.titleEn, lab.titleFr) = r.inTwoLanguages(root, "", "title");
-    lab.uses = r.labs(root, "").value_or(std::vector<int>{});
+    const std::optional<int> number = folderNumber(folder);
+    if (!number) r.fail(root.get("id"), "id", tr("toml.lab_folder", {{"folder", folder}}));
+    if (lab.number != *number)
+        r.fail(root.get("number"), "number", tr("toml.lab_number", {{"number", std::to_string(lab.number)}, {"folder", folder}}));
+    std::tie(lab.titleEn, lab.titleFr) = inTwoLanguages(r, root, "", "title");
+    lab.uses = labs(r, root, "").value_or(std::vector<int>{});
     if (contains(lab.uses, lab.number)) r.fail(root.get("uses"), "uses", "a lab does not use itself");
 }
 
-std::vector<LabFunction> readFunctions(const Reader& r, const toml::table& root, const fs::path& file) {
-    return r.list<LabFunction>(root, "function", [&](const toml::table& t, const std::string& where) {
+std::vector<LabFunction> readFunctions(const TomlReader& r, const toml::table& root, const fs::path& file) {
+    return list<LabFunction>(r, root, "function", [&](const toml::table& t, const std::string& where) {
         r.onlyKeys(t, where, {"file", "name"});
         LabFunction f{r.text(t, where, "file"), r.text(t, where, "name")};
         // The grader copies a submission's files under these names and CMake lists them: a plain name only.
@@ -154,18 +117,18 @@ std::vector<LabFunction> readFunctions(const Reader& r, const toml::table& root,
 }
 
 // An item uses what it says, which must be among the lab's `uses`.
-std::vector<int> itemUses(const Reader& r, const LabDescription& lab, const toml::table& t, const std::string& where,
+std::vector<int> itemUses(const TomlReader& r, const LabDescription& lab, const toml::table& t, const std::string& where,
                           const std::vector<int>& fallback) {
-    const std::vector<int> uses = r.labs(t, where).value_or(fallback);
+    const std::vector<int> uses = labs(r, t, where).value_or(fallback);
     for (int other : uses)
         if (!contains(lab.uses, other))
             r.fail(t.get("uses"), where + "uses", "lab " + std::to_string(other) + " is not in the lab's uses");
     return uses;
 }
 
-std::vector<LabFigure> readFigures(const Reader& r, const toml::table& root, const LabDescription& lab,
+std::vector<LabFigure> readFigures(const TomlReader& r, const toml::table& root, const LabDescription& lab,
                                    const fs::path& scenes) {
-    return r.list<LabFigure>(root, "figure", [&](const toml::table& t, const std::string& where) {
+    return list<LabFigure>(r, root, "figure", [&](const toml::table& t, const std::string& where) {
         r.onlyKeys(t, where, {"id", "scene", "handout", "caption", "points", "uses"});
         LabFigure f;
         f.id = r.text(t, where, "id");
@@ -177,17 +140,17 @@ std::vector<LabFigure> readFigures(const Reader& r, const toml::table& root, con
         if (!fs::is_regular_file(f.scene, error))
             r.fail(t.get("scene"), where + "scene", "no scene file " + f.scene.string());
         f.handout = r.text(t, where, "handout");
-        std::tie(f.captionEn, f.captionFr) = r.inTwoLanguages(t, where, "caption");
-        f.points = r.points(t, where);
+        std::tie(f.captionEn, f.captionFr) = inTwoLanguages(r, t, where, "caption");
+        f.points = points(r, t, where);
         f.uses = itemUses(r, lab, t, where, lab.uses);
         return f;
     });
 }
 
-std::vector<LabCheck> readChecks(const Reader& r, const toml::table& root, const LabDescription& lab) {
-    return r.list<LabCheck>(root, "check", [&](const toml::table& t, const std::string& where) {
+std::vector<LabCheck> readChecks(const TomlReader& r, const toml::table& root, const LabDescription& lab) {
+    return list<LabCheck>(r, root, "check", [&](const toml::table& t, const std::string& where) {
         r.onlyKeys(t, where, {"name", "points", "uses"});
-        LabCheck c{r.text(t, where, "name"), r.points(t, where), itemUses(r, lab, t, where, {}), int(t.source().begin.line)};
+        LabCheck c{r.text(t, where, "name"), points(r, t, where), itemUses(r, lab, t, where, {}), int(t.source().begin.line)};
         if (c.name.find_first_of(",*?") != std::string::npos)
             r.fail(t.get("name"), where + "name", "\"" + c.name + "\": doctest's filters split names on , * ?");
         return c;
@@ -195,7 +158,7 @@ std::vector<LabCheck> readChecks(const Reader& r, const toml::table& root, const
 }
 
 // Figure ids and check names share one namespace within a lab.
-void rejectDuplicateNames(const Reader& r, const toml::table& root, const LabDescription& lab) {
+void rejectDuplicateNames(const TomlReader& r, const toml::table& root, const LabDescription& lab) {
     std::map<std::string, int> seen;
     for (const LabFigure& f : lab.figures)
         if (seen[f.id]++) r.fail(root.get("figure"), "figure", "the id " + f.id + " is there twice");
@@ -266,8 +229,8 @@ double LabCatalog::figurePoints(const std::string& id, double fallback) const {
 }
 
 LabDescription loadLabDescription(const fs::path& file, const fs::path& scenes) {
-    const toml::table root = parseToml(file);
-    const Reader r(file);
+    const toml::table root = parseTomlFile(file);
+    const TomlReader r(file);
     r.onlyKeys(root, "", {"number", "id", "title", "uses", "function", "figure", "check"});
     LabDescription lab;
     lab.file = file;

@@ -118,11 +118,13 @@ TEST_CASE("a bad description is refused, naming the file, the line and the key")
         return text.replace(text.find(from), from.size(), to);
     };
     refused(replaced(kLab2, "points = 3", "points = -1"), ":19: [[check]] #1 points: points must be a number >= 0");
-    refused(replaced(kLab2, "points = 1.5", "points = \"two\""), ":15: [[figure]] #1 points: points must be a number >= 0");
+    refused(replaced(kLab2, "points = 1.5", "points = \"two\""), ":15: [[figure]] #1 points: expected a number, got a string");
+    refused(replaced(kLab2, "points = 1.5", "points = nan"), ":15: [[figure]] #1 points: must be finite, got nan");
     refused(replaced(kLab2, "uses = [1]\n\n[[function]]", "uses = [1, 3]\n\n[[function]]"), "uses: there is no lab 3");
     refused(replaced(kLab2, "points = 1\nuses = [1]", "points = 1\nuses = [4]"), ":24: [[check]] #2 uses: lab 4 is not in the lab's uses");
     refused(replaced(kLab2, "id = \"lab2_rays\"", "id = \"lab2_other\""), ":2: id: \"lab2_other\" is not the folder's name");
-    refused(replaced(kLab2, "number = 2", "number = 3"), "must begin with lab3_");
+    refused(replaced(kLab2, "number = 2", "number = 3"),
+            "lab.toml:1: number: 3 is not the number of the lab's folder, lab2_rays (a lab's folder is lab<number>_<name>)");
     refused(replaced(kLab2, "handout = \"2(b)\"", "hand_out = \"2(b)\""), ":13: [[figure]] #1 hand_out: unknown key");
     refused(replaced(kLab2, "lab2_picture.toml", "lab2_missing.toml"), "[[figure]] #1 scene: expected lab2_picture.toml");
     refused(replaced(kLab2, "file = \"code.cpp\"", "file = \"gone.cpp\""), ":7: [[function]] #1 file: no file gone.cpp");
@@ -133,10 +135,26 @@ TEST_CASE("a bad description is refused, naming the file, the line and the key")
     refused(replaced(kLab2, ", fr = \"Rayons\" }", " }"), "title.fr: missing");
     refused(replaced(kLab2, "[[check]]\nname = \"trace: another check\"", "[[check]]\nname = \"trace: a check\""),
             "check: the name \"trace: a check\" is there twice");
-    refused(replaced(kLab2, "number = 2\n", "number = 2\n[oops\n"), "lab.toml:2: not valid TOML");
+    refused(replaced(kLab2, "number = 2\n", "number = 2\n[oops\n"), "lab.toml:2:6: not valid TOML: ");
     course.lab("lab2_rays", kLab2);
     course.lab("lab1_again", replaced(kLab1, "lab1_first", "lab1_again"));
     CHECK_THROWS_WITH_AS(course.load(), doctest::Contains("number: 1 is also the number of"), std::runtime_error);
+}
+
+TEST_CASE("a lab's number and id are those of its folder's name, lab<N>_<name>, which CMake reads") {
+    const Course course;
+    course.scene("lab2_picture");
+    course.lab("lab1_first", kLab1); // lab 2 uses it: the folder's name is the only problem
+    for (const char* folder : {"lab02_rays", "lab-2_rays", "lab_rays", "lab2_"}) {
+        std::string text = kLab2;
+        text.replace(text.find("lab2_rays"), 9, folder);
+        const fs::path file = course.lab(folder, text);
+        CHECK_THROWS_WITH_AS(course.load(),
+                             (file.string() + ":2: id: the folder " + folder +
+                              " is not named lab<number>_<name>, such as lab3_sphere").c_str(),
+                             std::runtime_error);
+        fs::remove_all(file.parent_path());
+    }
 }
 
 TEST_CASE("a lab's files: each declared once, in order, and no two labs share a file's name") {

@@ -121,7 +121,7 @@ TEST_CASE("errors name the file, the line and the key") {
           "scene.toml:2: [render] sampler: 'magic' is not one of center, random, stratified, grid, sobol, r2, adaptive");
     CHECK(errorOf("[camera]\nlook_at = [0, 0, 1]\n") ==
           "scene.toml:1: [camera]: a lookAt camera needs both position and look_at (up defaults to [0, 1, 0])");
-    CHECK(errorOf("[image\nwidth = 3\n").rfind("scene.toml:1: not valid TOML", 0) == 0);
+    CHECK(errorOf("[image\nwidth = 3\n").rfind("scene.toml:1:7: not valid TOML: ", 0) == 0);
     CHECK(errorOf("colour = 3\n") ==
           "scene.toml:1: colour: unknown key (known keys: figure, image, camera, render, background, sphere)");
 }

@@ -1,8 +1,7 @@
 #include "grader/judge/diagnosis.h"
 
 #include "src/messages.h"
-
-#include <toml++/toml.h>
+#include "src/toml_reader.h"
 
 #include <cmath>
 #include <limits>
@@ -27,36 +26,37 @@ std::vector<std::pair<std::string_view, std::string>> Mistake::args() const {
     return {{"name", name()}, {"hint", hint()}, {"label", shown}, {"lab", std::to_string(lab)}, {"function", function}};
 }
 
+namespace {
+
+Mistake readMistake(const TomlReader& r, const toml::table& m, const std::string& where) {
+    r.onlyKeys(m, where, {"id", "name", "name_fr", "hint", "hint_fr", "label", "lab", "function", "check"});
+    Mistake mistake;
+    mistake.id = r.text(m, where, "id");
+    mistake.nameEn = r.text(m, where, "name");
+    mistake.nameFr = r.text(m, where, "name_fr");
+    mistake.hintEn = r.text(m, where, "hint");
+    mistake.hintFr = r.text(m, where, "hint_fr");
+    mistake.label = r.string(m, where, "label").value_or("");
+    mistake.lab = int(r.requiredInteger(m, where, "lab", 1, std::numeric_limits<int>::max()));
+    mistake.function = r.text(m, where, "function");
+    mistake.check = r.string(m, where, "check").value_or("");
+    return mistake;
+}
+
+} // namespace
+
 std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
     std::vector<Mistake> mistakes;
     const fs::path file = referenceFolder / "mistakes.toml";
     std::error_code error;
     if (!fs::exists(file, error)) return mistakes;
-    toml::table t;
-    try {
-        t = toml::parse_file(file.string());
-    } catch (const toml::parse_error& e) {
-        throw std::runtime_error(file.string() + ": " + std::string(e.description()));
-    }
-    const toml::array* list = t["mistake"].as_array();
-    if (!list) throw std::runtime_error(file.string() + ": expected [[mistake]] entries");
-    for (const toml::node& node : *list) {
-        const toml::table* m = node.as_table();
-        if (!m) throw std::runtime_error(file.string() + ": each [[mistake]] is a table");
-        Mistake mistake;
-        mistake.id = (*m)["id"].value_or(std::string());
-        mistake.nameEn = (*m)["name"].value_or(std::string());
-        mistake.nameFr = (*m)["name_fr"].value_or(std::string());
-        mistake.hintEn = (*m)["hint"].value_or(std::string());
-        mistake.hintFr = (*m)["hint_fr"].value_or(std::string());
-        mistake.label = (*m)["label"].value_or(std::string());
-        mistake.lab = (*m)["lab"].value_or(0);
-        mistake.check = (*m)["check"].value_or(std::string());
-        mistake.function = (*m)["function"].value_or(std::string());
-        if (mistake.id.empty() || mistake.nameEn.empty() || mistake.hintEn.empty() || mistake.nameFr.empty() ||
-            mistake.hintFr.empty() || mistake.function.empty() || mistake.lab < 1)
-            throw std::runtime_error(file.string() + ": mistake '" + mistake.id +
-                                     "' needs id, name, name_fr, hint, hint_fr, function and lab (a lab's number)");
+    const toml::table root = parseTomlFile(file);
+    const TomlReader r(file);
+    r.onlyKeys(root, "", {"mistake"});
+    const std::vector<const toml::table*> list = r.tables(root, "mistake");
+    if (list.empty()) r.fail(nullptr, "[[mistake]]", tr("toml.missing"));
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        Mistake mistake = readMistake(r, *list[k], "[[mistake]] #" + std::to_string(k + 1) + " ");
         const fs::path folder = referenceFolder / "mistakes" / mistake.id;
         if (fs::is_directory(folder, error))
             for (const auto& entry : fs::directory_iterator(folder))

@@ -1,11 +1,14 @@
 #include "grader/judge/references.h"
 
 #include "src/atomic_file.h"
+#include "src/messages.h"
+#include "src/toml_reader.h"
 
 #include <toml++/toml.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -33,15 +36,18 @@ Image8 readSized(const fs::path& file, int width, int height) {
     return image;
 }
 
-StatisticalReference readStats(const fs::path& folder, const std::string& id, const toml::table& t, int w, int h) {
-    const fs::path meta = folder / (id + ".toml");
+// The keys of a statistical reference, refused in a deterministic one.
+constexpr std::string_view kStatisticalKeys[] = {"samples", "rmse_limit", "worst_correct_rmse", "bias_lsb", "outlier_z"};
+
+StatisticalReference readStats(const TomlReader& r, const fs::path& folder, const std::string& id, const toml::table& t,
+                               int w, int h) {
     StatisticalReference s;
-    s.samples = t["samples"].value_or(0);
-    s.rmseLimit = t["rmse_limit"].value_or(0.);
-    s.worstCorrectRmse = t["worst_correct_rmse"].value_or(0.);
-    s.biasLsb = t["bias_lsb"].value_or(0.05);
-    s.outlierZ = t["outlier_z"].value_or(6.);
-    if (s.samples < 1 || !(s.rmseLimit > 0.)) bad(meta, "a statistical reference needs samples >= 1 and rmse_limit > 0");
+    s.samples = int(r.requiredInteger(t, "", "samples", 1, std::numeric_limits<int>::max()));
+    s.rmseLimit = r.requiredNumber(t, "", "rmse_limit");
+    if (!(s.rmseLimit > 0.)) r.fail(t.get("rmse_limit"), "rmse_limit", "a statistical reference needs rmse_limit > 0");
+    s.worstCorrectRmse = r.number(t, "", "worst_correct_rmse").value_or(0.);
+    s.biasLsb = r.number(t, "", "bias_lsb").value_or(s.biasLsb);
+    s.outlierZ = r.number(t, "", "outlier_z").value_or(s.outlierZ);
     const Image8 whole = readSized(folder / (id + ".mean.png"), w, h);
     const Image8 frac = readSized(folder / (id + ".meanfrac.png"), w, h);
     const Image8 sd = readSized(folder / (id + ".sd.png"), w, h);
@@ -52,6 +58,41 @@ StatisticalReference readStats(const fs::path& folder, const std::string& id, co
         s.sampleSd[k] = float(sd.rgb[k]) / kSdScale;
     }
     return s;
+}
+
+// `ambiguous = [[i, j], ...]`: pixels of the image.
+std::vector<std::pair<int, int>> readAmbiguous(const TomlReader& r, const toml::table& t, const Image8& image) {
+    std::vector<std::pair<int, int>> pixels;
+    const toml::array* list = r.array(t, "", "ambiguous");
+    if (list == nullptr) return pixels;
+    for (const toml::node& item : *list) {
+        const toml::array* pair = item.as_array();
+        if (pair == nullptr || pair->size() != 2) r.fail(&item, "ambiguous", tr("toml.item_pair"));
+        pixels.emplace_back(int(r.integerOf(*pair->get(0), "ambiguous", 0, image.width - 1)),
+                            int(r.integerOf(*pair->get(1), "ambiguous", 0, image.height - 1)));
+    }
+    return pixels;
+}
+
+FigureReference readReference(const fs::path& folder, const fs::path& file) {
+    const toml::table t = parseTomlFile(file);
+    const TomlReader r(file);
+    r.onlyKeys(t, "", {"lab", "kind", "ambiguous", "samples", "rmse_limit", "worst_correct_rmse", "bias_lsb", "outlier_z"});
+    FigureReference f;
+    f.id = file.stem().string();
+    f.lab = int(r.requiredInteger(t, "", "lab", 1, std::numeric_limits<int>::max()));
+    f.image = readImage(folder / (f.id + ".png"));
+    f.ambiguous = readAmbiguous(r, t, f.image);
+    const std::string kind = r.string(t, "", "kind").value_or("deterministic");
+    if (kind == "statistical") {
+        f.stats = readStats(r, folder, f.id, t, f.image.width, f.image.height);
+    } else if (kind == "deterministic") {
+        for (std::string_view key : kStatisticalKeys)
+            if (const toml::node* node = t.get(key)) r.fail(node, key, tr("toml.only_statistical"));
+    } else {
+        r.fail(t.get("kind"), "kind", "\"" + kind + "\"; expected deterministic or statistical");
+    }
+    return f;
 }
 
 } // namespace
@@ -65,26 +106,7 @@ ReferenceSet loadReferences(const fs::path& folder) {
     for (const auto& entry : fs::directory_iterator(folder)) {
         const fs::path file = entry.path();
         if (file.extension() != ".toml" || file.filename() == "mistakes.toml") continue;
-        toml::table t;
-        try {
-            t = toml::parse_file(file.string());
-        } catch (const toml::parse_error& e) {
-            bad(file, std::string(e.description()));
-        }
-        FigureReference f;
-        f.id = file.stem().string();
-        f.lab = t["lab"].value_or(0);
-        f.image = readImage(folder / (f.id + ".png"));
-        if (const toml::array* list = t["ambiguous"].as_array())
-            for (const toml::node& n : *list) {
-                const toml::array* p = n.as_array();
-                if (!p || p->size() != 2) bad(file, "ambiguous: each entry is [i, j]");
-                f.ambiguous.emplace_back((*p)[0].value_or(-1), (*p)[1].value_or(-1));
-            }
-        const std::string kind = t["kind"].value_or(std::string("deterministic"));
-        if (kind == "statistical") f.stats = readStats(folder, f.id, t, f.image.width, f.image.height);
-        else if (kind != "deterministic") bad(file, "kind = \"" + kind + "\"; expected deterministic or statistical");
-        set.figures.push_back(std::move(f));
+        set.figures.push_back(readReference(folder, file));
     }
     std::sort(set.figures.begin(), set.figures.end(),
               [](const auto& a, const auto& b) { return std::tie(a.lab, a.id) < std::tie(b.lab, b.id); });

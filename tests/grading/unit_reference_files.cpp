@@ -1,0 +1,168 @@
+// The grader's data files (framework/grader/data/references/): the mistakes' catalogue and each
+// figure's reference description are read strictly, every problem naming the file, the line and the key.
+#include "grader/judge/diagnosis.h"
+#include "grader/judge/references.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <random>
+
+using namespace raylab;
+using namespace raylab::grader;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A scratch reference folder, removed at the end.
+struct Folder {
+    fs::path root = fs::temp_directory_path() / ("raylab-reference-files-" + std::to_string(std::random_device{}()));
+    Folder() { fs::create_directories(root); }
+    ~Folder() { fs::remove_all(root); }
+    Folder(const Folder&) = delete;
+    Folder& operator=(const Folder&) = delete;
+
+    fs::path write(const std::string& name, const std::string& text) const {
+        std::ofstream(root / name) << text;
+        return root / name;
+    }
+};
+
+// What loading throws, with the folder's path taken off ("" when nothing is thrown).
+template <class Load>
+std::string errorOf(const Folder& folder, Load load) {
+    try {
+        load(folder.root);
+    } catch (const std::runtime_error& e) {
+        const std::string message = e.what(), prefix = (folder.root / "").string();
+        return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+    }
+    return "";
+}
+
+const std::string kMistake = R"toml([[mistake]]
+id = "fovy_not_halved"
+name = "fovy not halved"
+name_fr = "fovy non divisé par deux"
+lab = 2
+function = "PerspectiveCamera::updateViewport (perspective_camera.cpp)"
+hint = "use tan(fovy / 2)"
+hint_fr = "utilisez tan(fovy / 2)"
+check = "updateViewport: the viewport of the default camera"
+)toml";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    return text.replace(text.find(from), from.size(), to);
+}
+
+const Image8 kImage{4, 2, std::vector<std::uint8_t>(4 * 2 * 3, 100)};
+
+// A statistical reference of a 4 x 2 figure "fig", as `raylab references` writes it.
+FigureReference statistical() {
+    FigureReference f{"fig", 5, kImage, {{3, 1}}, StatisticalReference{}};
+    f.stats->samples = 16;
+    f.stats->mean.assign(kImage.rgb.size(), 100.f);
+    f.stats->sampleSd.assign(kImage.rgb.size(), 16.f);
+    f.stats->worstCorrectRmse = 4.;
+    f.stats->rmseLimit = 5.;
+    return f;
+}
+
+} // namespace
+
+TEST_SUITE("reference files") {
+
+TEST_CASE("the mistakes' catalogue: a mistake is read whole") {
+    const Folder folder;
+    folder.write("mistakes.toml", kMistake + "label = \"2.1\"\n");
+    const std::vector<Mistake> mistakes = loadMistakes(folder.root);
+    REQUIRE(mistakes.size() == 1);
+    CHECK(mistakes[0].id == "fovy_not_halved");
+    CHECK(mistakes[0].nameFr == "fovy non divisé par deux");
+    CHECK(mistakes[0].lab == 2);
+    CHECK(mistakes[0].label == "2.1");
+    CHECK(mistakes[0].check == "updateViewport: the viewport of the default camera");
+    CHECK(loadMistakes(folder.root / "none").empty()); // no catalogue: no mistake to diagnose
+}
+
+TEST_CASE("the mistakes' catalogue: an unknown key, a wrong type, a NaN or a missing value names the file, line and key") {
+    const Folder folder;
+    const auto error = [&](const std::string& text) {
+        folder.write("mistakes.toml", text);
+        return errorOf(folder, loadMistakes);
+    };
+    CHECK(error(kMistake + "hint_de = \"x\"\n") ==
+          "mistakes.toml:10: [[mistake]] #1 hint_de: unknown key (known keys: id, name, name_fr, hint, hint_fr, label, "
+          "lab, function, check)");
+    CHECK(error(replaced(kMistake, "lab = 2", "lab = \"2\"")) ==
+          "mistakes.toml:5: [[mistake]] #1 lab: expected an integer, got a string");
+    CHECK(error(replaced(kMistake, "lab = 2", "lab = nan")) ==
+          "mistakes.toml:5: [[mistake]] #1 lab: expected an integer, got a number");
+    CHECK(error(replaced(kMistake, "lab = 2", "lab = 0")) == "mistakes.toml:5: [[mistake]] #1 lab: 0 is out of range [1, 2147483647]");
+    CHECK(error(kMistake + replaced(kMistake, "name = \"fovy not halved\"\n", "")) ==
+          "mistakes.toml:10: [[mistake]] #2 name: missing");
+    CHECK(error(replaced(kMistake, "hint = \"use tan(fovy / 2)\"", "hint = 2")) ==
+          "mistakes.toml:7: [[mistake]] #1 hint: expected a string, got an integer");
+    CHECK(error("mistakes = 1\n") == "mistakes.toml:1: mistakes: unknown key (known keys: mistake)");
+    CHECK(error("[mistake]\nid = \"x\"\n") == "mistakes.toml:1: [[mistake]]: expected [[mistake]] tables");
+    CHECK(error("[[mistake]\n").rfind("mistakes.toml:1:", 0) == 0);
+}
+
+TEST_CASE("a reference's description: what `raylab references` writes is read back") {
+    const Folder folder;
+    writeReference(folder.root, statistical());
+    const ReferenceSet set = loadReferences(folder.root);
+    REQUIRE(set.figures.size() == 1);
+    const FigureReference& f = set.figures[0];
+    CHECK(f.id == "fig");
+    CHECK(f.lab == 5);
+    CHECK(f.ambiguous == std::vector<std::pair<int, int>>{{3, 1}});
+    REQUIRE(f.stats);
+    CHECK(f.stats->samples == 16);
+    CHECK(f.stats->rmseLimit == 5.);
+    CHECK(f.stats->worstCorrectRmse == 4.);
+}
+
+TEST_CASE("a reference's description: an unknown key, a wrong type or a NaN names the file, line and key") {
+    const Folder folder;
+    writeReference(folder.root, statistical());
+    std::string written;
+    {
+        std::ifstream in(folder.root / "fig.toml");
+        written.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    REQUIRE(written.find("\nlab = 5\n") != std::string::npos);
+    const auto error = [&](const std::string& text) {
+        folder.write("fig.toml", text);
+        return errorOf(folder, loadReferences);
+    };
+    const auto lineOf = [&](const std::string& key) { // the line of `key = ` in `written`
+        const std::size_t at = written.find("\n" + key + " = ");
+        REQUIRE(at != std::string::npos);
+        return std::to_string(std::count(written.begin(), written.begin() + std::ptrdiff_t(at) + 1, '\n') + 1);
+    };
+    CHECK(error(written + "colour = 1\n") ==
+          "fig.toml:" + std::to_string(std::count(written.begin(), written.end(), '\n') + 1) +
+              ": colour: unknown key (known keys: lab, kind, ambiguous, samples, rmse_limit, worst_correct_rmse, "
+              "bias_lsb, outlier_z)");
+    struct Case {
+        std::string from, to, key, problem; // `from` replaced by `to`: the error at the line of `key`
+    };
+    const Case cases[] = {
+        {"lab = 5", "lab = \"5\"", "lab", "expected an integer, got a string"},
+        {"samples = 16", "samples = 16.0", "samples", "expected an integer, got a number"},
+        {"rmse_limit = 5.0", "rmse_limit = nan", "rmse_limit", "must be finite, got nan"},
+        {"outlier_z = 6.0", "outlier_z = inf", "outlier_z", "must be finite, got inf"},
+        {"bias_lsb = ", "bias_lsb = 'x' #", "bias_lsb", "expected a number, got a string"},
+        {"[ [ 3, 1 ] ]", "[ [ 4, 1 ] ]", "ambiguous", "4 is out of range [0, 3]"},
+        {"[ [ 3, 1 ] ]", "[ 3, 1 ]", "ambiguous", "expected [i, j], a pixel's column and row"},
+        // A deterministic reference has no statistical threshold.
+        {"'statistical'", "'deterministic'", "samples", "only has a meaning with kind = \"statistical\""},
+    };
+    for (const Case& c : cases)
+        CHECK(error(replaced(written, c.from, c.to)) == "fig.toml:" + lineOf(c.key) + ": " + c.key + ": " + c.problem);
+}
+
+} // TEST_SUITE
