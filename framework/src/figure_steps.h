@@ -6,7 +6,7 @@
 // lab.toml gives the function; the framework knows no lab. A lab function with no step is simply not
 // searched.
 //
-//   RAYLAB_REGISTER_FIGURE_STEP("lab3_sphere", "SphereGeometry::intersect", FigureStage::Pixel, intersectAll);
+//   RAYLAB_REGISTER_FIGURE_STEP("lab3_sphere", "SphereGeometry::intersect", FigureStage::Pixel, intersections);
 
 #include "src/figure.h"
 #include "src/name_registry.h"
@@ -63,9 +63,6 @@ struct FigureStepRegistrar {
 
 } // namespace raylab
 
-#define RAYLAB_FIGURE_STEP_CONCAT_(a, b) a##b
-#define RAYLAB_FIGURE_STEP_CONCAT(a, b) RAYLAB_FIGURE_STEP_CONCAT_(a, b)
 // At namespace scope in a lab's figure_steps.cpp.
 #define RAYLAB_REGISTER_FIGURE_STEP(lab, function, stage, call)                                                        \
-    static const ::raylab::FigureStepRegistrar RAYLAB_FIGURE_STEP_CONCAT(raylabFigureStep, __LINE__)(                  \
-        (lab), (function), (stage), (call))
+    RAYLAB_REGISTRAR(::raylab::FigureStepRegistrar)((lab), (function), (stage), (call))

@@ -65,3 +65,9 @@ private:
 };
 
 } // namespace raylab
+
+// Declares, at namespace scope, a registrar of type `Type` named after its line (one per line),
+// built with the arguments that follow: what the RAYLAB_REGISTER_* macros expand to.
+#define RAYLAB_REGISTRAR_NAME_(line) raylabRegistrar##line
+#define RAYLAB_REGISTRAR_NAME(line) RAYLAB_REGISTRAR_NAME_(line)
+#define RAYLAB_REGISTRAR(Type) static const Type RAYLAB_REGISTRAR_NAME(__LINE__)

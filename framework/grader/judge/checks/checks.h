@@ -6,7 +6,7 @@
 
 #include "grader/lab_catalog.h"
 #include "grader/protocol/protocol.h"
-#include "src/source_place.h"
+#include "src/name_registry.h"
 
 #include <glm/vec3.hpp>
 
@@ -116,9 +116,5 @@ void appendInputs(std::vector<double>& inputs, const glm::dvec3& v);
 
 } // namespace raylab::grader
 
-#define RAYLAB_CHECKS_CONCAT_(a, b) a##b
-#define RAYLAB_CHECKS_CONCAT(a, b) RAYLAB_CHECKS_CONCAT_(a, b)
 // At namespace scope in a lab's checks.cpp: RAYLAB_REGISTER_CHECKS("lab1_first_image", addChecks);
-#define RAYLAB_REGISTER_CHECKS(labId, maker)                                                                           \
-    static const ::raylab::grader::ChecksRegistrar RAYLAB_CHECKS_CONCAT(raylabChecksRegistrar, __LINE__)((labId),      \
-                                                                                                         (maker))
+#define RAYLAB_REGISTER_CHECKS(labId, maker) RAYLAB_REGISTRAR(::raylab::grader::ChecksRegistrar)((labId), (maker))

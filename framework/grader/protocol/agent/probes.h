@@ -6,6 +6,7 @@
 //   RAYLAB_REGISTER_PROBE(fillGradient, fillGradientProbe);  // at namespace scope
 
 #include "grader/protocol/protocol.h"
+#include "src/name_registry.h"
 
 #include <glm/vec3.hpp>
 
@@ -47,8 +48,4 @@ struct ProbeRegistrar {
 
 } // namespace raylab::agent
 
-#define RAYLAB_PROBE_CONCAT_(a, b) a##b
-#define RAYLAB_PROBE_CONCAT(a, b) RAYLAB_PROBE_CONCAT_(a, b)
-#define RAYLAB_REGISTER_PROBE(probe, function)                                                                         \
-    static const ::raylab::agent::ProbeRegistrar RAYLAB_PROBE_CONCAT(raylabProbeRegistrar, __LINE__)((probe),          \
-                                                                                                     (function))
+#define RAYLAB_REGISTER_PROBE(probe, function) RAYLAB_REGISTRAR(::raylab::agent::ProbeRegistrar)((probe), (function))
