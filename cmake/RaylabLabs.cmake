@@ -52,19 +52,26 @@ foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
 endforeach()
 message(STATUS "raylab labs: ${RAYLAB_LABS}")
 
-# raylab_lab_shadings(TARGET N): TARGET (lab N's code, from wherever) also brings the pictures lab N
-# registers by name outside the student's files (framework/grader/labs/<lab>/shadings.cpp: lab 1's
-# gradient, lab 2's directions, lab 3's shadings; a scene file's [render] shading names one), compiled
+# raylab_lab_shadings(TARGET N): TARGET (lab N's code, from wherever) also brings what lab N registers
+# by name outside the student's files, from framework/grader/labs/<lab>/: shadings.cpp, the pictures
+# (lab 1's gradient, lab 2's directions, lab 3's shadings; a scene file's [render] shading names one),
+# and figure_steps.cpp, its functions as the crash finder calls them (src/figure_steps.h). Compiled
 # once, into every program that links TARGET: nothing names their objects, so they are linked whole.
 function(raylab_lab_shadings target n)
-  set(source ${CMAKE_SOURCE_DIR}/framework/grader/labs/${RAYLAB_LAB_FOLDER_${n}}/shadings.cpp)
-  if(NOT EXISTS ${source})
+  set(sources "")
+  foreach(part shadings figure_steps)
+    set(source ${CMAKE_SOURCE_DIR}/framework/grader/labs/${RAYLAB_LAB_FOLDER_${n}}/${part}.cpp)
+    if(EXISTS ${source})
+      list(APPEND sources ${source})
+    endif()
+  endforeach()
+  if(NOT sources)
     return()
   endif()
   set(shadings raylab_lab${n}_shadings)
   if(NOT TARGET ${shadings})
-    add_library(${shadings} OBJECT ${source})
-    target_link_libraries(${shadings} PRIVATE raylab_framework raylab_warnings)
+    add_library(${shadings} OBJECT ${sources})
+    target_link_libraries(${shadings} PRIVATE raylab_framework raylab_internals raylab_warnings)
   endif()
   target_link_libraries(${target} INTERFACE $<TARGET_OBJECTS:${shadings}>)
   get_target_property(imported ${target} IMPORTED)

@@ -1,10 +1,12 @@
 // raylab figures, lab and render draw each figure in a child process (POSIX), so that a lab function
 // that crashes costs that figure only: the command goes on with the others and ends with an error
 // status, never a signal. When a figure's child crashed, a second child calls the figure's lab
-// functions one at a time on the figure's own rays and reports the one it was in when it crashed.
+// functions one at a time on the figure's own rays (the steps the labs register, src/figure_steps.h)
+// and reports the one it was in when it crashed.
 // Elsewhere (Windows) a figure is drawn in the command's own process.
 #include "figure_process.h"
 
+#include "src/figure_steps.h"
 #include "src/messages.h"
 
 #include <cstring>
@@ -162,40 +164,16 @@ extern "C" void onCrash(int signal) {
     std::raise(signal);
 }
 
-// Calls the figure's lab functions one at a time, on its pixel centres' rays, in the order a ray
-// needs them: the function it crashes in is the first one whose own call crashed.
-void callOneAtATime(const SceneDescription& d, const RenderOptions& options, int fd) {
+// Calls the figure's lab functions one at a time, as the labs' grading folders registered them
+// (src/figure_steps.h), on its pixel centres' rays: the function it crashes in is the first one
+// whose own call crashed.
+void callOneAtATime(const SceneDescription& d, const RenderOptions& options, const grader::LabCatalog& labs, int fd) {
     g_crashFd = fd;
     for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, onCrash);
-    const auto in = [](const char* function) { g_inFunction = function; };
+    std::vector<std::string> order;
+    for (const grader::LabDescription& lab : labs.labs) order.push_back(lab.id);
     try {
-        if (isRegisteredImage(d.shading)) {
-            in("fillGradient");
-            renderScene(d, options);
-            return;
-        }
-        in(d.camera.lookAt ? "the lookAt constructor PerspectiveCamera(width, height, position, target, up, fovy)"
-                           : "PerspectiveCamera::updateViewport");
-        SceneRender render(d, options);
-        for (int j = 0; j < render.camera().height(); ++j)
-            for (int i = 0; i < render.camera().width(); ++i) {
-                in("PerspectiveCamera::generateRay");
-                const Ray ray = render.camera().generateRay(float(i) + 0.5f, float(j) + 0.5f);
-                for (const SphereGeometry& sphere : render.scene().spheres) {
-                    in("SphereGeometry::intersect");
-                    HitRecord hit;
-                    if (!sphere.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), hit)) continue;
-                    in("SphereGeometry::computeNormal");
-                    (void)sphere.computeNormal(hit.position);
-                }
-                in("RayCastIntegrator::Li");
-                (void)render.integrator().Li(render.scene(), ray);
-                if (d.samples > 1) {
-                    in("Renderer::renderPixel");
-                    PixelSampler sampler(d.sampler, d.samples, d.seed, i, j, d.width);
-                    (void)render.renderer().renderPixel(i, j, sampler);
-                }
-            }
+        runFigureSteps(d, options, order, [](const std::string& function) { g_inFunction = function.c_str(); });
     } catch (...) { // a stub or an error: not a crash, and the figure's own result says it
     }
     g_inFunction = nullptr;
@@ -219,7 +197,7 @@ FigureResult renderFigure(const SceneDescription& d, const RenderOptions& option
         }
     FigureResult crashed;
     crashed.status = FigureResult::Status::Failed;
-    const std::string function = runChild([&](int fd) { callOneAtATime(d, options, fd); }).output;
+    const std::string function = runChild([&](int fd) { callOneAtATime(d, options, labs, fd); }).output;
     const grader::LabDescription* lab = nullptr;
     for (const grader::LabDescription& l : labs.labs)
         for (const grader::LabFunction& f : l.functions)

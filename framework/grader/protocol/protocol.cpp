@@ -1,11 +1,12 @@
 #include "grader/protocol/protocol.h"
 
+#include "src/name_registry.h"
+
 #include <nlohmann/json.hpp>
 
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <stdexcept>
 
 namespace raylab::grader::protocol {
@@ -125,21 +126,24 @@ Answer readAnswer(const json& j) {
 
 } // namespace
 
+namespace {
+
 // Built on first use: the probes register during static initialisation, in any order of files.
-std::map<std::string, ProbeSpec, std::less<>>& probes() {
-    static std::map<std::string, ProbeSpec, std::less<>> registered;
-    return registered;
+NameRegistry<ProbeSpec>& probes() {
+    static NameRegistry<ProbeSpec> registry("probe");
+    return registry;
 }
 
-const ProbeSpec& registerProbe(ProbeSpec spec) {
-    const auto [at, added] = probes().emplace(spec.name, spec);
-    if (!added) throw std::logic_error("the probe '" + spec.name + "' is registered twice");
-    return at->second;
+} // namespace
+
+const ProbeSpec& registerProbe(ProbeSpec spec, SourcePlace where) {
+    const std::string name = spec.name;
+    return probes().add(name, std::move(spec), where).value;
 }
 
 const ProbeSpec* probeNamed(std::string_view name) {
-    const auto it = probes().find(name);
-    return it != probes().end() ? &it->second : nullptr;
+    const auto* probe = probes().find(name);
+    return probe != nullptr ? &probe->value : nullptr;
 }
 
 bool outputsValid(const ProbeSpec& probe, std::span<const double> inputs, std::span<const double> outputs) {

@@ -1,5 +1,5 @@
 #pragma once
-// Room protocol/: what the parent and an agent say to each other, and the agent itself; it includes only sandbox/ (the agent: raylab/ and protocol/).
+// Room protocol/: what the parent and an agent say to each other, and the agent itself; it includes only sandbox/ and src/'s registry (the agent: raylab/ and protocol/).
 //
 // The grading protocol, the one schema both sides include: the parent (the grader) starts items
 // by sending requests on one pipe; the child (the agent, holding the student's code) answers each
@@ -8,6 +8,8 @@
 // One message a line, a JSON object with "type". Versioned: the child's first line is a hello
 // naming kProtocolVersion. Numbers that are not finite travel as the strings "nan", "inf", "-inf"
 // (a NaN is a value the parent judges, not a broken message). Images travel as base64 RGB bytes.
+
+#include "src/source_place.h"
 
 #include <glm/vec3.hpp>
 
@@ -33,8 +35,8 @@ struct ProbeSpec {
 };
 
 // Keeps `spec` for the life of the program (at static initialisation, from a lab's probes.h); the same
-// name twice is a std::logic_error (two labs would answer one probe).
-const ProbeSpec& registerProbe(ProbeSpec spec);
+// name twice is a std::logic_error naming both places (two labs would answer one probe).
+const ProbeSpec& registerProbe(ProbeSpec spec, SourcePlace where = SourcePlace::here());
 // The registered probe of that name; nullptr when there is none.
 const ProbeSpec* probeNamed(std::string_view name);
 // Whether `outputs` has the size the probe gives for `inputs`.

@@ -17,8 +17,10 @@ namespace raylab {
 
 using IntegratorFactory = std::function<std::unique_ptr<Integrator>()>;
 
-// Adds `name`; a name registered twice throws std::logic_error (two labs would draw one shading).
-void registerIntegrator(const std::string& name, IntegratorFactory factory);
+// Adds `name`, registered at file:line; a name registered twice throws std::logic_error naming both
+// places (two labs would draw one shading).
+void registerIntegrator(const std::string& name, IntegratorFactory factory, const char* file = __builtin_FILE(),
+                        unsigned line = __builtin_LINE());
 
 bool isRegisteredIntegrator(const std::string& name);
 
@@ -32,22 +34,27 @@ std::vector<std::string> registeredIntegratorNames();
 using ImageMaker = std::function<Texture(int width, int height)>;
 
 // Adds `name`; a name registered twice, as an image or an integrator, throws std::logic_error.
-void registerImage(const std::string& name, ImageMaker maker);
+void registerImage(const std::string& name, ImageMaker maker, const char* file = __builtin_FILE(),
+                   unsigned line = __builtin_LINE());
 
 bool isRegisteredImage(const std::string& name);
 
 // The image of that name, W x H; throws std::invalid_argument when there is none.
 Texture makeRegisteredImage(const std::string& name, int width, int height);
 
-// Registers at static initialisation: the macro below declares one.
+// Registers at static initialisation, with the line that declares it: the macro below declares one.
 struct IntegratorRegistrar {
-    IntegratorRegistrar(const std::string& name, IntegratorFactory factory) {
-        registerIntegrator(name, std::move(factory));
+    IntegratorRegistrar(const std::string& name, IntegratorFactory factory, const char* file = __builtin_FILE(),
+                        unsigned line = __builtin_LINE()) {
+        registerIntegrator(name, std::move(factory), file, line);
     }
 };
 
 struct ImageRegistrar {
-    ImageRegistrar(const std::string& name, ImageMaker maker) { registerImage(name, std::move(maker)); }
+    ImageRegistrar(const std::string& name, ImageMaker maker, const char* file = __builtin_FILE(),
+                   unsigned line = __builtin_LINE()) {
+        registerImage(name, std::move(maker), file, line);
+    }
 };
 
 } // namespace raylab

@@ -1,6 +1,7 @@
 #include "grader/judge/checks/checks.h"
 
 #include "src/messages.h"
+#include "src/name_registry.h"
 
 #include <glm/geometric.hpp>
 
@@ -82,22 +83,10 @@ void appendInputs(std::vector<double>& inputs, const glm::dvec3& v) {
 
 namespace {
 
-struct RegisteredLab {
-    CheckMaker maker;
-    SourcePlace where;
-};
-
 // Built on first use: the labs' checks register during static initialisation, in any order of files.
-std::map<std::string, RegisteredLab>& registeredLabs() {
-    static std::map<std::string, RegisteredLab> labs;
-    return labs;
-}
-
-// "framework/grader/labs/lab1_first_image/checks.cpp:75": the path from the tree's top when it has one.
-std::string place(const SourcePlace& where) {
-    const std::string file = where.file;
-    const std::size_t top = file.rfind("framework/");
-    return (top != std::string::npos ? file.substr(top) : file) + ":" + std::to_string(where.line);
+NameRegistry<CheckMaker>& registeredLabs() {
+    static NameRegistry<CheckMaker> registry("lab checks");
+    return registry;
 }
 
 [[noreturn]] void refuse(const std::vector<std::string>& problems) {
@@ -110,17 +99,14 @@ std::string place(const SourcePlace& where) {
 } // namespace
 
 void registerChecks(const std::string& labId, CheckMaker maker, SourcePlace where) {
-    const auto [at, added] = registeredLabs().emplace(labId, RegisteredLab{maker, where});
-    if (!added)
-        throw std::logic_error(place(where) + ": the checks of " + labId + " are registered twice (first at " +
-                               place(at->second.where) + ")");
+    registeredLabs().add(labId, maker, where);
 }
 
 std::vector<FunctionCheck> labChecks(const LabDescription& lab, CaseRandom& random) {
-    const auto registered = registeredLabs().find(lab.id);
+    const auto* registered = registeredLabs().find(lab.id);
     std::vector<std::string> problems;
     const std::string labToml = lab.file.string();
-    if (registered == registeredLabs().end()) {
+    if (registered == nullptr) {
         for (const LabCheck& c : lab.checks)
             problems.push_back(
                 tr("check.lab_without_code",
@@ -129,14 +115,14 @@ std::vector<FunctionCheck> labChecks(const LabDescription& lab, CaseRandom& rand
         return {};
     }
     LabChecks added;
-    registered->second.maker(added, random);
+    registered->value(added, random);
     std::vector<FunctionCheck> checks;
     std::set<std::string> coded;
     for (LabChecks::Added& a : added.added()) {
         const LabCheck* declared = lab.check(a.check.name);
         if (declared == nullptr) {
             problems.push_back(tr("check.not_in_lab_toml",
-                                  {{"where", place(a.where)}, {"name", a.check.name}, {"lab_toml", labToml}}));
+                                  {{"where", a.where.shown()}, {"name", a.check.name}, {"lab_toml", labToml}}));
             continue;
         }
         coded.insert(a.check.name);
@@ -149,18 +135,16 @@ std::vector<FunctionCheck> labChecks(const LabDescription& lab, CaseRandom& rand
             problems.push_back(tr("check.no_code", {{"lab_toml", labToml},
                                                     {"line", std::to_string(c.line)},
                                                     {"name", c.name},
-                                                    {"registered", place(registered->second.where)}}));
+                                                    {"registered", registered->where.shown()}}));
     if (!problems.empty()) refuse(problems);
     return checks;
 }
 
 std::vector<FunctionCheck> functionChecks(const LabCatalog& labs, std::uint64_t seed) {
     std::vector<std::string> problems;
-    for (const auto& registered : registeredLabs()) { // no structured binding: Clang 14 cannot capture one
-        const std::string& id = registered.first;
+    for (const std::string& id : registeredLabs().names())
         if (std::none_of(labs.labs.begin(), labs.labs.end(), [&](const LabDescription& l) { return l.id == id; }))
-            problems.push_back(tr("check.unknown_lab", {{"where", place(registered.second.where)}, {"id", id}}));
-    }
+            problems.push_back(tr("check.unknown_lab", {{"where", registeredLabs().find(id)->where.shown()}, {"id", id}}));
     if (!problems.empty()) refuse(problems);
     CaseRandom random(seed); // one generator through the labs in order: each lab draws after the one before
     std::vector<FunctionCheck> checks;

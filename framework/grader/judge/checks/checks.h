@@ -6,6 +6,7 @@
 
 #include "grader/lab_catalog.h"
 #include "grader/protocol/protocol.h"
+#include "src/name_registry.h"
 
 #include <glm/vec3.hpp>
 
@@ -71,16 +72,6 @@ private:
     std::mt19937_64 m_engine;
 };
 
-// Where a line of code is: the file and line of the call whose default argument is here() (as
-// std::source_location, which Clang 14 lacks with libstdc++; GCC, Clang and MSVC have these builtins).
-struct SourcePlace {
-    const char* file = "";
-    unsigned line = 0;
-    static constexpr SourcePlace here(const char* file = __builtin_FILE(), unsigned line = __builtin_LINE()) {
-        return {file, line};
-    }
-};
-
 // A lab's checks, as its grading folder adds them (framework/grader/labs/<lab>/checks.cpp), each by
 // the name its lab.toml declares; `where` is the line that adds it, for the catalogue's errors.
 class LabChecks {
@@ -101,7 +92,7 @@ private:
 using CheckMaker = void (*)(LabChecks& checks, CaseRandom& random);
 
 // Adds the checks of the lab whose id (its folder's name) is `labId`; a lab registered twice is a
-// std::logic_error.
+// std::logic_error naming both places.
 void registerChecks(const std::string& labId, CheckMaker maker, SourcePlace where);
 
 struct ChecksRegistrar {
@@ -125,9 +116,5 @@ void appendInputs(std::vector<double>& inputs, const glm::dvec3& v);
 
 } // namespace raylab::grader
 
-#define RAYLAB_CHECKS_CONCAT_(a, b) a##b
-#define RAYLAB_CHECKS_CONCAT(a, b) RAYLAB_CHECKS_CONCAT_(a, b)
 // At namespace scope in a lab's checks.cpp: RAYLAB_REGISTER_CHECKS("lab1_first_image", addChecks);
-#define RAYLAB_REGISTER_CHECKS(labId, maker)                                                                           \
-    static const ::raylab::grader::ChecksRegistrar RAYLAB_CHECKS_CONCAT(raylabChecksRegistrar, __LINE__)((labId),      \
-                                                                                                         (maker))
+#define RAYLAB_REGISTER_CHECKS(labId, maker) RAYLAB_REGISTRAR(::raylab::grader::ChecksRegistrar)((labId), (maker))

@@ -1,17 +1,17 @@
 #include "grader/protocol/agent/probes.h"
 
-#include <map>
+#include "src/name_registry.h"
+
 #include <stdexcept>
-#include <string>
 
 namespace raylab::agent {
 
 namespace {
 
 // Built on first use: the labs' probes register during static initialisation, in any order of files.
-std::map<std::string, ProbeFunction>& functions() {
-    static std::map<std::string, ProbeFunction> registered;
-    return registered;
+NameRegistry<ProbeFunction>& functions() {
+    static NameRegistry<ProbeFunction> registry("probe answer");
+    return registry;
 }
 
 } // namespace
@@ -20,15 +20,14 @@ void appendOutputs(std::vector<double>& out, const glm::vec3& v) {
     out.insert(out.end(), {v.x, v.y, v.z});
 }
 
-void registerProbeFunction(const grader::protocol::ProbeSpec& probe, ProbeFunction function) {
-    if (!functions().emplace(probe.name, function).second)
-        throw std::logic_error("the probe '" + probe.name + "' is answered twice");
+void registerProbeFunction(const grader::protocol::ProbeSpec& probe, ProbeFunction function, SourcePlace where) {
+    functions().add(probe.name, function, where);
 }
 
 std::vector<double> callProbe(const grader::protocol::Call& call) {
-    const auto it = functions().find(call.probe->name);
-    if (it == functions().end()) throw std::invalid_argument("no function answers the probe " + call.probe->name);
-    return it->second(ProbeInputs(call.inputs));
+    const auto* function = functions().find(call.probe->name);
+    if (function == nullptr) throw std::invalid_argument("no function answers the probe " + call.probe->name);
+    return function->value(ProbeInputs(call.inputs));
 }
 
 } // namespace raylab::agent

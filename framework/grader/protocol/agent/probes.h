@@ -6,6 +6,7 @@
 //   RAYLAB_REGISTER_PROBE(fillGradient, fillGradientProbe);  // at namespace scope
 
 #include "grader/protocol/protocol.h"
+#include "src/name_registry.h"
 
 #include <glm/vec3.hpp>
 
@@ -31,23 +32,20 @@ void appendOutputs(std::vector<double>& out, const glm::vec3& v);
 
 using ProbeFunction = std::vector<double> (*)(ProbeInputs inputs);
 
-// Adds the function that answers `probe`; a probe answered twice is a std::logic_error.
-void registerProbeFunction(const grader::protocol::ProbeSpec& probe, ProbeFunction function);
+// Adds the function that answers `probe`; a probe answered twice is a std::logic_error naming both places.
+void registerProbeFunction(const grader::protocol::ProbeSpec& probe, ProbeFunction function, SourcePlace where);
 
 // Throws whatever the student's code throws (NotDoneYet included); std::invalid_argument when no
 // function answers the probe.
 std::vector<double> callProbe(const grader::protocol::Call& call);
 
 struct ProbeRegistrar {
-    ProbeRegistrar(const grader::protocol::ProbeSpec& probe, ProbeFunction function) {
-        registerProbeFunction(probe, function);
+    ProbeRegistrar(const grader::protocol::ProbeSpec& probe, ProbeFunction function,
+                   SourcePlace where = SourcePlace::here()) {
+        registerProbeFunction(probe, function, where);
     }
 };
 
 } // namespace raylab::agent
 
-#define RAYLAB_PROBE_CONCAT_(a, b) a##b
-#define RAYLAB_PROBE_CONCAT(a, b) RAYLAB_PROBE_CONCAT_(a, b)
-#define RAYLAB_REGISTER_PROBE(probe, function)                                                                         \
-    static const ::raylab::agent::ProbeRegistrar RAYLAB_PROBE_CONCAT(raylabProbeRegistrar, __LINE__)((probe),          \
-                                                                                                     (function))
+#define RAYLAB_REGISTER_PROBE(probe, function) RAYLAB_REGISTRAR(::raylab::agent::ProbeRegistrar)((probe), (function))
