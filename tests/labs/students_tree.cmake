@@ -7,7 +7,7 @@
 #   cmake -DSTEP=<step> -DRAYLAB=<raylab program> -DSOLUTIONS=<solutions/> -DWORK=<scratch folder>
 #         [-DGENERATOR=...] [-DCCACHE=<ccache>] -P tests/labs/students_tree.cmake
 # It runs in steps, one ctest test each (tests/CMakeLists.txt), each in the tree the steps before it
-# left (ctest prints nothing while a test runs: a step lasts seconds, not minutes): distribute,
+# left (ctest prints nothing while a test runs; with a warm compiler cache each step lasts seconds): distribute,
 # build-framework, build-figures, grade-builds, build-suite, suite-none, instructors-commands,
 # suite-lab1, suite-all. It builds the tree on its own, from its own files: nothing of the
 # repository's build is linked (a compiler cache may only skip compiling the same command twice).

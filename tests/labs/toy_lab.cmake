@@ -8,9 +8,9 @@
 #   cmake -DSTEP=<step> -DSOURCE=<tree> -DWORK=<scratch folder> -DTOY=tests/labs/toy [-DGENERATOR=Ninja]
 #         [-DCCACHE=<ccache>] -P tests/labs/toy_lab.cmake
 # It runs in steps, one ctest test each (tests/CMakeLists.txt), each in the tree the steps before it
-# left (ctest prints nothing while a test runs: a step lasts seconds, not minutes): copy, then
+# left (ctest prints nothing while a test runs; with a warm compiler cache each step lasts seconds): copy, then
 # build-framework, build-grader, build-cli, build-programs, render, grade, report, written-after-build,
-# lab-rebuilds, hints, framework-unchanged.
+# does-not-compile, lab-rebuilds, hints, framework-unchanged.
 # Every program runs from an argument vector (execute_process), never through a shell.
 
 foreach(var STEP SOURCE WORK TOY)
@@ -125,6 +125,12 @@ function(step_written_after_build)
   run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-written)
   expect("${output}" "labs/lab6_toy/toy_colour.cpp changed since the last build: rebuilding first" "raylab grade rebuilds")
   expect("${output}" "lab 6: 7 / 7 points" "the grade follows the code written after the build")
+endfunction()
+
+# A lab that does not compile: `raylab grade` grades labs/ as a submission, in a build folder of its
+# own (out/grade-build, from nothing: the longest step).
+function(step_does_not_compile)
+  file(READ ${TOY}/solution/toy_colour.cpp written)
   file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}\nint unfinished(\n")
   run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-broken)
   expect("${output}" "grading labs/ as a submission" "a build that fails is graded as a submission")
