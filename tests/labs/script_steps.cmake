@@ -21,3 +21,8 @@ function(expect text needle what)
     message(FATAL_ERROR "${STEP_PREFIX}: ${what}: no \"${needle}\" in:\n${text}")
   endif()
 endfunction()
+
+# build(TARGET...): builds those targets of the tree's build folder (the variable `build`), 2 jobs.
+function(build)
+  run(output 0 ${CMAKE_COMMAND} --build ${build} --target ${ARGN} -j 2)
+endfunction()

@@ -4,12 +4,17 @@
 # skipped) and with every lab written (all pass, none skipped); the instructors' commands it does not
 # build (raylab numerics) say so.
 #
-#   cmake -DRAYLAB=<raylab program> -DSOLUTIONS=<solutions/> -DWORK=<scratch folder> [-DGENERATOR=...]
-#         [-DCCACHE=<ccache>] -P tests/labs/students_tree.cmake
+#   cmake -DSTEP=<step> -DRAYLAB=<raylab program> -DSOLUTIONS=<solutions/> -DWORK=<scratch folder>
+#         [-DGENERATOR=...] [-DCCACHE=<ccache>] -P tests/labs/students_tree.cmake
+# It runs in steps, one ctest test each (tests/CMakeLists.txt), each in the tree the steps before it
+# left (ctest prints nothing while a test runs; with a warm compiler cache each step lasts seconds): distribute,
+# build-framework, build-figures, grade-builds, build-suite, suite-none, instructors-commands,
+# suite-lab1, suite-all. It builds the tree on its own, from its own files: nothing of the
+# repository's build is linked (a compiler cache may only skip compiling the same command twice).
 # Every program runs from an argument vector (execute_process), never through a shell.
 cmake_minimum_required(VERSION 3.22) # if(IN_LIST)
 
-foreach(var RAYLAB SOLUTIONS WORK)
+foreach(var STEP RAYLAB SOLUTIONS WORK)
   if(NOT ${var})
     message(FATAL_ERROR "students' tree: -D${var}=... is required")
   endif()
@@ -23,7 +28,8 @@ set(build ${tree}/build)
 set(STEP_PREFIX "students' tree")
 include(${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake)
 
-# ctest of the students' tree: it must pass, with `passed` labs passed and the others skipped.
+# ctest of the students' tree, after building all of it: it must pass, with `passed` labs passed and
+# the others skipped.
 function(suite_passes passed)
   run(output 0 ${CMAKE_COMMAND} --build ${build} -j 2)
   run(output 0 ${CMAKE_CTEST_COMMAND} --test-dir ${build} -j 2)
@@ -50,37 +56,57 @@ function(suite_passes passed)
   endforeach()
 endfunction()
 
-file(REMOVE_RECURSE ${WORK})
-file(MAKE_DIRECTORY ${WORK})
-run(output 0 ${RAYLAB} distribute ${tree})
-set(configure ${CMAKE_COMMAND} -S ${tree} -B ${build} -DCMAKE_BUILD_TYPE=Release -DRAYLAB_LTO=OFF)
-if(GENERATOR)
-  list(APPEND configure -G ${GENERATOR})
-endif()
-if(CCACHE)
-  list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CCACHE})
-endif()
-run(output 0 ${configure})
+# 1. The students' tree, written by `raylab distribute`, configured.
+function(step_distribute)
+  file(REMOVE_RECURSE ${WORK})
+  file(MAKE_DIRECTORY ${WORK})
+  run(output 0 ${RAYLAB} distribute ${tree})
+  set(configure ${CMAKE_COMMAND} -S ${tree} -B ${build} -DCMAKE_BUILD_TYPE=Release -DRAYLAB_LTO=OFF)
+  if(GENERATOR)
+    list(APPEND configure -G ${GENERATOR})
+  endif()
+  if(CCACHE)
+    list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CCACHE})
+  endif()
+  run(output 0 ${configure})
+endfunction()
 
-# The README's first command builds the figures alone (raylab, no grading program): `raylab grade`
+# 2. The framework and the grader, alone first (the longest part of a build from nothing).
+function(step_build_framework)
+  build(raylab_framework raylab_grader)
+endfunction()
+
+# 3. The README's first command builds the figures alone (raylab, no grading program): `raylab grade`
 # then builds the grading programs first.
-run(output 0 ${CMAKE_COMMAND} --build ${build} --target figures -j 2)
-if(EXISTS ${build}/bin/raylab-agent)
-  message(FATAL_ERROR "students' tree: building the figures built the grading programs too")
-endif()
-run(output 3 ${build}/bin/raylab --lang en grade --lab 1)
-expect("${output}" "building the grading programs first" "raylab grade after the figures' build")
-if(NOT EXISTS ${build}/bin/raylab-agent)
-  message(FATAL_ERROR "students' tree: raylab grade did not build its grading programs")
-endif()
+function(step_build_figures)
+  build(figures)
+  if(EXISTS ${build}/bin/raylab-agent)
+    message(FATAL_ERROR "students' tree: building the figures built the grading programs too")
+  endif()
+endfunction()
+function(step_grade_builds)
+  run(output 3 ${build}/bin/raylab --lang en grade --lab 1)
+  expect("${output}" "building the grading programs first" "raylab grade after the figures' build")
+  if(NOT EXISTS ${build}/bin/raylab-agent)
+    message(FATAL_ERROR "students' tree: raylab grade did not build its grading programs")
+  endif()
+endfunction()
 
-suite_passes("")
+# 4. The rest of the tree (its tests), then its suite with no lab written.
+function(step_build_suite)
+  build(all)
+endfunction()
+function(step_suite_none)
+  suite_passes("")
+endfunction()
 
 # The instructors' commands whose code holds a lab's answer are not built here, and say so.
-foreach(command "numerics" "study;intersection")
-  run(output 1 ${build}/bin/raylab ${command})
-  expect("${output}" "is an instructors' command" "raylab ${command}")
-endforeach()
+function(step_instructors_commands)
+  foreach(command "numerics" "study;intersection")
+    run(output 1 ${build}/bin/raylab ${command})
+    expect("${output}" "is an instructors' command" "raylab ${command}")
+  endforeach()
+endfunction()
 
 # A student's lab: the solution's files written over the stubs (anew, so they are newer than the build).
 function(write_lab folder)
@@ -92,11 +118,21 @@ function(write_lab folder)
   endforeach()
 endfunction()
 
-write_lab(lab1_first_image)
-suite_passes("1")
+# 5. Lab 1 written, then every lab.
+function(step_suite_lab1)
+  write_lab(lab1_first_image)
+  suite_passes("1")
+endfunction()
+function(step_suite_all)
+  foreach(folder lab2_primary_rays lab3_sphere lab4_lookat_camera lab5_antialiasing)
+    write_lab(${folder})
+  endforeach()
+  suite_passes("1;2;3;4;5")
+  message(STATUS "students' tree: its suite passes with 0, 1 and 5 labs written")
+endfunction()
 
-foreach(folder lab2_primary_rays lab3_sphere lab4_lookat_camera lab5_antialiasing)
-  write_lab(${folder})
-endforeach()
-suite_passes("1;2;3;4;5")
-message(STATUS "students' tree: its suite passes with 0, 1 and 5 labs written")
+string(REPLACE "-" "_" step ${STEP})
+if(NOT COMMAND step_${step})
+  message(FATAL_ERROR "students' tree: no step ${STEP}")
+endif()
+cmake_language(CALL step_${step})
