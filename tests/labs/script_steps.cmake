@@ -26,3 +26,12 @@ endfunction()
 function(build)
   run(output 0 ${CMAKE_COMMAND} --build ${build} --target ${ARGN} -j 2)
 endfunction()
+
+# run_step(): calls the script's function step_<STEP> (dashes as underscores); an unknown step is an error.
+macro(run_step)
+  string(REPLACE "-" "_" step ${STEP})
+  if(NOT COMMAND step_${step})
+    message(FATAL_ERROR "${STEP_PREFIX}: no step ${STEP}")
+  endif()
+  cmake_language(CALL step_${step})
+endmacro()
