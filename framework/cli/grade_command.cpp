@@ -119,7 +119,7 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
         std::printf("%s\n", tr("grade.building", {{"labs", o.labs}, {"folder", buildDir.string()}}).c_str());
         std::fflush(stdout);
         const SubmissionBuild b =
-            buildSubmission(tools, build::kSourceDir, copy.folder, buildDir, setup.labs.numbers(), places.log);
+            buildSubmission(tools, build::kSourceDir, copy.folder, buildDir, setup.labs, places.log);
         agents = b.agents;
         isolated = b.isolated;
         unbuilt = b.brokenLabs;

@@ -169,7 +169,7 @@ TEST_CASE("in the students' tree, a missing ';' in lab 4 costs lab 4 only: labs 
     const raylab::grader::Toolchain tools{RAYLAB_CMAKE_COMMAND, RAYLAB_CMAKE_GENERATOR, raylab::grader::findProgram("ccache")};
     const GradeSetup setup = courseSetup();
     const raylab::grader::SubmissionBuild b =
-        raylab::grader::buildSubmission(tools, tree, folder, kRoot / "students-tree-build", setup.labs.numbers());
+        raylab::grader::buildSubmission(tools, tree, folder, kRoot / "students-tree-build", setup.labs);
     CHECK_FALSE(b.isolated);
     CHECK(b.brokenLabs == std::vector<int>{4});
     CHECK(b.compilerMessage.find("look_at.cpp") != std::string::npos);

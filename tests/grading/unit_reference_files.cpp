@@ -105,6 +105,9 @@ TEST_CASE("the mistakes' catalogue: an unknown key, a wrong type, a NaN or a mis
           "mistakes.toml:10: [[mistake]] #2 name: missing");
     CHECK(error(replaced(kMistake, "hint = \"use tan(fovy / 2)\"", "hint = 2")) ==
           "mistakes.toml:7: [[mistake]] #1 hint: expected a string, got an integer");
+    // Its signatures are read from mistakes/<id>/: an id that is a path is refused.
+    CHECK(error(replaced(kMistake, "\"fovy_not_halved\"", "\"../fovy\"")) ==
+          "mistakes.toml:2: [[mistake]] #1 id: \"../fovy\" is not a plain folder name (letters, digits, '_' and '-')");
     CHECK(error("mistakes = 1\n") == "mistakes.toml:1: mistakes: unknown key (known keys: mistake)");
     CHECK(error("[mistake]\nid = \"x\"\n") == "mistakes.toml:1: [[mistake]]: expected [[mistake]] tables");
     CHECK(error("[[mistake]\n").rfind("mistakes.toml:1:", 0) == 0);

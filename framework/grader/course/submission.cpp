@@ -97,9 +97,11 @@ std::string errorLines(const fs::path& log) {
 // The agent of one lab, built with the other labs from the reference (framework/grader/CMakeLists.txt).
 fs::path labAgent(const fs::path& binDir, int lab) { return agentFile(binDir, "raylab-agent-lab" + std::to_string(lab)); }
 
-// CMake's configuration of a grading build: the agents from `submission` (empty: labs/).
+// CMake's configuration of a grading build: the agents from `submission` (empty: labs/), and the
+// labs each lab uses (RAYLAB_LAB_USES_<n>, read by framework/grader/CMakeLists.txt: CMake does not
+// read lab.toml).
 std::vector<std::string> configureCommand(const Toolchain& tools, const fs::path& sourceDir, const fs::path& buildDir,
-                                          const std::string& submission) {
+                                          const std::string& submission, const LabCatalog& course) {
     std::vector<std::string> configure{tools.cmake, "-S", fs::absolute(sourceDir).string(), "-B",
                                        fs::absolute(buildDir).string(), "-DCMAKE_BUILD_TYPE=Release",
                                        "-DBUILD_TESTING=OFF", "-DRAYLAB_SUBMISSION_DIR=" + submission,
@@ -108,6 +110,14 @@ std::vector<std::string> configureCommand(const Toolchain& tools, const fs::path
                                        "-DRAYLAB_LTO=OFF"};
     if (const std::string launcher = ccacheLauncher(tools, sourceDir, buildDir); !launcher.empty())
         configure.push_back("-DCMAKE_CXX_COMPILER_LAUNCHER=" + launcher);
+    for (const LabDescription& lab : course.labs) {
+        std::string uses;
+        for (int other : lab.uses) {
+            if (!uses.empty()) uses += ';';
+            uses += std::to_string(other);
+        }
+        configure.push_back("-DRAYLAB_LAB_USES_" + std::to_string(lab.number) + "=" + uses);
+    }
     std::error_code error;
     if (!tools.generator.empty() && !fs::exists(buildDir / "CMakeCache.txt", error))
         configure.insert(configure.end(), {"-G", tools.generator});
@@ -134,13 +144,14 @@ bool buildGradingKit(const Toolchain& tools, const fs::path& sourceDir, const fs
     const ProcessOptions toLog{{}, log};
     const std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--config",
                                          "Release", "--target", "raylab-grading-kit", "-j", "2"};
-    return runProcess(configureCommand(tools, sourceDir, buildDir, ""), toLog).succeeded() &&
+    return runProcess(configureCommand(tools, sourceDir, buildDir, "", LabCatalog{}), toLog).succeeded() &&
            runProcess(build, toLog).succeeded();
 }
 
 SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDir, const fs::path& labs,
-                                const fs::path& buildDir, const std::vector<int>& numbers, const fs::path& log) {
+                                const fs::path& buildDir, const LabCatalog& course, const fs::path& log) {
     SubmissionBuild b;
+    const std::vector<int> numbers = course.numbers();
     fs::create_directories(buildDir);
     b.log = fs::absolute(log.empty() ? buildDir / "build.log" : log);
     const fs::path bin = buildDir / "bin";
@@ -149,7 +160,7 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     fs::remove(agentFile(bin, "raylab-agent"), error);
     for (int lab : numbers) fs::remove(labAgent(bin, lab), error);
     const std::vector<std::string> configure =
-        configureCommand(tools, sourceDir, buildDir, cmakeSafe(labs, buildDir).generic_string());
+        configureCommand(tools, sourceDir, buildDir, cmakeSafe(labs, buildDir).generic_string(), course);
     // --config: a multi-configuration generator (Visual Studio) would build Debug otherwise.
     std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--config", "Release",
                                    "--target", "raylab-submission-agents", "-j", "2"};

@@ -33,12 +33,12 @@ std::vector<AgentPlan> findAgents(const std::filesystem::path& binDir, const std
 
 // Configures (once) and builds the agents of the submission's copy `labs` in `buildDir`, keeping
 // going past errors so that the labs that compile are still graded: a lab that does not compile costs
-// that lab and, without solutions/, the labs that use it. `numbers`: the course's labs. The build's
+// that lab and, without solutions/, the labs that use it (`course`: the labs and their `uses`). The build's
 // output goes to `log` (empty: buildDir/build.log). A build folder may serve many submissions (a
 // class): each copy's objects are its own (CMake's targets are named after the copy's folder).
 SubmissionBuild buildSubmission(const Toolchain& tools, const std::filesystem::path& sourceDir,
                                 const std::filesystem::path& labs, const std::filesystem::path& buildDir,
-                                const std::vector<int>& numbers, const std::filesystem::path& log = {});
+                                const LabCatalog& course, const std::filesystem::path& log = {});
 
 // Builds in `buildDir`, once for a class, what every submission links and none changes: the
 // framework, the grader, the agents' own code, the reference labs and the stubs (the target

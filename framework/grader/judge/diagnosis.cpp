@@ -32,6 +32,9 @@ Mistake readMistake(const TomlReader& r, const toml::table& m, const std::string
     r.onlyKeys(m, where, {"id", "name", "name_fr", "hint", "hint_fr", "label", "lab", "function", "check"});
     Mistake mistake;
     mistake.id = r.text(m, where, "id");
+    // Its signatures are in the folder mistakes/<id>: a name that is a path would reach elsewhere.
+    if (mistake.id.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos)
+        r.fail(m.get("id"), std::string(where) + "id", tr("toml.folder_name", {{"value", mistake.id}}));
     mistake.nameEn = r.text(m, where, "name");
     mistake.nameFr = r.text(m, where, "name_fr");
     mistake.hintEn = r.text(m, where, "hint");
