@@ -54,8 +54,9 @@ TEST_CASE("a lab file that .incbin's the solution does not build under bubblewra
     const fs::path root = freshFolder("raylab-confined-build");
     fs::create_directories(root / "submission" / "lab3_sphere");
     std::ofstream(root / "submission" / "lab3_sphere" / "sphere_geometry.cpp") << stealingLab3(kSolution);
+    // out/build: the depth of the other grading builds, whose objects the compiler cache shares (tests/grading/CMakeLists.txt).
     const ProgramRun run = runProgram({(binDir() / "raylab").string(), "grade", "--labs", (root / "submission").string(),
-                                       "--build-dir", (root / "build").string(), "--report", (root / "report").string(),
+                                       "--build-dir", (root / "out" / "build").string(), "--report", (root / "report").string(),
                                        "--lab", "3"},
                                       root / "output.txt", root);
     CHECK_MESSAGE(run.output.find("file not found") != std::string::npos, run.output); // the assembler's, in the sandbox

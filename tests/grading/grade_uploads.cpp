@@ -16,8 +16,10 @@ using namespace raylab::test;
 
 namespace {
 
-// In this build's folder: a fixed name in the temporary folder was shared with every other tree's run.
-const fs::path kRoot = binDir().parent_path() / "grading-uploads";
+// This tree's own folder in the temporary folder; the build folder at the depth of the class tests'
+// (tests/grading/CMakeLists.txt: their compile commands are the same, the compiler cache shares them).
+const fs::path kRoot = scratchPath("raylab-grading-uploads");
+const fs::path kBuild = kRoot / "out" / "build";
 
 // A submission folder of its own, made empty.
 fs::path submission(const std::string& name) {
@@ -42,7 +44,7 @@ struct Graded {
 // `raylab grade --labs FOLDER`, in English, in the cases' shared build folder.
 Graded grade(const fs::path& folder) {
     std::vector<std::string> argv{(binDir() / "raylab").string(), "grade", "--labs", folder.string(), "--build-dir",
-                                  (kRoot / "build").string(), "--report", (kRoot / "report").string(), "--lang", "en"};
+                                  kBuild.string(), "--report", (kRoot / "report").string(), "--lang", "en"};
     const ProgramRun run = runProgram(argv, kRoot / "output.txt", kRoot);
     Graded g{run.status, run.output, {}, {}};
     std::istringstream lines(run.output);
@@ -169,7 +171,7 @@ TEST_CASE("in the students' tree, a missing ';' in lab 4 costs lab 4 only: labs 
     const raylab::grader::Toolchain tools{RAYLAB_CMAKE_COMMAND, RAYLAB_CMAKE_GENERATOR, raylab::grader::findProgram("ccache")};
     const GradeSetup setup = courseSetup();
     const raylab::grader::SubmissionBuild b =
-        raylab::grader::buildSubmission(tools, tree, folder, kRoot / "students-tree-build", setup.labs);
+        raylab::grader::buildSubmission(tools, tree, folder, tree / "build", setup.labs);
     CHECK_FALSE(b.isolated);
     CHECK(b.brokenLabs == std::vector<int>{4});
     CHECK(b.compilerMessage.find("look_at.cpp") != std::string::npos);
