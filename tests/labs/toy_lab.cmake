@@ -132,7 +132,9 @@ endfunction()
 function(step_does_not_compile)
   file(READ ${TOY}/solution/toy_colour.cpp written)
   file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}\nint unfinished(\n")
-  run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-broken)
+  # Its build folder beside build/ (not out/grade-build, the default): the same relative paths, so
+  # that the compiler cache (CMAKE_CXX_COMPILER_LAUNCHER in the environment) finds the tree's objects.
+  run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-broken --build-dir ${tree}/grade-build)
   expect("${output}" "grading labs/ as a submission" "a build that fails is graded as a submission")
   expect("${output}" "lab 6: 0 / 7 points" "lab 6 that does not compile gets no point")
   expect("${output}" "lab 1: 0 / 10 points" "the other labs are graded (lab 1 is a stub)")
