@@ -5,10 +5,10 @@
 #
 # When ccache is installed the trees compile through a cache of their own, whatever the user's
 # settings (CCACHE_DISABLE too): RAYLAB_TREES_CCACHE_DIR, from the environment variable of that name
-# when set (CI keeps it between runs), else build/trees-ccache. This build compiles through it too,
-# unless the user set a compiler launcher: then the trees find in it what this build compiled and
-# compile only what differs in them (the toy lab's sixth lab, the students' tree's missing
-# solutions). Without ccache each tree compiles everything.
+# when set (CI keeps it between runs), else build/trees-ccache. Where those tests are (solutions/
+# is here), this build compiles through it too, unless the user set a compiler launcher: then the
+# trees find in it what this build compiled and compile only what differs in them (the toy lab's
+# sixth lab, the students' tree's missing solutions). Without ccache each tree compiles everything.
 #
 # Sets RAYLAB_CCACHE (empty without ccache) and RAYLAB_TREES_CCACHE_ENVIRONMENT (the settings a
 # tree's build runs with).
@@ -32,7 +32,7 @@ else()
   set(base "${CMAKE_SOURCE_DIR}")
 endif()
 set(RAYLAB_TREES_CCACHE_ENVIRONMENT "CCACHE_DIR=${RAYLAB_TREES_CCACHE_DIR}" "CCACHE_BASEDIR=${base}" "CCACHE_NOHASHDIR=1")
-if(NOT CMAKE_CXX_COMPILER_LAUNCHER AND base STREQUAL CMAKE_SOURCE_DIR)
+if(RAYLAB_HAVE_SOLUTIONS AND NOT CMAKE_CXX_COMPILER_LAUNCHER AND base STREQUAL CMAKE_SOURCE_DIR)
   set(CMAKE_CXX_COMPILER_LAUNCHER ${CMAKE_COMMAND} -E env --unset=CCACHE_DISABLE ${RAYLAB_TREES_CCACHE_ENVIRONMENT}
       ${RAYLAB_CCACHE})
 endif()
