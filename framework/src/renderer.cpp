@@ -162,7 +162,7 @@ std::vector<std::uint8_t> Renderer::pixelsToRefine(const std::vector<float>& spr
 void Renderer::renderCentres(Texture& image) {
     forEachTile(makeTiles(image.width(), image.height()), m_threads, m_progress, [&](const Tile& tile, unsigned) {
         return forEachPixel(tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
-            image.setPixel(i, j, renderer.renderPixelCentre(i, j));
+            image.setPixelInside(i, j, renderer.renderPixelCentre(i, j));
             return std::uint64_t(0);
         });
     });
@@ -174,7 +174,7 @@ void Renderer::renderSampled(Texture& image) {
     m_stats.randomNumbers = forEachTile(makeTiles(width, image.height()), m_threads, m_progress, [&](const Tile& tile, unsigned) {
         return forEachPixel(tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
             PixelSampler sampler(m_sampler, m_nbPixelSamples, m_seed, i, j, width);
-            image.setPixel(i, j, renderer.renderPixel(i, j, sampler));
+            image.setPixelInside(i, j, renderer.renderPixel(i, j, sampler));
             return sampler.randomNumbersDrawn();
         });
     });
@@ -198,7 +198,7 @@ void Renderer::renderAdaptive(Texture& image) {
             for (int i = tile.x0; i < tile.x1; ++i) {
                 PixelSampler sampler(kind, m_nbPixelSamples, m_seed, i, j, width);
                 probes[worker].reset();
-                image.setPixel(i, j, probed[worker].renderPixel(i, j, sampler));
+                image.setPixelInside(i, j, probed[worker].renderPixel(i, j, sampler));
                 spread[std::size_t(j) * width + i] = probes[worker].spread();
                 drawn += sampler.randomNumbersDrawn();
             }
@@ -214,7 +214,7 @@ void Renderer::renderAdaptive(Texture& image) {
         return more.forEachPixel(tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
             if (!m_refined[std::size_t(j) * width + i]) return std::uint64_t(0);
             PixelSampler sampler(kind, m_adaptive.maxSamples, secondPassSeed(m_seed), i, j, width);
-            image.setPixel(i, j, renderer.renderPixel(i, j, sampler));
+            image.setPixelInside(i, j, renderer.renderPixel(i, j, sampler));
             return sampler.randomNumbersDrawn();
         });
     });
