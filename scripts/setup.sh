@@ -1,53 +1,99 @@
 #!/usr/bin/env bash
-# Installs what raylab needs on Debian or Ubuntu (as root, or through sudo), and says what to
-# install elsewhere. Safe to run again: it installs only what is missing.
+# scripts/setup.sh [--tests]: installs what raylab's build needs on Debian or Ubuntu (as root, or
+# through sudo), with --tests what its test suite needs too, then checks that every piece is really
+# there. Safe to run again: it installs only what is missing. Exits non-zero naming what is still
+# missing and the command that installs it on this machine.
 set -euo pipefail
 
-packages=(cmake g++ make pkg-config libglm-dev libstb-dev zlib1g-dev doctest-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-          libzip-dev libcmark-dev libyaml-cpp-dev python3) # libyaml-cpp-dev: the autograder's tests only; python3: the tests parse junit.xml with its XML parser
-# Optional, raylab works without them (docs/grading.md): the grader's sandbox on Linux (bubblewrap, and
-# libseccomp for its fallback where bubblewrap cannot start), and ccache
-# (the students of a class build the framework's files once).
-optional=(bubblewrap libseccomp-dev ccache)
+# The build: the compiler and tools, the libraries, the grader's sandbox (bubblewrap, and libseccomp
+# for its fallback where bubblewrap cannot start) and ccache (the students of a class build the
+# framework's files once).
+packages=(g++ cmake make patch pkg-config libglm-dev libstb-dev zlib1g-dev doctest-dev libtomlplusplus-dev
+          libcli11-dev nlohmann-json3-dev libzip-dev libcmark-dev libyaml-cpp-dev bubblewrap libseccomp-dev ccache)
+# The test suite: python3 (the tests parse junit.xml with its XML parser), chromium (raylab report's
+# HTML in a headless browser, and its fonts), mmdebstrap (the Gradescope zip set up in a bare Debian).
+test_packages=(python3 chromium fonts-dejavu-core mmdebstrap)
+# Headers that a tree made by `raylab autograder` carries in third_party/ where the distribution lacks
+# them (Ubuntu 22.04: libtomlplusplus-dev; cmake/RaylabDependencies.cmake).
+declare -A third_party=([libglm-dev]=glm [libtomlplusplus-dev]=tomlplusplus [libcli11-dev]=cli11
+                        [nlohmann-json3-dev]=nlohmann_json [libstb-dev]=stb)
+# The programs the build runs, and the package of each.
+declare -A tools=([c++]=g++ [cmake]=cmake [make]=make [patch]=patch [pkg-config]=pkg-config)
+
+case "${1:-}" in
+  --tests) packages+=("${test_packages[@]}") ;;
+  "") ;;
+  *) echo "usage: scripts/setup.sh [--tests]" >&2; exit 2 ;;
+esac
+top=$(cd "$(dirname "$0")/.." && pwd)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
   cat <<'TXT'
 setup.sh installs packages on Debian and Ubuntu only. Elsewhere, install:
-  macOS (Homebrew): brew install cmake glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip cmark yaml-cpp
-  Windows (vcpkg):  vcpkg install glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip cmark yaml-cpp
+  macOS (Homebrew): xcode-select --install; brew install cmake glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip cmark yaml-cpp
+  Windows (vcpkg):  Visual Studio 2022 with "Desktop development with C++", then the libraries of vcpkg.json
 then run the cmake commands of README.md.
 TXT
   exit 0
 fi
 
+# The prefix that runs a command as root here: nothing as root, sudo for a user who has it.
+as_root=()
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then
+    as_root=(sudo)
+  else
+    as_root=(su root -c)
+  fi
+fi
+# The one command that installs the given packages on this machine, as a person would type it.
+install_command() {
+  local cmd="apt-get install -y $*"
+  if [ "$(id -u)" -eq 0 ]; then echo "$cmd"
+  elif command -v sudo >/dev/null 2>&1; then echo "sudo $cmd"
+  else echo "su root -c '$cmd'"
+  fi
+}
+installed() { [ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" = "install ok installed" ]; }
+run_as_root() {
+  if [ "${as_root[0]:-}" = su ]; then su root -c "$(printf '%q ' "$@")"; else "${as_root[@]}" "$@"; fi
+}
+
 missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
+for p in "${packages[@]}"; do installed "$p" || missing+=("$p"); done
 if ((${#missing[@]})); then
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  $sudo apt-get update -qq
-  # A package the distribution lacks (Ubuntu 22.04: libtomlplusplus-dev) is named, not asked for: a
-  # tree made by `raylab autograder` carries such headers in third_party/ (cmake/RaylabDependencies.cmake).
+  echo "setup: updating the package lists"
+  run_as_root apt-get update -qq
   available=()
   for p in "${missing[@]}"; do
-    if apt-cache policy "$p" 2>/dev/null | grep -q "Candidate: [0-9]"; then
+    # The whole answer is read before it is matched: a pipe into `grep -q` would end apt-cache early
+    # (SIGPIPE) and, under pipefail, make a present package look absent.
+    policy=$(apt-cache policy "$p" 2>/dev/null || true)
+    if [[ $policy =~ Candidate:\ [0-9] ]]; then
       available+=("$p")
-    else
-      echo "setup: $p is not in this system's archive: raylab takes it from third_party/ when the tree has it"
+    elif [ -n "${third_party[$p]:-}" ] && [ -e "$top/third_party/${third_party[$p]}" ]; then
+      echo "setup: $p is not in this system's archive: raylab takes it from third_party/${third_party[$p]}"
     fi
   done
   if ((${#available[@]})); then
     echo "setup: installing ${available[*]}"
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${available[@]}" >/dev/null
+    run_as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${available[@]}"
   fi
 fi
-for p in "${optional[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" && continue
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "$p" >/dev/null ||
-    echo "setup: $p could not be installed; raylab works without it (docs/grading.md)"
+
+# The check: every package, and the tools the build runs, really there.
+still=()
+for p in "${packages[@]}"; do
+  installed "$p" && continue
+  [ -n "${third_party[$p]:-}" ] && [ -e "$top/third_party/${third_party[$p]}" ] && continue
+  still+=("$p")
 done
-echo "setup: done"
+for tool in "${!tools[@]}"; do
+  command -v "$tool" >/dev/null 2>&1 || [[ " ${still[*]} " == *" ${tools[$tool]} "* ]] || still+=("${tools[$tool]}")
+done
+if ((${#still[@]})); then
+  echo "setup: still missing: ${still[*]}" >&2
+  echo "setup: install them with: $(install_command "${still[@]}")" >&2
+  exit 1
+fi
+echo "setup: done, everything raylab needs${1:+ and its tests need} is installed"
