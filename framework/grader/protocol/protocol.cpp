@@ -136,9 +136,9 @@ NameRegistry<ProbeSpec>& probes() {
 
 } // namespace
 
-const ProbeSpec& registerProbe(ProbeSpec spec, SourcePlace where) {
+const ProbeSpec* registerProbe(ProbeSpec spec, SourcePlace where) {
     const std::string name = spec.name;
-    return probes().add(name, std::move(spec), where).value;
+    return &probes().add(name, std::move(spec), where).value;
 }
 
 const ProbeSpec* probeNamed(std::string_view name) {

@@ -34,9 +34,11 @@ struct ProbeSpec {
     bool (*validOutputs)(std::span<const double> inputs, std::span<const double> outputs) = nullptr;
 };
 
-// Keeps `spec` for the life of the program (at static initialisation, from a lab's probes.h); the same
-// name twice is a std::logic_error naming both places (two labs would answer one probe).
-const ProbeSpec& registerProbe(ProbeSpec spec, SourcePlace where = SourcePlace::here());
+// Keeps `spec` for the life of the program (at static initialisation, from a lab's probes.h) and
+// returns where it is kept; the same name twice is a std::logic_error naming both places (two labs
+// would answer one probe). A pointer, not a reference: a reference bound to the result of a call that
+// takes a temporary looks dangling to GCC 14 (-Wdangling-reference), and a Call holds a pointer anyway.
+const ProbeSpec* registerProbe(ProbeSpec spec, SourcePlace where = SourcePlace::here());
 // The registered probe of that name; nullptr when there is none.
 const ProbeSpec* probeNamed(std::string_view name);
 // Whether `outputs` has the size the probe gives for `inputs`.

@@ -58,7 +58,7 @@ struct Size {
 FunctionCheck gradientCheck(std::string name, std::vector<Size> sizes,
                             std::function<void(const std::vector<Gradient>& textures, Judge& judge)> judge) {
     std::vector<protocol::Call> calls;
-    for (const Size& s : sizes) calls.push_back({&probes::fillGradient, {double(s.width), double(s.height)}});
+    for (const Size& s : sizes) calls.push_back({probes::fillGradient, {double(s.width), double(s.height)}});
     return {std::move(name), std::move(calls), [sizes, judge](const auto& out, Judge& j) {
                 std::vector<Gradient> textures;
                 for (std::size_t k = 0; k < sizes.size(); ++k) textures.push_back({sizes[k].width, sizes[k].height, out[k]});

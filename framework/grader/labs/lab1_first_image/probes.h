@@ -11,6 +11,6 @@ inline bool validGradient(std::span<const double> inputs, std::span<const double
 }
 
 // (W, H) -> the W x H texture fillGradient wrote (pre-filled with -1), 3 W H values
-inline const protocol::ProbeSpec& fillGradient = protocol::registerProbe({"fillGradient", 2, 0, &validGradient});
+inline const protocol::ProbeSpec* const fillGradient = protocol::registerProbe({"fillGradient", 2, 0, &validGradient});
 
 } // namespace raylab::grader::probes

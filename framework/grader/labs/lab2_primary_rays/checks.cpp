@@ -28,9 +28,9 @@ struct Camera {
         return glm::normalize(glm::dvec3(width / 2., height / 2., 1.) + sx * width * glm::dvec3(-1., 0., 0.) -
                               sy * height * glm::dvec3(0., 1., 0.));
     }
-    protocol::Call viewport() const { return {&probes::viewport, {double(width), double(height), fovy}}; }
+    protocol::Call viewport() const { return {probes::viewport, {double(width), double(height), fovy}}; }
     protocol::Call ray(double sx, double sy) const {
-        return {&probes::generateRay, {double(width), double(height), fovy, position.x, position.y, position.z, sx, sy}};
+        return {probes::generateRay, {double(width), double(height), fovy, position.x, position.y, position.z, sx, sy}};
     }
     std::string name() const {
         return tr("what.lab2.camera", {{"width", std::to_string(width)}, {"height", std::to_string(height)}, {"fovy", show(fovy)}});

@@ -6,8 +6,8 @@
 namespace raylab::grader::probes {
 
 // default camera (W, H, fovy) -> height, width, topLeft
-inline const protocol::ProbeSpec& viewport = protocol::registerProbe({"viewport", 3, 5});
+inline const protocol::ProbeSpec* const viewport = protocol::registerProbe({"viewport", 3, 5});
 // camera (W, H, fovy, px, py, pz) moved to p, generateRay(sx, sy) -> origin, direction
-inline const protocol::ProbeSpec& generateRay = protocol::registerProbe({"generateRay", 8, 6});
+inline const protocol::ProbeSpec* const generateRay = protocol::registerProbe({"generateRay", 8, 6});
 
 } // namespace raylab::grader::probes

@@ -52,7 +52,7 @@ protocol::Call call(const Case& c) {
     appendInputs(in, c.ray.origin);
     appendInputs(in, c.ray.direction);
     in.insert(in.end(), {c.tMin, c.tMax});
-    return {&probes::intersect, in};
+    return {probes::intersect, in};
 }
 
 // The two roots of the ray's line on the sphere, in double (nullopt when it misses the line).
@@ -170,7 +170,7 @@ protocol::Call liCall(int shading, const Sphere& s, const glm::dvec3& colour, co
     appendInputs(in, background);
     appendInputs(in, r.origin);
     appendInputs(in, r.direction);
-    return {&probes::li, in};
+    return {probes::li, in};
 }
 
 enum Shading { kFlat = 0, kPlaceholder = 1, kCosine = 2 };
@@ -204,7 +204,7 @@ protocol::Call normalCall(const Sphere& s, const glm::dvec3& point) {
     appendInputs(in, s.centre);
     in.push_back(s.radius);
     appendInputs(in, point);
-    return {&probes::computeNormal, in};
+    return {probes::computeNormal, in};
 }
 
 // What Li returns for the hit (or miss) `intersect` gave: the background, or the shading at that hit

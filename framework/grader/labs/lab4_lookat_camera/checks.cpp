@@ -33,7 +33,7 @@ struct LookAt {
         for (const glm::dvec3& p : {position, target, up})
             appendInputs(in, p);
         in.push_back(fovy);
-        return {&probes::lookAt, in};
+        return {probes::lookAt, in};
     }
 };
 
@@ -84,7 +84,7 @@ protocol::Call refusedCall(const glm::dvec3& position, const glm::dvec3& target,
     std::vector<double> in;
     for (const glm::dvec3& p : {position, target, up})
         appendInputs(in, p);
-    return {&probes::lookAtRefused, in};
+    return {probes::lookAtRefused, in};
 }
 
 // A lookAt check, one call a camera: `expect` judges what each camera was built as.

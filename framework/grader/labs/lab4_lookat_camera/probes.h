@@ -6,8 +6,8 @@
 namespace raylab::grader::probes {
 
 // (W, H, position, target, up, fovy) -> u, v, w, position, height, width, topLeft
-inline const protocol::ProbeSpec& lookAt = protocol::registerProbe({"lookAt", 12, 17});
+inline const protocol::ProbeSpec* const lookAt = protocol::registerProbe({"lookAt", 12, 17});
 // (position, target, up) -> 1 when std::invalid_argument, 0 when built
-inline const protocol::ProbeSpec& lookAtRefused = protocol::registerProbe({"lookAtRefused", 9, 1});
+inline const protocol::ProbeSpec* const lookAtRefused = protocol::registerProbe({"lookAtRefused", 9, 1});
 
 } // namespace raylab::grader::probes

@@ -18,7 +18,7 @@ struct Pixel {
     int width, height, i, j, samples;
     std::uint64_t seed;
     protocol::Call call() const {
-        return {&probes::renderPixel,
+        return {probes::renderPixel,
                 {double(width), double(height), double(i), double(j), double(samples), double(seed)}};
     }
     std::string name() const {
@@ -62,10 +62,10 @@ void judgePixel(Judge& judge, const Pixel& p, const Rendered& r) {
 void addChecks(LabChecks& checks, CaseRandom& random) {
     const int drawnCount = random.integer(2, 64);
     checks.add({"setNbPixelSamples: stores N and refuses fewer than 1",
-               {{&probes::setSamples, {9.}},
-                {&probes::setSamples, {double(drawnCount)}},
-                {&probes::setSamples, {0.}},
-                {&probes::setSamples, {-3.}}},
+               {{probes::setSamples, {9.}},
+                {probes::setSamples, {double(drawnCount)}},
+                {probes::setSamples, {0.}},
+                {probes::setSamples, {-3.}}},
                [drawnCount](const auto& out, Judge& judge) {
                    for (const auto& [k, n] : {std::pair{0, 9}, std::pair{1, drawnCount}})
                        judge.expectTrue(tr("what.lab5.stored", {{"n", std::to_string(n)}}),

@@ -14,8 +14,8 @@ inline bool validRenderPixel(std::span<const double>, std::span<const double> ou
 }
 
 // setNbPixelSamples(n) -> refused (0 or 1), nbPixelSamples()
-inline const protocol::ProbeSpec& setSamples = protocol::registerProbe({"setNbPixelSamples", 1, 2});
+inline const protocol::ProbeSpec* const setSamples = protocol::registerProbe({"setNbPixelSamples", 1, 2});
 // (W, H, i, j, n, seed) -> rays traced k, colour, k screen points (sx, sy)
-inline const protocol::ProbeSpec& renderPixel = protocol::registerProbe({"renderPixel", 6, 0, &validRenderPixel});
+inline const protocol::ProbeSpec* const renderPixel = protocol::registerProbe({"renderPixel", 6, 0, &validRenderPixel});
 
 } // namespace raylab::grader::probes

@@ -20,8 +20,8 @@ void appendOutputs(std::vector<double>& out, const glm::vec3& v) {
     out.insert(out.end(), {v.x, v.y, v.z});
 }
 
-void registerProbeFunction(const grader::protocol::ProbeSpec& probe, ProbeFunction function, SourcePlace where) {
-    functions().add(probe.name, function, where);
+void registerProbeFunction(const grader::protocol::ProbeSpec* probe, ProbeFunction function, SourcePlace where) {
+    functions().add(probe->name, function, where);
 }
 
 std::vector<double> callProbe(const grader::protocol::Call& call) {

@@ -33,14 +33,14 @@ void appendOutputs(std::vector<double>& out, const glm::vec3& v);
 using ProbeFunction = std::vector<double> (*)(ProbeInputs inputs);
 
 // Adds the function that answers `probe`; a probe answered twice is a std::logic_error naming both places.
-void registerProbeFunction(const grader::protocol::ProbeSpec& probe, ProbeFunction function, SourcePlace where);
+void registerProbeFunction(const grader::protocol::ProbeSpec* probe, ProbeFunction function, SourcePlace where);
 
 // Throws whatever the student's code throws (NotDoneYet included); std::invalid_argument when no
 // function answers the probe.
 std::vector<double> callProbe(const grader::protocol::Call& call);
 
 struct ProbeRegistrar {
-    ProbeRegistrar(const grader::protocol::ProbeSpec& probe, ProbeFunction function,
+    ProbeRegistrar(const grader::protocol::ProbeSpec* probe, ProbeFunction function,
                    SourcePlace where = SourcePlace::here()) {
         registerProbeFunction(probe, function, where);
     }

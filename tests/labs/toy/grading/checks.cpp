@@ -14,7 +14,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     for (const glm::dvec3& d : directions) {
         std::vector<double> inputs;
         appendInputs(inputs, d);
-        calls.push_back({&probes::toyColour, inputs});
+        calls.push_back({probes::toyColour, inputs});
     }
     checks.add({"toyColour: 1 - (d + 1) / 2 for each direction d", calls, [directions](const auto& out, Judge& judge) {
                     for (std::size_t k = 0; k < directions.size(); ++k)

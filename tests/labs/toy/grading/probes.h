@@ -6,6 +6,6 @@
 namespace raylab::grader::probes {
 
 // direction d -> toyColour of a ray from the origin along d
-inline const protocol::ProbeSpec& toyColour = protocol::registerProbe({"toyColour", 3, 3});
+inline const protocol::ProbeSpec* const toyColour = protocol::registerProbe({"toyColour", 3, 3});
 
 } // namespace raylab::grader::probes
