@@ -1,4 +1,4 @@
-# Finds raylab's libraries. Where one is missing, the error says how to install it on each system.
+# Finds raylab's libraries. Where one is missing, the error says how to install it on this machine.
 #
 # Grading needs only a C++20 compiler, CMake and zlib: the header-only libraries (GLM, stb, toml++,
 # CLI11, nlohmann-json) come from the system when it has them, else from third_party/<name>/include,
@@ -6,11 +6,10 @@
 # toml++). The compiled libraries of the tools and tests (cmark, libzip, doctest, yaml-cpp) are not
 # looked for when RAYLAB_GRADING_ONLY is ON.
 
+# The command is this machine's (cmake/RaylabInstallCommand.cmake); scripts/setup.sh installs them all.
 function(raylab_missing what debian homebrew vcpkg)
-  message(FATAL_ERROR "raylab needs ${what}, which was not found. Install it with\n"
-                      "  Debian/Ubuntu: sudo apt-get install ${debian}\n"
-                      "  macOS:         brew install ${homebrew}\n"
-                      "  Windows:       vcpkg install ${vcpkg}   (then configure with the vcpkg toolchain file)\n")
+  raylab_install_command(command "${debian}" "${homebrew}" "${vcpkg}")
+  message(FATAL_ERROR "raylab needs ${what}, which was not found. Install it with\n  ${command}\n")
 endfunction()
 
 # raylab_require_package(PACKAGE TARGET WHAT DEBIAN HOMEBREW VCPKG): PACKAGE's CMake package, unless

@@ -12,11 +12,20 @@ packages=(g++ cmake make patch pkg-config libglm-dev libstb-dev zlib1g-dev docte
           libcli11-dev nlohmann-json3-dev libzip-dev libcmark-dev libyaml-cpp-dev bubblewrap libseccomp-dev ccache)
 # The test suite: python3 (the tests parse junit.xml with its XML parser), chromium (raylab report's
 # HTML in a headless browser, and its fonts), mmdebstrap (the Gradescope zip set up in a bare Debian).
+# A test whose package is missing is skipped, saying so (tests/support/needs.h).
 test_packages=(python3 chromium fonts-dejavu-core mmdebstrap)
+# What some archives lack, which costs tests only (skipped): Ubuntu has no chromium package but a snap's
+# (chromium-browser, which a container cannot run).
+declare -A optional=([chromium]=1 [fonts-dejavu-core]=1)
+# The workflow presets (README.md's commands) need CMake 3.25.
+cmake_needed=3.25
 # Headers that a tree made by `raylab autograder` carries in third_party/ where the distribution lacks
 # them (Ubuntu 22.04: libtomlplusplus-dev; cmake/RaylabDependencies.cmake).
 declare -A third_party=([libglm-dev]=glm [libtomlplusplus-dev]=tomlplusplus [libcli11-dev]=cli11
                         [nlohmann-json3-dev]=nlohmann_json [libstb-dev]=stb)
+# The sources of those whose repository has that include/ folder, for a system whose archive lacks one.
+declare -A sources=([libtomlplusplus-dev]=https://github.com/marzer/tomlplusplus [libcli11-dev]=https://github.com/CLIUtils/CLI11
+                    [nlohmann-json3-dev]=https://github.com/nlohmann/json)
 # The programs the build runs, and the package of each.
 declare -A tools=([c++]=g++ [cmake]=cmake [make]=make [patch]=patch [pkg-config]=pkg-config)
 
@@ -73,6 +82,8 @@ if ((${#missing[@]})); then
       available+=("$p")
     elif [ -n "${third_party[$p]:-}" ] && [ -e "$top/third_party/${third_party[$p]}" ]; then
       echo "setup: $p is not in this system's archive: raylab takes it from third_party/${third_party[$p]}"
+    elif [ -n "${optional[$p]:-}" ]; then
+      echo "setup: $p is not in this system's archive: the tests that need it will be skipped"
     fi
   done
   if ((${#available[@]})); then
@@ -86,6 +97,7 @@ still=()
 for p in "${packages[@]}"; do
   installed "$p" && continue
   [ -n "${third_party[$p]:-}" ] && [ -e "$top/third_party/${third_party[$p]}" ] && continue
+  [ -n "${optional[$p]:-}" ] && continue
   still+=("$p")
 done
 for tool in "${!tools[@]}"; do
@@ -94,6 +106,23 @@ done
 if ((${#still[@]})); then
   echo "setup: still missing: ${still[*]}" >&2
   echo "setup: install them with: $(install_command "${still[@]}")" >&2
+  # What no archive of this system has (Ubuntu 22.04: libtomlplusplus-dev) is header-only: its
+  # source's include/ folder in third_party/ does (cmake/RaylabDependencies.cmake).
+  for p in "${still[@]}"; do
+    if [ -n "${sources[$p]:-}" ] && ! [[ $(apt-cache policy "$p" 2>/dev/null || true) =~ Candidate:\ [0-9] ]]; then
+      echo "setup: $p is in no archive of this system: put its headers in $top/third_party/${third_party[$p]}/include/" \
+           "(e.g. git clone --depth 1 ${sources[$p]} $top/third_party/${third_party[$p]}), or use a newer release" >&2
+    fi
+  done
+  exit 1
+fi
+# CMake: the distribution's may be older than the presets (Ubuntu 22.04: 3.22).
+cmake_version=$(cmake --version | sed -n '1s/^cmake version \([0-9]*\.[0-9]*\).*/\1/p')
+if [ "$(printf '%s\n' "$cmake_needed" "$cmake_version" | sort -V | head -n 1)" != "$cmake_needed" ]; then
+  echo "setup: cmake is $cmake_version here; README.md's workflow presets need $cmake_needed or newer. Install a newer" \
+       "one (Ubuntu: $(if [ "$(id -u)" -ne 0 ]; then echo "sudo "; fi)snap install cmake --classic), or build without the" \
+       "presets:" \
+       "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build --target figures" >&2
   exit 1
 fi
 echo "setup: done, everything raylab needs${1:+ and its tests need} is installed"

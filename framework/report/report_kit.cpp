@@ -3,6 +3,7 @@
 #include "grader/judge/grade.h"
 #include "grader/course/grade_reports.h"
 #include "grader/course/submission.h"
+#include "grader/sandbox/install_command.h"
 #include "src/atomic_file.h"
 #include "src/figure.h"
 #include "raylab/image_io.h"
@@ -168,7 +169,9 @@ void writePages(const KitContent& content, const fs::path& out) {
 int printPdf(const fs::path& out, const Words& words) {
     const std::optional<fs::path> chromium = findChromium();
     if (!chromium) {
-        std::printf("%s\n", words.text("no_chromium").c_str());
+        std::printf("%s\n", words.text("no_chromium", {{"install", grader::installCommand("chromium", "--cask chromium",
+                                                                                    "winget install Microsoft.Edge")}})
+                                .c_str());
         return 1;
     }
     printToPdf(*chromium, out / "report.html", out / "report.pdf", words);

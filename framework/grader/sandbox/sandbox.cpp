@@ -1,5 +1,6 @@
 #include "grader/sandbox/sandbox.h"
 
+#include "grader/sandbox/install_command.h"
 #include "grader/sandbox/job_object.h"
 #include "grader/sandbox/process.h"
 #include "grader/sandbox/sandbox_internal.h"
@@ -320,7 +321,7 @@ std::string bubblewrapMissing() {
     if (probe.works) return {};
     if (!probe.program.empty()) return tr("sandbox.bubblewrap_no_namespaces", {{"bwrap", probe.program.string()}});
 #ifdef __linux__
-    return tr("sandbox.bubblewrap_not_installed");
+    return tr("sandbox.bubblewrap_not_installed", {{"install", installCommand("bubblewrap", "", "")}});
 #endif
 #endif
     return tr("sandbox.bubblewrap_not_here");
