@@ -15,8 +15,8 @@
 #
 # Only the bare tarballs are cached (<release>-minbase.tar, remade when a week old), never an
 # installed package: each run installs everything as a newcomer would. What each release compiles is
-# cached (ccache-<release>/, bind-mounted into the root), so that a re-run of an unchanged tree
-# compiles little. Needs: mmdebstrap, git, mount, chroot (.ci/run has them: setup.sh --tests).
+# cached (ccache-<release>/, bind-mounted into the root, shared by root's and the user's runs), so that
+# a re-run of an unchanged tree compiles little. Needs: mmdebstrap, git, mount, chroot (setup.sh --tests).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 if [ "$#" -eq 0 ]; then set -- bookworm trixie; fi
@@ -100,7 +100,7 @@ in_root() {
   [ "$user" = root ] || as=(setpriv "--reuid=$user" "--regid=$user" --init-groups)
   chroot "$root" /usr/bin/env -i HOME="$home" USER="$user" LOGNAME="$user" TERM=dumb \
     PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-    CCACHE_DIR=/var/cache/raylab-ccache RAYLAB_TREES_CCACHE_DIR=/var/cache/raylab-ccache \
+    CCACHE_DIR=/var/cache/raylab-ccache CCACHE_UMASK=000 RAYLAB_TREES_CCACHE_DIR=/var/cache/raylab-ccache \
     "${as[@]}" /bin/bash -c "cd ~ && $command" >"$log" 2>&1 || status=$?
   results+=("$step $((SECONDS - start)) $status")
   if [ "$status" -ne 0 ]; then
@@ -125,15 +125,13 @@ for release in "${releases[@]}"; do
     CCACHE_NOHASHDIR=1 && $students_command" || failed=1
 done
 for release in "${user_releases[@]}"; do
-  # A fresh root, with sudo and a user allowed it (as a lab machine's); the user's own compiler cache.
+  # A fresh root, with sudo and a user allowed it (as a lab machine's); the release's compiler cache,
+  # which every user may write (CCACHE_UMASK above).
   fresh_root "$release" "$release-user" /home/student/raylab
   chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin DEBIAN_FRONTEND=noninteractive /bin/bash -c \
     'apt-get update -qq && apt-get install -y -qq sudo >/dev/null && useradd --create-home --shell /bin/bash student &&
      echo "student ALL=(ALL) NOPASSWD: ALL" >/etc/sudoers.d/student && chown -R student: /home/student'
-  umount "$root/var/cache/raylab-ccache"
-  mkdir -p "$dir/ccache-$release-user"
-  chown "$(stat -c %u "$root/home/student")" "$dir/ccache-$release-user"
-  mount --bind "$dir/ccache-$release-user" "$root/var/cache/raylab-ccache"
+  chmod -R a+rwX "$dir/ccache-$release"
   in_root "$release-user-figures" student "cd raylab && $figures_command" || failed=1
 done
 unmount_root
