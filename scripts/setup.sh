@@ -55,14 +55,15 @@ if [ "$(id -u)" -ne 0 ]; then
     as_root=(su root -c)
   fi
 fi
-# The one command that installs the given packages on this machine, as a person would type it.
-install_command() {
-  local cmd="apt-get install -y $*"
-  if [ "$(id -u)" -eq 0 ]; then echo "$cmd"
-  elif command -v sudo >/dev/null 2>&1; then echo "sudo $cmd"
-  else echo "su root -c '$cmd'"
+# A command run as root on this machine, as a person would type it; the one that installs packages.
+root_command() {
+  if [ "$(id -u)" -eq 0 ]; then echo "$*"
+  elif command -v sudo >/dev/null 2>&1; then echo "sudo $*"
+  else echo "su root -c '$*'"
   fi
 }
+install_command() { root_command "apt-get install -y $*"; }
+in_archive() { [[ $(apt-cache policy "$1" 2>/dev/null || true) =~ Candidate:\ [0-9] ]]; }
 installed() { [ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" = "install ok installed" ]; }
 run_as_root() {
   if [ "${as_root[0]:-}" = su ]; then su root -c "$(printf '%q ' "$@")"; else "${as_root[@]}" "$@"; fi
@@ -75,10 +76,9 @@ if ((${#missing[@]})); then
   run_as_root apt-get update -qq
   available=()
   for p in "${missing[@]}"; do
-    # The whole answer is read before it is matched: a pipe into `grep -q` would end apt-cache early
-    # (SIGPIPE) and, under pipefail, make a present package look absent.
-    policy=$(apt-cache policy "$p" 2>/dev/null || true)
-    if [[ $policy =~ Candidate:\ [0-9] ]]; then
+    # in_archive reads the whole answer before it is matched: a pipe into `grep -q` would end apt-cache
+    # early (SIGPIPE) and, under pipefail, make a present package look absent.
+    if in_archive "$p"; then
       available+=("$p")
     elif [ -n "${third_party[$p]:-}" ] && [ -e "$top/third_party/${third_party[$p]}" ]; then
       echo "setup: $p is not in this system's archive: raylab takes it from third_party/${third_party[$p]}"
@@ -105,22 +105,25 @@ for tool in "${!tools[@]}"; do
 done
 if ((${#still[@]})); then
   echo "setup: still missing: ${still[*]}" >&2
-  echo "setup: install them with: $(install_command "${still[@]}")" >&2
-  # What no archive of this system has (Ubuntu 22.04: libtomlplusplus-dev) is header-only: its
-  # source's include/ folder in third_party/ does (cmake/RaylabDependencies.cmake).
+  installable=()
   for p in "${still[@]}"; do
-    if [ -n "${sources[$p]:-}" ] && ! [[ $(apt-cache policy "$p" 2>/dev/null || true) =~ Candidate:\ [0-9] ]]; then
+    if in_archive "$p"; then
+      installable+=("$p")
+    elif [ -n "${sources[$p]:-}" ]; then # header-only (Ubuntu 22.04's toml++): its include/ in third_party/
       echo "setup: $p is in no archive of this system: put its headers in $top/third_party/${third_party[$p]}/include/" \
-           "(e.g. git clone --depth 1 ${sources[$p]} $top/third_party/${third_party[$p]}), or use a newer release" >&2
+           "(git clone --depth 1 ${sources[$p]} $top/third_party/${third_party[$p]}), or use a newer release" >&2
+    else
+      echo "setup: $p is in no archive of this system: use a newer release of it" >&2
     fi
   done
+  if ((${#installable[@]})); then echo "setup: install them with: $(install_command "${installable[@]}")" >&2; fi
   exit 1
 fi
 # CMake: the distribution's may be older than the presets (Ubuntu 22.04: 3.22).
 cmake_version=$(cmake --version | sed -n '1s/^cmake version \([0-9]*\.[0-9]*\).*/\1/p')
 if [ "$(printf '%s\n' "$cmake_needed" "$cmake_version" | sort -V | head -n 1)" != "$cmake_needed" ]; then
   echo "setup: cmake is $cmake_version here; README.md's workflow presets need $cmake_needed or newer. Install a newer" \
-       "one (Ubuntu: $(if [ "$(id -u)" -ne 0 ]; then echo "sudo "; fi)snap install cmake --classic), or build without the" \
+       "one (Ubuntu: $(root_command snap install cmake --classic)), or build without the" \
        "presets:" \
        "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build --target figures" >&2
   exit 1
