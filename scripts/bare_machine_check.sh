@@ -129,7 +129,7 @@ for release in "${user_releases[@]}"; do
   # which every user may write (CCACHE_UMASK above).
   fresh_root "$release" "$release-user" /home/student/raylab
   chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin DEBIAN_FRONTEND=noninteractive /bin/bash -c \
-    'apt-get update -qq && apt-get install -y -qq sudo >/dev/null && useradd --create-home --shell /bin/bash student &&
+    'apt-get update -qq && apt-get install -y -qq sudo >/dev/null && useradd --no-create-home --shell /bin/bash student &&
      echo "student ALL=(ALL) NOPASSWD: ALL" >/etc/sudoers.d/student && chown -R student: /home/student'
   chmod -R a+rwX "$dir/ccache-$release"
   in_root "$release-user-figures" student "cd raylab && $figures_command" || failed=1

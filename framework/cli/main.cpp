@@ -76,7 +76,8 @@ std::string sayParseError(const CLI::Error& error) {
     static const std::regex notExpected("The following arguments? (?:was|were) not expected: (.*)");
     static const std::regex missingValue(R"((\S+): \d+ required (\S+) missing)");
     static const std::regex notInSet(R"((\S+): (.*) not in (\{.*\}))");
-    static const std::regex notInRange(R"((\S+): Value (.*) not in range (\S+) to (\S+))");
+    // "low to high" (CLI11 2.3, Debian 12), "[low - high]" (CLI11 2.4, Debian 13)
+    static const std::regex notInRange(R"((\S+): Value (.*) not in range \[?(\S+?)(?: to | - )(\S+?)\]?)");
     static const std::regex noDirectory(R"((\S+): Directory does not exist: (.*))");
     static const std::regex noFile(R"((\S+): File does not exist: (.*))");
     static const std::regex required(R"((\S+) is required)");
