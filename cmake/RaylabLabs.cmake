@@ -106,8 +106,9 @@ function(raylab_lab_target out n origin)
     target_link_libraries(${target} PUBLIC raylab_framework PRIVATE raylab_warnings)
     raylab_lab_shadings(${target} ${n})
     if(origin STREQUAL "labs")
-      # A stub's one-line body ignores its parameters on purpose.
-      target_compile_options(${target} PRIVATE $<$<NOT:$<CXX_COMPILER_ID:MSVC>>:-Wno-unused-parameter>)
+      # A stub's one-line body ignores its parameters on purpose. On the sources, not the target: their
+      # options come after raylab_warnings' -Wextra, which would turn the warning on again (Clang).
+      set_property(SOURCE ${sources} APPEND PROPERTY COMPILE_OPTIONS $<$<NOT:$<CXX_COMPILER_ID:MSVC>>:-Wno-unused-parameter>)
     endif()
   endif()
   set(${out} ${target} PARENT_SCOPE)
