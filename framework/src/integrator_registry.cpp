@@ -27,9 +27,9 @@ NameRegistry<Drawing>& drawings() {
 // Every declared parameter's value: from `values`, or its default.
 ShadingParameters parameterValues(const std::string& name, const std::vector<ShadingParameter>& declared,
                                   const ShadingParameters& values) {
-    for (const auto& [key, value] : values)
-        if (std::none_of(declared.begin(), declared.end(), [&](const ShadingParameter& p) { return p.key == key; }))
-            throw std::invalid_argument("shading '" + name + "' has no parameter '" + key + "'");
+    for (const auto& given : values)
+        if (std::none_of(declared.begin(), declared.end(), [&](const ShadingParameter& p) { return p.key == given.first; }))
+            throw std::invalid_argument("shading '" + name + "' has no parameter '" + given.first + "'");
     ShadingParameters all;
     for (const ShadingParameter& p : declared) {
         const auto given = values.find(p.key);
