@@ -22,11 +22,12 @@ public:
     // Inline, as Scene::intersect: a call the compiler cannot see into would keep every ray's hit
     // record in memory, the spheres' too.
     bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const {
-        const float t = crossing(ray);
-        if (!within(t, tMin, tMax)) return false;
-        hit.t = t;
-        hit.position = ray.at(t);
-        return true;
+        if (const float t = crossing(ray); within(t, tMin, tMax)) {
+            hit.t = t;
+            hit.position = ray.at(t);
+            return true;
+        }
+        return false;
     }
     bool hits(const Ray& ray, float tMin, float tMax) const { return within(crossing(ray), tMin, tMax); }
 
