@@ -148,7 +148,7 @@ TEST_CASE("a reference's description: an unknown key, a wrong type or a NaN name
     };
     CHECK(error(written + "colour = 1\n") ==
           "fig.toml:" + std::to_string(std::count(written.begin(), written.end(), '\n') + 1) +
-              ": colour: unknown key (known keys: lab, kind, ambiguous, samples, rmse_limit, worst_correct_rmse, "
+              ": colour: unknown key (known keys: lab, kind, render_seconds, ambiguous, samples, rmse_limit, worst_correct_rmse, "
               "bias_lsb, outlier_z)");
     struct Case {
         std::string from, to, key, problem; // `from` replaced by `to`: the error at the line of `key`
