@@ -3,6 +3,7 @@
 #include "grader/sandbox/process.h"
 #include "src/messages.h"
 
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -12,6 +13,10 @@ namespace raylab::grader {
 namespace fs = std::filesystem;
 
 namespace {
+
+// A submission's whole build, every lab file together (the build guard stops a compile past it): far
+// beyond an honest one (seconds), a bound on one that makes each file expand to the compiler's limits.
+constexpr long long kBuildSeconds = 180;
 
 // What a CMake cache value or list item cannot hold as it is.
 constexpr const char* kCmakeUnsafe = "\n\r;\"\\$#[]";
@@ -66,6 +71,7 @@ std::string guardRefusal(const std::string& line) {
     const std::string source = rest.substr(0, arrow), read = arrow == std::string::npos ? "" : rest.substr(arrow + 4);
     if (why == "outside") return tr("build.guard_outside", {{"source", source}, {"file", read}});
     if (why == "stopped") return tr("build.guard_stopped", {{"source", source}});
+    if (why == "build-time") return tr("build.guard_build_time", {{"source", source}, {"seconds", std::to_string(kBuildSeconds)}});
     return tr("build.guard_unchecked", {{"source", source}});
 }
 
@@ -174,7 +180,9 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
         b.brokenLabs = numbers;
         return b;
     }
-    const ProcessResult built = runProcess(build, toLog);
+    ProcessOptions toBuild = toLog;
+    toBuild.environment = {"RAYLAB_BUILD_DEADLINE=" + std::to_string(std::time(nullptr) + kBuildSeconds)};
+    const ProcessResult built = runProcess(build, toBuild);
     if (!built.succeeded()) b.compilerMessage = built.started ? errorLines(b.log) : built.error;
     b.isolated = fs::is_directory(sourceDir / "solutions", error);
     if (b.isolated) {
