@@ -204,6 +204,17 @@ TEST_CASE("a fork bomb is stopped at the process limit of all its processes toge
     CHECK(r.labs[1].points == r.labs[1].maxPoints);
 }
 
+TEST_CASE("two children that hold 600 MB each, under a limit of 1 GB a process, are stopped at the limit of all its processes") {
+    GradeSetup setup = courseSetup();
+    setup.limits.memoryBytes = 1ull << 30;
+    if (!raylab::grader::detail::RunCgroup(setup.limits.processes, setup.limits.memoryBytes).active()) {
+        MESSAGE("skipped: no cgroup here (not root, or none delegated), memory is limited per process only");
+        return;
+    }
+    const GradeResult r = gradeAgent(setup, "raylab-bad-holds_memory");
+    expectOnlyLab1Lost(r, "used more than 1 GB of memory");
+}
+
 TEST_CASE("filling its working folder, or /tmp, is stopped at the disk limit, and named") {
     for (const std::string id : {"fills_scratch", "fills_tmp"}) {
         CAPTURE(id);

@@ -96,6 +96,7 @@ RunCgroup::RunCgroup(int processes, unsigned long long memoryBytes) {
     if (!fs::create_directory(memoryFolder, error)) return;
     m_folders.push_back(memoryFolder.string());
     if (!writeFile(pidsFolder / "pids.max", pids) || !writeFile(memoryFolder / "memory.limit_in_bytes", memory)) return;
+    writeFile(memoryFolder / "memory.memsw.limit_in_bytes", memory); // swap too, where it is accounted
     m_join = {(pidsFolder / "cgroup.procs").string(), (memoryFolder / "cgroup.procs").string()};
 #else
     (void)processes;

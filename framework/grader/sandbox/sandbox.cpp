@@ -263,7 +263,8 @@ private:
 };
 
 // The limits the parent watches while the agent runs, looked at every kMeterPeriod: everything it
-// wrote, and its cgroup's process limit (a fork refused there is a fork bomb: stopped at once).
+// wrote, and its cgroup's (a fork refused there is a fork bomb, a process killed at the memory limit
+// leaves the others holding it: the run is stopped at once).
 constexpr double kMeterPeriod = 0.1;
 
 struct RunMeter {
@@ -275,8 +276,9 @@ struct RunMeter {
     // Whether it went past one, which is recorded in `run`.
     bool overLimit(AgentRun& run) const {
         run.processLimit = cgroup.processLimitHit();
-        run.diskLimit = !run.processLimit && diskUsed(scratch) + tmp.used() > limits.diskBytes;
-        return run.processLimit || run.diskLimit;
+        run.memoryLimit = cgroup.memoryLimitHit();
+        run.diskLimit = !run.processLimit && !run.memoryLimit && diskUsed(scratch) + tmp.used() > limits.diskBytes;
+        return run.processLimit || run.memoryLimit || run.diskLimit;
     }
 };
 
@@ -394,7 +396,7 @@ AgentRun runPosix(const AgentCommand& c, const SandboxLimits& limits) {
     guard.reset();
     // A limit reached as it ended: a fork refused, a process the kernel killed for the memory of all.
     run.processLimit = run.processLimit || cgroup.processLimitHit();
-    run.memoryLimit = cgroup.memoryLimitHit();
+    run.memoryLimit = run.memoryLimit || cgroup.memoryLimitHit();
     if (end == WatchEnd::exited) {
         if (WIFEXITED(status)) run.exitCode = WEXITSTATUS(status);
         if (WIFSIGNALED(status)) run.signal = WTERMSIG(status);
