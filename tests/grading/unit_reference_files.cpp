@@ -69,7 +69,7 @@ FigureReference statistical() {
     f.stats->sampleSd.assign(kImage.rgb.size(), 16.f);
     f.stats->worstCorrectRmse = 4.;
     f.stats->rmseLimit = 5.;
-    f.renderSeconds = 1.5;
+    f.renderSeconds = 1.5; // written as 1500 ms
     return f;
 }
 
@@ -165,7 +165,7 @@ TEST_CASE("a reference's description: an unknown key, a wrong type or a NaN name
     };
     CHECK(error(written + "colour = 1\n") ==
           "fig.toml:" + std::to_string(std::count(written.begin(), written.end(), '\n') + 1) +
-              ": colour: unknown key (known keys: lab, kind, render_seconds, ambiguous, samples, rmse_limit, worst_correct_rmse, "
+              ": colour: unknown key (known keys: lab, kind, render_milliseconds, ambiguous, samples, rmse_limit, worst_correct_rmse, "
               "bias_lsb, outlier_z)");
     struct Case {
         std::string from, to, key, problem; // `from` replaced by `to`: the error at the line of `key`
