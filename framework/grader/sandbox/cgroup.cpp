@@ -7,10 +7,13 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <thread>
 #include <unistd.h>
 
@@ -66,9 +69,23 @@ fs::path delegatingV2() {
     return {};
 }
 
+constexpr const char* kPrefix = "raylab-run-";
+
 std::string uniqueName() {
     static std::atomic<unsigned> count{0};
-    return "raylab-run-" + std::to_string(getpid()) + "-" + std::to_string(count++);
+    return kPrefix + std::to_string(getpid()) + "-" + std::to_string(count++);
+}
+
+// The cgroups a grader killed with SIGKILL left in `parent` (raylab-run-<its pid>-N): removed once
+// empty (rmdir refuses a cgroup that still holds a process).
+void removeAbandoned(const fs::path& parent) {
+    std::error_code error;
+    for (fs::directory_iterator it(parent, error), end; !error && it != end; it.increment(error)) {
+        const std::string name = it->path().filename().string();
+        if (name.rfind(kPrefix, 0) != 0) continue;
+        const long owner = std::atol(name.c_str() + std::string_view(kPrefix).size());
+        if (owner > 0 && kill(pid_t(owner), 0) != 0 && errno == ESRCH) rmdir(it->path().c_str());
+    }
 }
 
 } // namespace
@@ -79,6 +96,7 @@ RunCgroup::RunCgroup(int processes, unsigned long long memoryBytes) {
     const std::string name = uniqueName(), pids = std::to_string(processes), memory = std::to_string(memoryBytes);
     std::error_code error;
     if (const fs::path parent = delegatingV2(); !parent.empty()) {
+        removeAbandoned(parent);
         const fs::path folder = parent / name;
         if (!fs::create_directory(folder, error)) return;
         m_v2 = true;
@@ -90,8 +108,11 @@ RunCgroup::RunCgroup(int processes, unsigned long long memoryBytes) {
     }
     const fs::path pidsFolder = fs::path(kRoot) / "pids" / name, memoryFolder = fs::path(kRoot) / "memory" / name;
     if (!fs::exists(pidsFolder.parent_path() / "cgroup.procs", error) ||
-        !fs::exists(memoryFolder.parent_path() / "cgroup.procs", error) || !fs::create_directory(pidsFolder, error))
+        !fs::exists(memoryFolder.parent_path() / "cgroup.procs", error))
         return;
+    removeAbandoned(pidsFolder.parent_path());
+    removeAbandoned(memoryFolder.parent_path());
+    if (!fs::create_directory(pidsFolder, error)) return;
     m_folders.push_back(pidsFolder.string());
     if (!fs::create_directory(memoryFolder, error)) return;
     m_folders.push_back(memoryFolder.string());
