@@ -37,6 +37,8 @@ const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/vari
                                       "framework/study/intersection_study.cpp", "framework/study/image_study.cpp",
                                       "framework/study/accumulation_study.cpp", "framework/cli/numerics_command.cpp",
                                       "tests/numerics",
+                                      // the reference shading with point lights: a lab on shadows' answer
+                                      "framework/study/lambert_shading.cpp",
                                       // a complete lab 3 sphere that counts its calls, and its test
                                       "tests/study/counting_sphere.cpp", "tests/study/counting_sphere.h",
                                       "tests/study/test_render_work.cpp"};

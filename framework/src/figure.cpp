@@ -34,7 +34,7 @@ Texture renderWithoutRays(const SceneDescription& d, RenderStats& stats) {
 
 SceneRender::SceneRender(const SceneDescription& d, const RenderOptions& options)
     : m_space(renderSpaceOf(d)), m_scene(m_space.toRender(d.scene)), m_camera(makeCamera(d, m_space)),
-      m_integrator(makeRegisteredIntegrator(d.shading)), m_renderer(m_scene, m_camera, *m_integrator) {
+      m_integrator(makeRegisteredIntegrator(d.shading, d.shadingParameters)), m_renderer(m_scene, m_camera, *m_integrator) {
     m_renderer.setThreads(options.threads);
     m_renderer.setProgress(options.progress);
     m_renderer.setSampler(d.sampler);

@@ -20,6 +20,9 @@ Scene RenderSpace::toRender(const Scene& scene) const {
     Scene moved = scene;
     moved.spheres.clear();
     for (const SphereGeometry& s : scene.spheres) moved.spheres.emplace_back(toRender(s.center()), s.radius(), s.color());
+    moved.planes.clear();
+    for (const Plane& p : scene.planes) moved.planes.emplace_back(toRender(p.point()), p.normal(), p.color());
+    for (PointLight& light : moved.lights) light.position = toRender(light.position);
     return moved;
 }
 

@@ -1,6 +1,7 @@
 #include "raylab/renderer.h"
 
 #include "src/parallel.h"
+#include "src/shadow_rays.h"
 
 #include <glm/common.hpp>
 
@@ -8,7 +9,6 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -37,13 +37,28 @@ std::vector<Tile> makeTiles(int width, int height) {
     return tiles;
 }
 
+// What the tiles of one pass counted.
+struct TileCounts {
+    std::uint64_t randomNumbers = 0; // drawn by the pixel samplers
+    std::uint64_t shadowRays = 0;    // traced by the integrator (src/shadow_rays.h)
+};
+
 // Runs work(tile, worker) for every tile on the renderer's threads (parallel.h); work returns the
-// random numbers its pixel samplers drew, and this their total.
-std::uint64_t forEachTile(const std::vector<Tile>& tiles, int threads, bool progress,
-                          const std::function<std::uint64_t(const Tile&, unsigned worker)>& work) {
-    std::vector<std::uint64_t> drawn(workerCount(threads, tiles.size()), 0);
-    parallelFor(tiles.size(), threads, progress, [&](std::size_t t, unsigned worker) { drawn[worker] += work(tiles[t], worker); });
-    return std::accumulate(drawn.begin(), drawn.end(), std::uint64_t(0));
+// random numbers its pixel samplers drew. Counts those and the shadow rays the tiles traced.
+TileCounts forEachTile(const std::vector<Tile>& tiles, int threads, bool progress,
+                       const std::function<std::uint64_t(const Tile&, unsigned worker)>& work) {
+    std::vector<TileCounts> counts(workerCount(threads, tiles.size()));
+    parallelFor(tiles.size(), threads, progress, [&](std::size_t t, unsigned worker) {
+        const std::uint64_t shadowRaysBefore = shadowRaysTracedByThisThread();
+        counts[worker].randomNumbers += work(tiles[t], worker);
+        counts[worker].shadowRays += shadowRaysTracedByThisThread() - shadowRaysBefore;
+    });
+    TileCounts total;
+    for (const TileCounts& c : counts) {
+        total.randomNumbers += c.randomNumbers;
+        total.shadowRays += c.shadowRays;
+    }
+    return total;
 }
 
 std::uint64_t pixelCount(int width, int height) { return std::uint64_t(width) * std::uint64_t(height); }
@@ -160,24 +175,26 @@ std::vector<std::uint8_t> Renderer::pixelsToRefine(const std::vector<float>& spr
 }
 
 void Renderer::renderCentres(Texture& image) {
-    forEachTile(makeTiles(image.width(), image.height()), m_threads, m_progress, [&](const Tile& tile, unsigned) {
+    m_stats.shadowRays = forEachTile(makeTiles(image.width(), image.height()), m_threads, m_progress, [&](const Tile& tile, unsigned) {
         return forEachPixel(tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
             image.setPixelInside(i, j, renderer.renderPixelCentre(i, j));
             return std::uint64_t(0);
         });
-    });
+    }).shadowRays;
     m_stats.primaryRays = pixelCount(image.width(), image.height());
 }
 
 void Renderer::renderSampled(Texture& image) {
     const int width = image.width();
-    m_stats.randomNumbers = forEachTile(makeTiles(width, image.height()), m_threads, m_progress, [&](const Tile& tile, unsigned) {
+    const TileCounts counts = forEachTile(makeTiles(width, image.height()), m_threads, m_progress, [&](const Tile& tile, unsigned) {
         return forEachPixel(tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
             PixelSampler sampler(m_sampler, m_nbPixelSamples, m_seed, i, j, width);
             image.setPixelInside(i, j, renderer.renderPixel(i, j, sampler));
             return sampler.randomNumbersDrawn();
         });
     });
+    m_stats.randomNumbers = counts.randomNumbers;
+    m_stats.shadowRays = counts.shadowRays;
     m_stats.primaryRays = pixelCount(width, image.height()) * std::uint64_t(m_nbPixelSamples);
 }
 
@@ -192,7 +209,7 @@ void Renderer::renderAdaptive(Texture& image) {
     std::vector<Renderer> probed;
     for (const SpreadProbe& probe : probes) probed.push_back(passRenderer(probe, m_nbPixelSamples));
     std::vector<float> spread(pixelCount(width, image.height()));
-    m_stats.randomNumbers = forEachTile(tiles, m_threads, m_progress, [&](const Tile& tile, unsigned worker) {
+    const TileCounts first = forEachTile(tiles, m_threads, m_progress, [&](const Tile& tile, unsigned worker) {
         std::uint64_t drawn = 0;
         for (int j = tile.y0; j < tile.y1; ++j)
             for (int i = tile.x0; i < tile.x1; ++i) {
@@ -204,13 +221,15 @@ void Renderer::renderAdaptive(Texture& image) {
             }
         return drawn;
     });
+    m_stats.randomNumbers = first.randomNumbers;
+    m_stats.shadowRays = first.shadowRays;
     m_stats.primaryRays = pixelCount(width, image.height()) * std::uint64_t(m_nbPixelSamples);
 
     // Second pass: the pixels to refine, with new samples that replace the first ones.
     m_refined = pixelsToRefine(spread);
     m_stats.refinedPixels = std::uint64_t(std::count(m_refined.begin(), m_refined.end(), std::uint8_t(1)));
     const Renderer more = passRenderer(m_integrator, m_adaptive.maxSamples);
-    m_stats.randomNumbers += forEachTile(tiles, m_threads, m_progress, [&](const Tile& tile, unsigned) {
+    const TileCounts second = forEachTile(tiles, m_threads, m_progress, [&](const Tile& tile, unsigned) {
         return more.forEachPixel(tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
             if (!m_refined[std::size_t(j) * width + i]) return std::uint64_t(0);
             PixelSampler sampler(kind, m_adaptive.maxSamples, secondPassSeed(m_seed), i, j, width);
@@ -218,6 +237,8 @@ void Renderer::renderAdaptive(Texture& image) {
             return sampler.randomNumbersDrawn();
         });
     });
+    m_stats.randomNumbers += second.randomNumbers;
+    m_stats.shadowRays += second.shadowRays;
     m_stats.primaryRays += m_stats.refinedPixels * std::uint64_t(m_adaptive.maxSamples);
 }
 

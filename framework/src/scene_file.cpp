@@ -5,6 +5,8 @@
 #include "src/text.h"
 #include "src/toml_reader.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -101,6 +103,72 @@ void readSpheres(const TomlReader& r, const toml::table& root, Scene& scene) {
     }
 }
 
+// [[plane]]: a normal and either a point of the plane or its offset, the plane dot(n, x) = offset
+// of the unit normal n (docs/conventions.md).
+void readPlanes(const TomlReader& r, const toml::table& root, Scene& scene) {
+    for (const toml::table* plane : r.tables(root, "plane")) {
+        const toml::table& t = *plane;
+        r.onlyKeys(t, "[[plane]] ", {"point", "normal", "offset", "color"});
+        const auto normal = vec3(r, t, "[[plane]] ", "normal");
+        const auto point = vec3(r, t, "[[plane]] ", "point", kMaxCoordinate);
+        const auto offset = r.number(t, "[[plane]] ", "offset");
+        if (!normal || point.has_value() == offset.has_value())
+            r.fail(&t, "[[plane]]", "a plane needs a normal, and either a point or an offset");
+        if (*normal == glm::vec3(0.f)) r.fail(t.get("normal"), "[[plane]] normal", "[0, 0, 0] has no direction");
+        if (offset && std::abs(*offset) > kMaxCoordinate)
+            r.fail(t.get("offset"), "[[plane]] offset",
+                   showNumber(*offset) + " is too large: at most " + showNumber(kMaxCoordinate) +
+                       " (so that squared distances stay within float)");
+        const glm::dvec3 unit = glm::normalize(glm::dvec3(*normal));
+        const glm::vec3 origin = point ? *point : glm::vec3(*offset * unit);
+        scene.planes.emplace_back(origin, *normal, vec3(r, t, "[[plane]] ", "color").value_or(Color(1.f)));
+    }
+}
+
+// [[light]]: a point light at `position` whose radiant intensity is intensity * color.
+void readLights(const TomlReader& r, const toml::table& root, Scene& scene) {
+    for (const toml::table* light : r.tables(root, "light")) {
+        const toml::table& t = *light;
+        r.onlyKeys(t, "[[light]] ", {"position", "intensity", "color"});
+        const auto position = vec3(r, t, "[[light]] ", "position", kMaxCoordinate);
+        const auto intensity = r.number(t, "[[light]] ", "intensity");
+        if (!position || !intensity) r.fail(&t, "[[light]]", "a light needs a position and an intensity");
+        if (!(*intensity >= 0. && *intensity <= kFloatMax))
+            r.fail(t.get("intensity"), "[[light]] intensity",
+                   showNumber(*intensity) + " must be at least 0 and at most " + showNumber(kFloatMax) + " (float's range)");
+        const Color color = vec3(r, t, "[[light]] ", "color").value_or(Color(1.f));
+        if (!(color.r >= 0.f && color.g >= 0.f && color.b >= 0.f))
+            r.fail(t.get("color"), "[[light]] color", showVector(color) + ": a light's colour has no negative channel");
+        const Color radiant = float(*intensity) * color;
+        if (!std::isfinite(radiant.r) || !std::isfinite(radiant.g) || !std::isfinite(radiant.b))
+            r.fail(t.get("color"), "[[light]] color", "intensity * color overflows float (" + showVector(radiant) + ")");
+        scene.lights.push_back(PointLight{*position, radiant});
+    }
+}
+
+// [shading]: the parameters its shading declares (integrator_registry.h), each a finite number in
+// its range, and no other key.
+void readShadingParameters(const TomlReader& r, const toml::table& root, SceneDescription& d) {
+    const toml::table* t = r.table(root, "", "shading");
+    if (t == nullptr) return;
+    const std::vector<ShadingParameter> declared = registeredShadingParameters(d.shading);
+    if (declared.empty() && !t->empty())
+        r.fail(&t->begin()->second, "[shading] " + std::string(t->begin()->first.str()),
+               "the shading '" + d.shading + "' takes no parameters");
+    std::vector<std::string_view> keys;
+    for (const ShadingParameter& p : declared) keys.push_back(p.key);
+    r.onlyKeys(*t, "[shading] ", keys);
+    for (const ShadingParameter& p : declared) {
+        const toml::node* node = t->get(p.key);
+        if (node == nullptr) continue; // its default
+        const std::string name = "[shading] " + p.key;
+        const double value = r.numberOf(*node, name);
+        if (!(value >= p.min && value <= p.max))
+            r.fail(node, name, showNumber(value) + " is not in [" + showNumber(p.min) + ", " + showNumber(p.max) + "]");
+        d.shadingParameters[p.key] = float(value);
+    }
+}
+
 // [render.adaptive]: only with sampler = "adaptive", whose first pass needs two samples to compare
 // and whose second pass must take more samples than the first.
 void readAdaptive(const TomlReader& r, const toml::table& render, SceneDescription& d) {
@@ -161,7 +229,7 @@ std::vector<std::string> readRoles(const TomlReader& r, const toml::table& figur
 SceneDescription readSceneFile(const std::filesystem::path& file) {
     const toml::table root = parseTomlFile(file);
     const TomlReader r(file);
-    r.onlyKeys(root, "", {"figure", "image", "camera", "render", "background", "sphere"});
+    r.onlyKeys(root, "", {"figure", "image", "camera", "render", "shading", "background", "sphere", "plane", "light"});
 
     SceneDescription d;
     d.file = file;
@@ -200,8 +268,11 @@ SceneDescription readSceneFile(const std::filesystem::path& file) {
         readAdaptive(r, *t, d);
         d.seed = std::uint64_t(r.integer(*t, "[render] ", "seed", 0, INT64_MAX).value_or(0));
     }
+    readShadingParameters(r, root, d);
     if (auto background = vec3(r, root, "", "background")) d.scene.background = *background;
     readSpheres(r, root, d.scene);
+    readPlanes(r, root, d.scene);
+    readLights(r, root, d.scene);
     return d;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Scene files: a TOML file says what to render and which effects it needs (scenes/README.md).
 
+#include "raylab/integrator_registry.h"
 #include "raylab/renderer.h"
 #include "raylab/sampler.h"
 #include "raylab/scene.h"
@@ -36,6 +37,9 @@ struct SceneDescription {
     // (raylab/integrator_registry.h; "gradient", "directions", "flat", "placeholder_normal", "cosine"
     // by labs 1 to 3, each in its folder framework/grader/labs/<lab>/shadings.cpp).
     std::string shading = "cosine";
+    // [shading]: the values the file sets for the shading's parameters (integrator_registry.h); the
+    // others keep their defaults.
+    ShadingParameters shadingParameters;
     int samples = 1;
     SamplerKind sampler = SamplerKind::Center;
     std::uint64_t seed = 0;

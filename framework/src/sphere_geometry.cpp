@@ -10,7 +10,7 @@
 namespace raylab {
 
 SphereGeometry::SphereGeometry(const glm::vec3& center, float radius, const Color& color)
-    : m_center(center), m_radius(radius), m_color(color) {
+    : Shape(Kind::Sphere, color), m_center(center), m_radius(radius) {
     if (!(radius > 0.f) || !std::isfinite(radius))
         throw std::invalid_argument("sphere: radius = " + showNumber(radius) +
                                     " has no meaning; it must be positive and finite");

@@ -35,6 +35,11 @@ void TomlReader::wrongType(const toml::node& node, std::string_view name, const 
 
 void TomlReader::onlyKeys(const toml::table& table, std::string_view where,
                           std::initializer_list<std::string_view> allowed) const {
+    onlyKeys(table, where, std::vector<std::string_view>(allowed));
+}
+
+void TomlReader::onlyKeys(const toml::table& table, std::string_view where,
+                          const std::vector<std::string_view>& allowed) const {
     for (auto&& [key, node] : table)
         if (std::find(allowed.begin(), allowed.end(), key.str()) == allowed.end()) {
             std::string known;

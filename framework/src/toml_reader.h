@@ -39,6 +39,7 @@ public:
 
     // Refuses a key of `table` outside `allowed`, naming it and the allowed keys.
     void onlyKeys(const toml::table& table, std::string_view where, std::initializer_list<std::string_view> allowed) const;
+    void onlyKeys(const toml::table& table, std::string_view where, const std::vector<std::string_view>& allowed) const;
 
     // A value of the table: nullopt (or null) when the key is absent, a TomlError when it has another type.
     std::optional<std::string> string(const toml::table& table, std::string_view where, std::string_view key) const;

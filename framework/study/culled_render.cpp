@@ -77,7 +77,8 @@ Texture renderCulled(const SceneDescription& d, int threads) {
     Texture image(d.width, d.height);
     parallelFor(tiles.size(), threads, false, [&](std::size_t k, unsigned) {
         const Tile& t = tiles[k];
-        const Scene near{spheresSeenBy(whole.scene(), camera, t), whole.scene().background};
+        const Scene near{.spheres = spheresSeenBy(whole.scene(), camera, t), .planes = whole.scene().planes,
+                         .lights = whole.scene().lights, .background = whole.scene().background};
         Renderer renderer(near, camera, whole.integrator());
         if (d.samples != 1) renderer.setNbPixelSamples(d.samples);
         // Each pixel's samples as Renderer::renderImage draws them: the pixel and the scene's seed.

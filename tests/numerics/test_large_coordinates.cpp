@@ -74,7 +74,9 @@ TEST_CASE("large world coordinates: normals from world-space hit points are off,
     CHECK(worstNormalError(camera, centre) > 0.05);
     // What the renderer hands the lab code: the same rays and sphere in the camera's render space.
     const RenderSpace space(camera);
-    const Scene moved = space.toRender(Scene{{SphereGeometry(centre, 1.f, Color(1.f))}, Color(0.f)});
+    Scene world;
+    world.spheres = {SphereGeometry(centre, 1.f, Color(1.f))};
+    const Scene moved = space.toRender(world);
     CHECK(moved.spheres[0].center() == space.toRender(camera) + glm::vec3(0.f, 0.f, 3.f));
     CHECK(worstNormalError(space.toRender(camera), moved.spheres[0].center()) < 1e-4);
 }

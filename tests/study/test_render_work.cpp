@@ -127,6 +127,30 @@ TEST_CASE("each sampler draws only the random numbers it needs") {
     }
 }
 
+TEST_CASE("a scene without lights traces no shadow ray, whatever the shading") {
+    for (Shading shading : {Shading::Flat, Shading::Cosine}) {
+        Job job;
+        job.shading = shading;
+        CHECK(render(job).stats.shadowRays == 0);
+    }
+}
+
+TEST_CASE("the shadow test stops at the first object it meets; the nearest hit tries them all") {
+    Scene row; // three spheres one behind the other along +z
+    for (float z : {3.f, 6.f, 9.f}) row.spheres.emplace_back(glm::vec3(0.f, 0.f, z), 1.f, Color(1.f));
+    const Ray ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}};
+    sphereIntersections = 0;
+    CHECK(row.occluded(ray, 1e-4f, 100.f));
+    CHECK(sphereIntersections == 1);
+    HitRecord hit;
+    sphereIntersections = 0;
+    CHECK(row.intersect(ray, hit));
+    CHECK(sphereIntersections == 3);
+    sphereIntersections = 0;
+    CHECK_FALSE(row.occluded(ray, 1e-4f, 1.5f)); // the light before the first sphere: every one is tried
+    CHECK(sphereIntersections == 3);
+}
+
 TEST_CASE("flat shading computes no normal; cosine shading one per hit") {
     Job job;
     job.shading = Shading::Flat;

@@ -161,10 +161,16 @@ TEST_CASE("SceneRender: a far lookAt camera and its scene are moved into the cam
     d.camera.position = far;
     d.camera.target = far + glm::vec3(0.f, 0.f, 1.f);
     d.scene.spheres = {SphereGeometry(far + glm::vec3(0.f, 0.f, 3.f), 1.f, Color(1.f))};
+    d.scene.planes = {Plane(far + glm::vec3(0.f, -1.f, 0.f), glm::vec3(0.f, 1.f, 0.f), Color(1.f))};
+    d.scene.lights = {PointLight{far + glm::vec3(0.f, 4.f, 0.f), Color(10.f)}};
     const SceneRender render(d);
     CHECK(render.space().origin() == glm::vec3(10000384.f, -3072.f, 1024.f));
     CHECK(render.camera().position() == glm::vec3(-384.f, 72.f, -324.f));
     CHECK(render.scene().spheres[0].center() == render.camera().position() + glm::vec3(0.f, 0.f, 3.f));
+    CHECK(render.scene().planes[0].point() == render.camera().position() + glm::vec3(0.f, -1.f, 0.f));
+    CHECK(render.scene().planes[0].normal() == glm::vec3(0.f, 1.f, 0.f));
+    CHECK(render.scene().lights[0].position == render.camera().position() + glm::vec3(0.f, 4.f, 0.f));
+    CHECK(render.scene().lights[0].intensity == Color(10.f));
 }
 
 TEST_CASE("SceneRender: the default camera renders in world space, with the scene file's sampling") {

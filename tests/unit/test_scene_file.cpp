@@ -116,14 +116,14 @@ TEST_CASE("errors name the file, the line and the key") {
     CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\n") == "scene.toml:1: [[sphere]]: a sphere needs a center and a radius");
     CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\nradius = -1\n") == "scene.toml:3: [[sphere]] radius: -1 must be positive");
     CHECK(errorOf("[render]\nshading = \"phong\"\n") ==
-          "scene.toml:2: [render] shading: 'phong' is not one of cosine, directions, flat, gradient, placeholder_normal");
+          "scene.toml:2: [render] shading: 'phong' is not one of cosine, directions, flat, gradient, lambert, placeholder_normal");
     CHECK(errorOf("[render]\nsampler = \"magic\"\n") ==
           "scene.toml:2: [render] sampler: 'magic' is not one of center, random, stratified, grid, sobol, r2, adaptive");
     CHECK(errorOf("[camera]\nlook_at = [0, 0, 1]\n") ==
           "scene.toml:1: [camera]: a lookAt camera needs both position and look_at (up defaults to [0, 1, 0])");
     CHECK(errorOf("[image\nwidth = 3\n").rfind("scene.toml:1:7: not valid TOML: ", 0) == 0);
     CHECK(errorOf("colour = 3\n") ==
-          "scene.toml:1: colour: unknown key (known keys: figure, image, camera, render, background, sphere)");
+          "scene.toml:1: colour: unknown key (known keys: figure, image, camera, render, shading, background, sphere, plane, light)");
 }
 
 TEST_CASE("every number is checked against the bounds the float numerics justify, naming the file, line and key") {
@@ -171,8 +171,10 @@ TEST_CASE("a figure's roles name it for the tools, not its id: one scene a role"
 }
 
 TEST_CASE("every shading is a name a lab registers: one path for the figures") {
-    // Labs 1 to 3 register theirs from framework/grader/labs/<lab>/shadings.cpp.
-    CHECK(registeredIntegratorNames() == std::vector<std::string>{"cosine", "directions", "flat", "gradient", "placeholder_normal"});
+    // Labs 1 to 3 register theirs from framework/grader/labs/<lab>/shadings.cpp; "lambert" is the
+    // framework's reference with lights (framework/study/lambert_shading.cpp).
+    CHECK(registeredIntegratorNames() ==
+          std::vector<std::string>{"cosine", "directions", "flat", "gradient", "lambert", "placeholder_normal"});
     CHECK(isRegisteredImage("gradient")); // drawn without rays
     CHECK_FALSE(isRegisteredImage("cosine"));
     CHECK(isRegisteredIntegrator("cosine"));
@@ -183,6 +185,97 @@ TEST_CASE("every shading is a name a lab registers: one path for the figures") {
     CHECK_THROWS_AS(registerIntegrator("gradient", [] { return std::unique_ptr<Integrator>(); }), std::logic_error);
     CHECK(loadText("[render]\nshading = \"gradient\"\n").shading == "gradient");
     CHECK(loadText("").shading == "cosine");
+}
+
+TEST_CASE("point lights and planes beside the spheres") {
+    const SceneDescription d = loadText(R"(
+[[sphere]]
+center = [0, 0, 3]
+radius = 1
+[[plane]]
+point = [0, -1, 0]
+normal = [0, 2, 0]
+color = [0.5, 0.25, 1]
+[[plane]]
+normal = [0, 0, -4]
+offset = -10
+[[light]]
+position = [1, 2, 3]
+intensity = 20
+color = [1, 0.5, 0]
+[[light]]
+position = [0, 5, 0]
+intensity = 2.5
+)");
+    CHECK(d.scene.spheres.size() == 1);
+    REQUIRE(d.scene.planes.size() == 2);
+    CHECK(d.scene.planes[0].point() == glm::vec3(0.f, -1.f, 0.f));
+    CHECK(d.scene.planes[0].normal() == glm::vec3(0.f, 1.f, 0.f)); // normalized
+    CHECK(d.scene.planes[0].color() == Color(0.5f, 0.25f, 1.f));
+    // normal + offset: the plane dot(n, x) = offset of the unit normal n = (0, 0, -1), so z = 10.
+    CHECK(d.scene.planes[1].point() == glm::vec3(0.f, 0.f, 10.f));
+    CHECK(d.scene.planes[1].normal() == glm::vec3(0.f, 0.f, -1.f));
+    CHECK(d.scene.planes[1].color() == Color(1.f)); // white by default
+    REQUIRE(d.scene.lights.size() == 2);
+    CHECK(d.scene.lights[0].position == glm::vec3(1.f, 2.f, 3.f));
+    CHECK(d.scene.lights[0].intensity == Color(20.f, 10.f, 0.f)); // intensity * color
+    CHECK(d.scene.lights[1].intensity == Color(2.5f));
+    CHECK(loadText("").scene.lights.empty());
+    CHECK(loadText("").scene.planes.empty());
+}
+
+TEST_CASE("lights and planes: errors name the file, the line and the key") {
+    CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\n") == "scene.toml:1: [[light]]: a light needs a position and an intensity");
+    CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\nintensity = -1\n") ==
+          "scene.toml:3: [[light]] intensity: -1 must be at least 0 and at most 3.40282347e+38 (float's range)");
+    CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\nintensity = nan\n") ==
+          "scene.toml:3: [[light]] intensity: must be finite, got nan");
+    CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\nintensity = 1\ncolor = [1, -1, 0]\n") ==
+          "scene.toml:4: [[light]] color: (1, -1, 0): a light's colour has no negative channel");
+    CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\nintensity = 1e38\ncolor = [10, 1, 1]\n")
+              .rfind("scene.toml:4: [[light]] color: intensity * color overflows float", 0) == 0);
+    CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\nintensity = 1\nradius = 2\n") ==
+          "scene.toml:4: [[light]] radius: unknown key (known keys: position, intensity, color)");
+    CHECK(errorOf("[[plane]]\nnormal = [0, 1, 0]\n") ==
+          "scene.toml:1: [[plane]]: a plane needs a normal, and either a point or an offset");
+    CHECK(errorOf("[[plane]]\nnormal = [0, 1, 0]\npoint = [0, 0, 0]\noffset = 1\n") ==
+          "scene.toml:1: [[plane]]: a plane needs a normal, and either a point or an offset");
+    CHECK(errorOf("[[plane]]\npoint = [0, 0, 0]\n") ==
+          "scene.toml:1: [[plane]]: a plane needs a normal, and either a point or an offset");
+    CHECK(errorOf("[[plane]]\nnormal = [0, 0, 0]\noffset = 1\n") == "scene.toml:2: [[plane]] normal: [0, 0, 0] has no direction");
+    CHECK(errorOf("[[plane]]\nnormal = [0, nan, 0]\noffset = 1\n") ==
+          "scene.toml:2: [[plane]] normal: item 1 = nan is not finite");
+    CHECK(errorOf("[[plane]]\nnormal = [0, 1, 0]\noffset = 1e19\n") ==
+          "scene.toml:3: [[plane]] offset: 1e+19 is too large: at most 1e+18 (so that squared distances stay within float)");
+    CHECK(errorOf("[[plane]]\nnormal = [0, 1, 0]\noffset = \"1\"\n") ==
+          "scene.toml:3: [[plane]] offset: expected a number, got a string");
+    CHECK(errorOf("[[plane]]\nnormal = [0, 1, 0]\noffset = 1\nside = 2\n") ==
+          "scene.toml:4: [[plane]] side: unknown key (known keys: point, normal, offset, color)");
+}
+
+TEST_CASE("a shading reads the parameters it declares from [shading], and no other key") {
+    const SceneDescription d = loadText("[render]\nshading = \"lambert\"\n[shading]\nambient = 0.1\n");
+    CHECK(d.shadingParameters == ShadingParameters{{"ambient", 0.1f}});
+    CHECK(loadText("[render]\nshading = \"lambert\"\n").shadingParameters.empty()); // its default, 0
+    CHECK(loadText("[render]\nshading = \"lambert\"\n[shading]\nambient = 1\n").shadingParameters.at("ambient") == 1.f);
+    CHECK(registeredShadingParameters("lambert").size() == 1);
+    CHECK(registeredShadingParameters("cosine").empty());
+
+    const std::string lambert = "[render]\nshading = \"lambert\"\n[shading]\n";
+    CHECK(errorOf(lambert + "ambiant = 0.1\n") == "scene.toml:4: [shading] ambiant: unknown key (known keys: ambient)");
+    CHECK(errorOf(lambert + "ambient = \"0.1\"\n") == "scene.toml:4: [shading] ambient: expected a number, got a string");
+    CHECK(errorOf(lambert + "ambient = nan\n") == "scene.toml:4: [shading] ambient: must be finite, got nan");
+    CHECK(errorOf(lambert + "ambient = 1.5\n") == "scene.toml:4: [shading] ambient: 1.5 is not in [0, 1]");
+    CHECK(errorOf("[shading]\nambient = 0.1\n") == "scene.toml:2: [shading] ambient: the shading 'cosine' takes no parameters");
+    CHECK(errorOf("shading = 3\n").rfind("scene.toml:1: shading: expected a table", 0) == 0);
+
+    // Through the registry: the defaults fill in, and a value it does not declare or accept is refused.
+    CHECK_NOTHROW(makeRegisteredIntegrator("lambert"));
+    CHECK_THROWS_WITH_AS(makeRegisteredIntegrator("lambert", {{"ambiant", 0.1f}}), "shading 'lambert' has no parameter 'ambiant'",
+                         std::invalid_argument);
+    CHECK_THROWS_WITH_AS(makeRegisteredIntegrator("lambert", {{"ambient", -1.f}}),
+                         "shading 'lambert': ambient = -1 is not in [0, 1]", std::invalid_argument);
+    CHECK_THROWS_AS(makeRegisteredIntegrator("cosine", {{"ambient", 0.1f}}), std::invalid_argument);
 }
 
 TEST_CASE("a missing file or folder is named") {

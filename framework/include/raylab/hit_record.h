@@ -5,13 +5,13 @@
 
 namespace raylab {
 
-class SphereGeometry;
+class Shape;
 
 struct HitRecord {
     float t = 0.f;                          // the ray parameter of the hit
     glm::vec3 position{0.f};                // ray.at(t)
     glm::vec3 normal{0.f};                  // filled only by integrators that shade with it
-    const SphereGeometry* object = nullptr; // set by Scene::intersect
+    const Shape* object = nullptr;          // the object hit (a sphere, a plane), set by Scene::intersect
 };
 
 } // namespace raylab

@@ -17,6 +17,7 @@ struct RenderStats {
     std::uint64_t primaryRays = 0;   // camera rays: pixels x samples per pixel
     std::uint64_t randomNumbers = 0; // numbers the pixel samplers drew from their generators
     std::uint64_t refinedPixels = 0; // adaptive: the pixels its second pass rendered again
+    std::uint64_t shadowRays = 0;    // Scene::occluded's calls: none in a scene without lights
 };
 
 // Adaptive sampling: nbPixelSamples() samples in every pixel; where the colours of a pixel's

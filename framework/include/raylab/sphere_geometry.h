@@ -3,11 +3,11 @@
 
 #include "raylab/hit_record.h"
 #include "raylab/ray.h"
-#include "raylab/texture.h"
+#include "raylab/shape.h"
 
 namespace raylab {
 
-class SphereGeometry {
+class SphereGeometry final : public Shape {
 public:
     SphereGeometry(const glm::vec3& center, float radius, const Color& color);
 
@@ -18,14 +18,18 @@ public:
     // Lab 3: the outward unit normal at a point p of the sphere.
     glm::vec3 computeNormal(const glm::vec3& p) const;
 
+    // Any hit in [tMin, tMax]: intersect's answer, its hit left aside.
+    bool hits(const Ray& ray, float tMin, float tMax) const {
+        HitRecord scratch;
+        return intersect(ray, tMin, tMax, scratch);
+    }
+
     const glm::vec3& center() const { return m_center; }
     float radius() const { return m_radius; }
-    const Color& color() const { return m_color; }
 
 private:
     glm::vec3 m_center;
     float m_radius;
-    Color m_color;
 };
 
 } // namespace raylab
