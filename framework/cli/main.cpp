@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <limits>
 #include <memory>
 #include <regex>
 #include <string>
@@ -88,8 +87,8 @@ std::string sayParseError(const CLI::Error& error) {
     if (std::regex_match(what, m, missingValue))
         return tr("cli.missing_value", {{"option", m[1]}, {"type", typeNameInLanguage(m[2])}});
     if (std::regex_match(what, m, atMost)) return tr("cli.at_most", {{"option", m[1]}, {"max", m[2]}, {"count", m[3]}});
-    // CLI::PositiveNumber is a range up to the largest double.
-    if (std::regex_match(what, m, notInRange) && std::strtod(m[4].str().c_str(), nullptr) >= std::numeric_limits<double>::max())
+    // CLI::PositiveNumber is a range up to the largest double (CLI11 2.4 prints it rounded, 1.79769e+308).
+    if (std::regex_match(what, m, notInRange) && std::strtod(m[4].str().c_str(), nullptr) >= 1e308)
         return tr("cli.not_positive", {{"option", m[1]}, {"value", m[2]}});
     if (std::regex_match(what, m, notInRange))
         return tr("cli.not_in_range", {{"option", m[1]}, {"value", m[2]}, {"low", m[3]}, {"high", m[4]}});
