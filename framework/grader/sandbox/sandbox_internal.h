@@ -66,6 +66,7 @@ struct ChildPlan {
     int reportFd = -1, requestFd = -1;
     const UnprivilegedUser* user = nullptr;        // the fallback: the child becomes this user
     const std::vector<sock_filter>* seccomp = nullptr; // and installs this filter before exec
+    int landlock = -1;                                 // and puts this Landlock ruleset in force (landlock.h)
 
     void seal() {
         for (std::string& a : argv) cargv.push_back(a.data());
