@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
-#ifdef __linux__
+#if defined(__linux__) && __has_include(<linux/landlock.h>)
 #include <fcntl.h>
 #include <linux/landlock.h>
 #include <sys/prctl.h>
@@ -23,12 +23,14 @@ namespace raylab::grader::detail {
 
 namespace fs = std::filesystem;
 
-#if defined(__linux__) && defined(SYS_landlock_create_ruleset)
+// Linux with Landlock's header (5.13 and later) and a C library that numbers its calls (glibc 2.34).
+#if defined(LANDLOCK_CREATE_RULESET_VERSION) && defined(SYS_landlock_create_ruleset)
 
 namespace {
 
 // The rights of later ABIs, by their numbers in the kernel's ABI, for headers older than the kernel
-// (Debian 12's stops at ABI 2).
+// (Debian 12's stops at ABI 2, Ubuntu 22.04's at ABI 1).
+constexpr std::uint64_t kRefer = 1ull << 13;    // ABI 2
 constexpr std::uint64_t kTruncate = 1ull << 14; // ABI 3
 constexpr std::uint64_t kIoctlDev = 1ull << 15; // ABI 5
 constexpr std::uint64_t kNetBindTcp = 1ull << 0, kNetConnectTcp = 1ull << 1; // ABI 4
@@ -46,7 +48,7 @@ constexpr std::uint64_t kFileRights = LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCE
 // Every file-system right this kernel knows: all are handled, so what no rule allows is refused.
 std::uint64_t handledFs(int abi) {
     std::uint64_t rights = (LANDLOCK_ACCESS_FS_MAKE_SYM << 1) - 1; // ABI 1: bits 0 to 12
-    if (abi >= 2) rights |= LANDLOCK_ACCESS_FS_REFER;
+    if (abi >= 2) rights |= kRefer;
     if (abi >= 3) rights |= kTruncate;
     if (abi >= 5) rights |= kIoctlDev;
     return rights;
