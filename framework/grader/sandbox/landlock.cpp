@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstdint>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
@@ -128,11 +129,10 @@ bool restrictSelf(int rulesetFd) { return rulesetFd < 0; }
 
 LandlockRules systemRules() {
     LandlockRules rules;
-    for (const char* folder : {"/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) rules.execute.emplace_back(folder);
-    // What bubblewrap shows of /etc (bubblewrap.cpp): the dynamic loader's files, Debian's alternatives.
-    for (const char* path : {"/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/localtime", "/etc/alternatives",
-                             "/dev/urandom", "/dev/random", "/dev/zero", "/sys/devices/system/cpu"})
-        rules.read.emplace_back(path);
+    rules.execute.assign(std::begin(kSystemTopFolders), std::end(kSystemTopFolders));
+    rules.execute.emplace_back("/usr");
+    rules.read.assign(std::begin(kSystemEtcFiles), std::end(kSystemEtcFiles));
+    for (const char* path : {"/dev/urandom", "/dev/random", "/dev/zero", "/sys/devices/system/cpu"}) rules.read.emplace_back(path);
     rules.readWrite.emplace_back("/dev/null");
     return rules;
 }
