@@ -3,6 +3,7 @@
 #include "grader/sandbox/process.h"
 #include "src/messages.h"
 
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -12,6 +13,10 @@ namespace raylab::grader {
 namespace fs = std::filesystem;
 
 namespace {
+
+// A submission's whole build, every lab file together (the build guard stops a compile past it): far
+// beyond an honest one (seconds), a bound on one that makes each file expand to the compiler's limits.
+constexpr long long kBuildSeconds = 180;
 
 // What a CMake cache value or list item cannot hold as it is.
 constexpr const char* kCmakeUnsafe = "\n\r;\"\\$#[]";
@@ -66,6 +71,7 @@ std::string guardRefusal(const std::string& line) {
     const std::string source = rest.substr(0, arrow), read = arrow == std::string::npos ? "" : rest.substr(arrow + 4);
     if (why == "outside") return tr("build.guard_outside", {{"source", source}, {"file", read}});
     if (why == "stopped") return tr("build.guard_stopped", {{"source", source}});
+    if (why == "build-time") return tr("build.guard_build_time", {{"source", source}, {"seconds", std::to_string(kBuildSeconds)}});
     return tr("build.guard_unchecked", {{"source", source}});
 }
 
@@ -124,6 +130,12 @@ std::vector<std::string> configureCommand(const Toolchain& tools, const fs::path
     return configure;
 }
 
+// `cmake --build` of one target, in Release (a multi-configuration generator, Visual Studio, would
+// build Debug otherwise), on 2 cores.
+std::vector<std::string> buildCommand(const Toolchain& tools, const fs::path& buildDir, const std::string& target) {
+    return {tools.cmake, "--build", fs::absolute(buildDir).string(), "--config", "Release", "--target", target, "-j", "2"};
+}
+
 } // namespace
 
 std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>& labs, bool& isolated) {
@@ -142,10 +154,8 @@ bool buildGradingKit(const Toolchain& tools, const fs::path& sourceDir, const fs
     std::error_code error;
     fs::remove(log, error);
     const ProcessOptions toLog{{}, log};
-    const std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--config",
-                                         "Release", "--target", "raylab-grading-kit", "-j", "2"};
     return runProcess(configureCommand(tools, sourceDir, buildDir, "", LabCatalog{}), toLog).succeeded() &&
-           runProcess(build, toLog).succeeded();
+           runProcess(buildCommand(tools, buildDir, "raylab-grading-kit"), toLog).succeeded();
 }
 
 SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDir, const fs::path& labs,
@@ -161,9 +171,7 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     for (int lab : numbers) fs::remove(labAgent(bin, lab), error);
     const std::vector<std::string> configure =
         configureCommand(tools, sourceDir, buildDir, cmakeSafe(labs, buildDir).generic_string(), course);
-    // --config: a multi-configuration generator (Visual Studio) would build Debug otherwise.
-    std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--config", "Release",
-                                   "--target", "raylab-submission-agents", "-j", "2"};
+    std::vector<std::string> build = buildCommand(tools, buildDir, "raylab-submission-agents");
     if (tools.generator.find("Ninja") != std::string::npos) build.insert(build.end(), {"--", "-k", "0"});
     else if (tools.generator.find("Makefiles") != std::string::npos) build.insert(build.end(), {"--", "-k"});
     fs::remove(b.log, error);
@@ -174,7 +182,12 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
         b.brokenLabs = numbers;
         return b;
     }
-    const ProcessResult built = runProcess(build, toLog);
+    // What no student changes first (nothing to do in a class, whose kit is built), so that the
+    // build's deadline is the student's files' alone; a failure there shows in the build below.
+    runProcess(buildCommand(tools, buildDir, "raylab-grading-kit"), toLog);
+    ProcessOptions toBuild = toLog;
+    toBuild.environment = {"RAYLAB_BUILD_DEADLINE=" + std::to_string(std::time(nullptr) + kBuildSeconds)};
+    const ProcessResult built = runProcess(build, toBuild);
     if (!built.succeeded()) b.compilerMessage = built.started ? errorLines(b.log) : built.error;
     b.isolated = fs::is_directory(sourceDir / "solutions", error);
     if (b.isolated) {

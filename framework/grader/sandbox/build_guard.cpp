@@ -14,11 +14,13 @@
 //    not in it: only the sandbox stops that);
 //  - `#include "/dev/zero"` or a template that never ends would stall a class run: the compiler runs
 //    under CPU, memory and file-size limits and a wall-clock limit, in a process group of its own
-//    that is killed whole.
+//    that is killed whole; and within the whole build's time, when the grader gives it
+//    (RAYLAB_BUILD_DEADLINE in the environment: seconds since the epoch), so that a constexpr bomb in
+//    each lab file costs one build's time, not each file's.
 // Usage: raylab-build-guard [--allow DIR]... [--wall-seconds N] -- COMPILER ARGS...
 // A refusal is one line `raylab-build-guard: <why>: <source>[ <- <file read>]` on stderr, <why> one of `outside`,
-// `stopped`, `no-depfile` (the grader says it in the student's language, grader/submission.cpp),
-// and exit status 1, with the object file removed.
+// `stopped`, `build-time` (the build's deadline passed), `no-depfile` (the grader says it in the
+// student's language, grader/submission.cpp), and exit status 1, with the object file removed.
 #include "grader/sandbox/confined_compile.h"
 #include "grader/sandbox/landlock.h"
 #include "grader/sandbox/sandbox_internal.h"
@@ -31,6 +33,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -234,12 +237,20 @@ int main(int argc, char** argv) {
             return 1;
         }
     }
-    int status = compile(confined ? confined->command() : command->compiler, command->wallSeconds, user,
-                         landlock ? landlock->fd() : -1);
+    // The build's deadline, when it comes before this file's own limit.
+    unsigned wallSeconds = command->wallSeconds;
+    bool deadlineFirst = false;
+    if (const char* deadline = std::getenv("RAYLAB_BUILD_DEADLINE")) {
+        const long long left = std::atoll(deadline) - static_cast<long long>(std::time(nullptr));
+        if (left <= 0) return refuse("build-time", source, command->object);
+        deadlineFirst = left < static_cast<long long>(wallSeconds);
+        if (deadlineFirst) wallSeconds = unsigned(left);
+    }
+    int status = compile(confined ? confined->command() : command->compiler, wallSeconds, user, landlock ? landlock->fd() : -1);
     // bwrap passes a signal on as 128 + its number
     if (!bwrap.empty() && (status == 128 + SIGXCPU || status == 128 + SIGKILL)) status = -1;
     if (status < 0)
-        return refuse("stopped", source, command->object);
+        return refuse(deadlineFirst && g_timedOut ? "build-time" : "stopped", source, command->object);
     if (status != 0) return status;
     if (confined && !confined->deliver()) return refuse("no-depfile", source, command->object);
     if (command->depfile.empty()) return refuse("no-depfile", source, command->object);

@@ -20,6 +20,7 @@ struct ProcessOptions {
     std::filesystem::path workingDirectory; // empty: ours
     std::filesystem::path output;           // stdout and stderr are appended here; empty: ours
     double timeLimit = 0.;                  // seconds; past it the program is killed (0: none)
+    std::vector<std::string> environment = {}; // NAME=value, added to ours (POSIX; Windows: ours only)
 };
 
 struct ProcessResult {
