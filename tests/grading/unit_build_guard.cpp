@@ -3,6 +3,7 @@
 // symlink, the assembler's `.incbin`) does not compile; without it (RAYLAB_SANDBOX=none) the
 // dependency file is checked, a second wall: no object and one refusal line. An honest file compiles
 // in both; a compiler that runs past the wall-clock limit is stopped whole.
+#include "grader/sandbox/landlock.h"
 #include "grader/sandbox/sandbox.h"
 #include "support/files.h"
 #include "support/run_program.h"
@@ -151,6 +152,34 @@ TEST_CASE("the fallback (root, RAYLAB_SANDBOX=fallback): the compiler runs as an
     const ProgramRun open = f.compileIn("none", "incbin.cpp", incbin);
     CHECK(open.status == 0);
     CHECK(f.object().find(kSecret) != std::string::npos);
+}
+
+TEST_CASE("the fallback with Landlock: the compiler reads the system's headers, and .incbin of a world-readable file fails") {
+    if (geteuid() != 0 || raylab::grader::detail::landlockAbi() == 0) {
+        MESSAGE("SKIPPED: needs root (the fallback) and a kernel with Landlock");
+        return;
+    }
+    const Folders f;
+    // A classmate's file in a world-readable class folder: the unprivileged user could read it.
+    std::ofstream(f.secret / "answer.txt") << kSecret;
+    fs::permissions(f.root, fs::perms(0755));
+    fs::permissions(f.secret, fs::perms(0755));
+    fs::permissions(f.secret / "answer.txt", fs::perms(0644));
+    const auto compile = [&](const std::string& body) {
+        std::ofstream(f.submission / "file.cpp") << body;
+        return runProgram({"/usr/bin/env", "RAYLAB_SANDBOX=fallback", (fs::path(RAYLAB_GRADING_BIN) / "raylab-build-guard").string(),
+                           "--allow", f.submission.string(), "--allow", "/usr", "--", RAYLAB_CXX_COMPILER, "-MD", "-MF",
+                           (f.root / "file.d").string(), "-c", (f.submission / "file.cpp").string(), "-o", (f.root / "file.o").string()},
+                          f.root / "output.txt", f.root);
+    };
+    const ProgramRun honest = compile("#include <vector>\nint f() { return int(std::vector<int>(3).size()); }\n");
+    CHECK_MESSAGE(honest.status == 0, honest.output);
+    fs::remove(f.root / "file.o");
+    const ProgramRun stealing =
+        compile("asm(\".section .rodata\\n.incbin \\\"" + (f.secret / "answer.txt").string() + "\\\"\\n.text\");\n");
+    CHECK(stealing.status != 0);
+    CHECK(stealing.output.find(kSecret) == std::string::npos);
+    CHECK_FALSE(f.objectExists());
 }
 
 TEST_CASE("a compile error stays the compiler's: its status, no refusal line") {

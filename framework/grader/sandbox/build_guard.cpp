@@ -6,8 +6,9 @@
 //    student's work, or throw its bytes into the report: on Linux with bubblewrap the compiler runs
 //    confined (confined_compile.h), seeing only the allowed folders (the submission, the stubs, the
 //    include folders of the command line) and the system; where bubblewrap cannot start and we are
-//    root, it runs as an unprivileged user (unprivileged.h: it reads world-readable files only, and
-//    writes only its private folder); RAYLAB_SANDBOX=none|fallback in the environment chooses (see
+//    root, it runs as an unprivileged user (unprivileged.h: it writes only its private folder and,
+//    where the kernel has Landlock, opens only the system, the allowed folders and that folder; without
+//    Landlock it reads every world-readable file); RAYLAB_SANDBOX=none|fallback in the environment chooses (see
 //    sandboxMode). Then, a second wall, every file the compiler read must lie in an allowed folder
 //    or the compiler's own, checked on the dependency file it writes, after symlinks (`.incbin` is
 //    not in it: only the sandbox stops that);
@@ -21,6 +22,7 @@
 // `stopped`, `build-time` (the build's deadline passed), `no-depfile` (the grader says it in the
 // student's language, grader/submission.cpp), and exit status 1, with the object file removed.
 #include "grader/sandbox/confined_compile.h"
+#include "grader/sandbox/landlock.h"
 #include "grader/sandbox/sandbox_internal.h"
 #include "grader/sandbox/scratch_file.h"
 #include "grader/sandbox/unprivileged.h"
@@ -156,7 +158,7 @@ fs::path resolved(const fs::path& path) {
 // Runs the compiler under the limits (as `user`, under the seccomp filter, when given); its exit
 // status, or -1 when it was stopped.
 int compile(const std::vector<std::string>& argv, unsigned wallSeconds,
-            const raylab::grader::detail::UnprivilegedUser* user) {
+            const raylab::grader::detail::UnprivilegedUser* user, int landlock) {
     const std::vector<sock_filter>* filter = user ? &raylab::grader::detail::seccompProgram() : nullptr;
     // Made before fork: the child allocates nothing under its address-space limit (an ASan build's
     // allocator would fail there).
@@ -178,6 +180,7 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds,
         setrlimit(RLIMIT_CPU, &cpu);
         setrlimit(RLIMIT_AS, &memory);
         setrlimit(RLIMIT_FSIZE, &file);
+        if (!raylab::grader::detail::restrictSelf(landlock)) _exit(126);
         if (filter && !raylab::grader::detail::installSeccomp(*filter)) _exit(126);
         execvp(args[0], args.data());
         std::fprintf(stderr, "error: raylab-build-guard cannot run %s: %s\n", args[0], std::strerror(errno));
@@ -221,9 +224,18 @@ int main(int argc, char** argv) {
         mode == SandboxMode::unprivileged ? &*raylab::grader::detail::unprivilegedUser() : nullptr;
     std::optional<raylab::grader::ConfinedCompile> confined;
     if (!bwrap.empty() || user) confined.emplace(bwrap, command->compiler, command->allowed, user);
+    // The fallback's Landlock: the compiler opens the system, the allowed folders and its own, nothing else.
+    std::optional<raylab::grader::detail::LandlockRuleset> landlock;
     if (user) { // ccache, when it is the launcher, without its cache (root's, other builds' objects)
         setenv("CCACHE_DISABLE", "1", 1);
         setenv("CCACHE_DIR", "/nonexistent", 1); // its configuration is root's too
+        setenv("TMPDIR", confined->privateFolder().c_str(), 1); // the compiler's temporary files, not the shared /tmp
+        try {
+            landlock.emplace(confined->landlockRules());
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "error: raylab-build-guard: %s\n", e.what());
+            return 1;
+        }
     }
     // The build's deadline, when it comes before this file's own limit.
     unsigned wallSeconds = command->wallSeconds;
@@ -234,7 +246,7 @@ int main(int argc, char** argv) {
         deadlineFirst = left < static_cast<long long>(wallSeconds);
         if (deadlineFirst) wallSeconds = unsigned(left);
     }
-    int status = compile(confined ? confined->command() : command->compiler, wallSeconds, user);
+    int status = compile(confined ? confined->command() : command->compiler, wallSeconds, user, landlock ? landlock->fd() : -1);
     // bwrap passes a signal on as 128 + its number
     if (!bwrap.empty() && (status == 128 + SIGXCPU || status == 128 + SIGKILL)) status = -1;
     if (status < 0)
