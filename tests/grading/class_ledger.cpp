@@ -4,6 +4,7 @@
 // The students are graded by a prebuilt agent (--agent), so no test here runs CMake.
 #include "support/files.h"
 #include "grader/course/class_run.h"
+#include "src/text.h"
 #include "grading_support.h"
 #include "support/read_csv.h"
 
@@ -393,7 +394,7 @@ TEST_CASE("hostile folder names each get their own row with their printable name
     CHECK(rows.size() == names.size() + 1);
     // A spreadsheet reads a formula as text; two names that differ in bytes that are not UTF-8 differ.
     const auto shownInCsv = [](const std::string& name) {
-        const std::string shown = raylab::grader::printableName(name);
+        const std::string shown = raylab::printableName(name);
         return std::string("=+-@").find(shown[0]) != std::string::npos ? "'" + shown : shown;
     };
     CHECK(shownInCsv("=1+2*3") == "'=1+2*3");
@@ -401,7 +402,7 @@ TEST_CASE("hostile folder names each get their own row with their printable name
     CHECK(shownInCsv("bad\xFEname") == "bad\\xFEname");
     CHECK(shownInCsv("new\nline") == "new\\nline");
     for (const std::string& name : names) {
-        CAPTURE(raylab::grader::printableName(name));
+        CAPTURE(raylab::printableName(name));
         int found = 0;
         for (const auto& row : rows)
             if (row[0] == shownInCsv(name)) {

@@ -23,7 +23,7 @@
 #endif
 
 namespace fs = std::filesystem;
-using raylab::grader::printableName;
+using raylab::printableName;
 using raylab::grader::removeAbandonedScratch;
 using raylab::grader::RunScratch;
 using raylab::grader::problemSummary;
@@ -76,6 +76,11 @@ TEST_CASE("printable names: one line of UTF-8, control characters and bytes that
     for (const std::string& name : std::vector<std::string>{"bad\xFEname", "bad\xFFname", "bad\\xFEname", "bad\xEF\xBF\xBDname", "new\nline",
                                    "new\\nline", std::string("nul\0", 4), "nul\\x00"})
         CHECK_MESSAGE(shown.insert(printableName(name)).second, printableName(name));
+}
+
+TEST_CASE("printable paths: a folder's newline and escape sequence shown as the names are, '/' between folders") {
+    CHECK(raylab::printablePath(fs::path("class") / "new\nline\x1B[2J" / "gradient.cpp") == "class/new\\nline\\x1B[2J/gradient.cpp");
+    CHECK(raylab::printablePath("plain/path") == "plain/path");
 }
 
 TEST_CASE("printable messages keep their lines and tabs, and are UTF-8 whatever the bytes") {

@@ -135,7 +135,7 @@ ClassEntries listClass(const fs::path& classFolder, const fs::path& out) {
     std::error_code error;
     const fs::path outCanonical = fs::weakly_canonical(out, error);
     auto it = fs::directory_iterator(classFolder, error);
-    if (error) throw std::runtime_error("cannot read the class folder " + classFolder.string() + ": " + error.message());
+    if (error) throw std::runtime_error("cannot read the class folder " + printablePath(classFolder) + ": " + error.message());
     for (; !error && it != fs::directory_iterator(); it.increment(error)) {
         const fs::path path = it->path();
         const std::string name = path.filename().string();
@@ -156,7 +156,7 @@ ClassEntries listClass(const fs::path& classFolder, const fs::path& out) {
             entries.students.push_back({name, path, studentsFolder(out) / safeStudentName(name)});
         }
     }
-    if (error) throw std::runtime_error("cannot read the class folder " + classFolder.string() + ": " + error.message());
+    if (error) throw std::runtime_error("cannot read the class folder " + printablePath(classFolder) + ": " + error.message());
     std::sort(entries.students.begin(), entries.students.end(),
               [](const StudentWork& a, const StudentWork& b) { return a.name < b.name; });
     return entries;
@@ -217,16 +217,16 @@ public:
         const fs::path file = out / kLockFile;
         m_fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
         if (m_fd < 0) {
-            problem = "cannot open the lock " + file.string() + ": " + std::strerror(errno);
+            problem = "cannot open the lock " + printablePath(file) + ": " + std::strerror(errno);
             return false;
         }
         if (::flock(m_fd, LOCK_EX | LOCK_NB) != 0) {
             if (errno != EWOULDBLOCK) {
-                problem = "cannot take the lock " + file.string() + ": " + std::strerror(errno);
+                problem = "cannot take the lock " + printablePath(file) + ": " + std::strerror(errno);
                 return false;
             }
-            const std::string holder = "another grade-class run (" + holderPid() + ") is grading into " + out.string() +
-                                       " (lock: " + file.string() + ")";
+            const std::string holder = "another grade-class run (" + holderPid() + ") is grading into " + printablePath(out) +
+                                       " (lock: " + printablePath(file) + ")";
             if (!wait) {
                 problem = holder + "; wait for it to finish, or add --wait";
                 return false;
@@ -235,13 +235,13 @@ public:
             std::fflush(stdout);
             while (::flock(m_fd, LOCK_EX) != 0)
                 if (errno != EINTR || g_stopSignal != 0) {
-                    problem = "stopped while waiting for the lock " + file.string();
+                    problem = "stopped while waiting for the lock " + printablePath(file);
                     return false;
                 }
         }
         const std::string pid = std::to_string(getpid()) + "\n";
         if (::ftruncate(m_fd, 0) != 0 || ::pwrite(m_fd, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
-            problem = "cannot write the lock " + file.string() + ": " + std::strerror(errno);
+            problem = "cannot write the lock " + printablePath(file) + ": " + std::strerror(errno);
             return false;
         }
         return true;
@@ -434,8 +434,6 @@ std::string safeStudentName(const std::string& folderName) {
     return cut;
 }
 
-std::string printableName(const std::string& folderName) { return printableText(folderName, TextForm::Name); }
-
 int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
     const fs::path& out = options.out;
     fs::create_directories(studentsFolder(out));
@@ -465,7 +463,7 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
         const std::string shown = printableName(work.name);
         const std::string safe = work.folder.filename().string();
         if (ledger.count(safe)) {
-            std::printf("%-20s already graded (%s)\n", shown.c_str(), (work.folder / kResultFile).string().c_str());
+            std::printf("%-20s already graded (%s)\n", shown.c_str(), printablePath(work.folder / kResultFile).c_str());
             continue;
         }
         if (const auto old = madeOtherwise.find(safe); old != madeOtherwise.end())
@@ -499,12 +497,12 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
     std::fflush(stdout);
     if (g_stopSignal != 0) {
         std::printf("stopped by %s; %s holds every student graded so far: run the same command again to resume\n",
-                    signalName(g_stopSignal), (out / "grades.csv").string().c_str());
+                    signalName(g_stopSignal), printablePath(out / "grades.csv").c_str());
         std::fflush(stdout);
         return 128 + g_stopSignal;
     }
-    std::printf("grades: %s, reports: %s/<student>/report/index.html\n", (out / "grades.csv").string().c_str(),
-                studentsFolder(out).string().c_str());
+    std::printf("grades: %s, reports: %s/<student>/report/index.html\n", printablePath(out / "grades.csv").c_str(),
+                printablePath(studentsFolder(out)).c_str());
     if (!unfinished.empty()) {
         std::string names;
         for (const std::string& n : unfinished) names += (names.empty() ? "" : ", ") + n;

@@ -16,7 +16,7 @@ namespace raylab::grader {
 
 using Settings = std::vector<std::pair<std::string, std::string>>; // name, value
 
-// A student's row of grades.csv: the folder's name as printableName shows it, and the cells after
+// A student's row of grades.csv: the folder's name as printableName (src/text.h) shows it, and the cells after
 // it, by column; and what made it (the run's `madeBy`).
 struct StudentRecord {
     std::string student;
@@ -61,10 +61,6 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade);
 // the first character are kept, every other byte is written %XX. A name whose form is longer than
 // 160 bytes is cut and ends with '~' and a 64-bit hash of the whole name.
 std::string safeStudentName(const std::string& folderName);
-
-// The name as one line of UTF-8 for the terminal, grades.csv and the reports, one to one: control
-// characters as \n, \t, \r or \xHH, bytes that are not UTF-8 as \xHH, a backslash as \\.
-std::string printableName(const std::string& folderName);
 
 // A problem as a cell of grades.csv: its first line and its first three error lines (a build
 // problem may have a cause per lab), each cut at a word past 200 characters.
