@@ -242,7 +242,8 @@ int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& contex
         try {
             result = gradeCodeOnce(student, setup, toolchain(true),
                                    {classBuild, work.folder / "submission", work.folder / "build.log"}, title);
-        } catch (const std::exception& e) { // one student's trouble never stops the class
+        } catch (const std::exception& e) { // one student's trouble never stops the class; a full disk does
+            if (isDiskFull(e)) throw;
             result = gradeBuildFailure(setup, e.what());
             result.title = title;
         }

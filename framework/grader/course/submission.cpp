@@ -6,9 +6,12 @@
 #include "src/messages.h"
 #include "src/text.h"
 
+#include <algorithm>
 #include <functional>
+#include <iomanip>
 #include <set>
 #include <sstream>
+#include <system_error>
 
 namespace raylab::grader {
 
@@ -74,7 +77,13 @@ std::string grouped(std::uint64_t count) {
     return text;
 }
 
-std::string megabytes(std::uint64_t bytes) { return tr("number.megabytes", {{"count", std::to_string(bytes >> 20)}}); }
+// "32 MB", "64.8 MB": a size as the report names it (a program just over its limit is not "64 MB").
+std::string megabytes(std::uint64_t bytes) {
+    std::ostringstream count;
+    if (bytes % (std::uint64_t(1) << 20) == 0) count << (bytes >> 20);
+    else count << std::fixed << std::setprecision(1) << double(bytes) / double(std::uint64_t(1) << 20);
+    return tr("number.megabytes", {{"count", count.str()}});
+}
 
 // A program's kept output as its log holds it: the head, a line saying how much was cut, the tail.
 std::string logText(const KeptOutput& kept) {
@@ -167,6 +176,17 @@ bool usableProgram(const fs::path& program, SubmissionBuild& b) {
     return false;
 }
 
+// A build that failed for want of room is no fault of the submission: it is said as a full disk (a
+// class run stops on it, class_run.h), not graded as a compile error. The build's words alone are not
+// enough (a submission can print them): the disk must be nearly full too.
+void requireRoom(const KeptOutput& output, const fs::path& buildDir) {
+    if ((output.head + output.tail).find("No space left on device") == std::string::npos) return;
+    std::error_code error;
+    const fs::space_info space = fs::space(buildDir, error);
+    if (!error && space.available >= kCompilerFileBytes) return;
+    throw fs::filesystem_error("the build stopped on a full disk", buildDir, std::make_error_code(std::errc::no_space_on_device));
+}
+
 // The agent of one lab, built with the other labs from the reference (framework/grader/CMakeLists.txt).
 fs::path labAgent(const fs::path& binDir, int lab) { return agentFile(binDir, "raylab-agent-lab" + std::to_string(lab)); }
 
@@ -243,13 +263,17 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     const ProcessResult configured = runProcess(configure, keep);
     if (!configured.succeeded()) {
         writeFileAtomically(b.log, logText(configured.kept) + configured.error);
+        requireRoom(configured.kept, buildDir);
         b.compilerMessage = configured.started ? buildProblem(configured.kept) : configured.error;
         b.brokenLabs = numbers;
         return b;
     }
     const ProcessResult built = runProcess(build, keep);
     writeFileAtomically(b.log, logText(configured.kept) + logText(built.kept) + built.error);
-    if (!built.succeeded()) b.compilerMessage = built.started ? buildProblem(built.kept) : built.error;
+    if (!built.succeeded()) {
+        requireRoom(built.kept, buildDir);
+        b.compilerMessage = built.started ? buildProblem(built.kept) : built.error;
+    }
     b.isolated = fs::is_directory(sourceDir / "solutions", error);
     if (b.isolated) {
         for (int lab : numbers) {
