@@ -145,9 +145,13 @@ TEST_CASE("a build's problem says the cause a person acts on first, in place of 
     CHECK(memory.find("ran out of memory") == memory.rfind("ran out of memory")); // said once
     for (const char* noise : {"virtual memory", "Killed signal", "gmake"}) CHECK_MESSAGE(memory.find(noise) == std::string::npos, memory);
 
-    const std::string time = buildProblem({"raylab-build-guard: time: labs/lab3_sphere/sphere_geometry.cpp\n", "", 0});
-    CHECK_MESSAGE(time.find("compiling labs/lab3_sphere/sphere_geometry.cpp: the compiler ran past its time limit") !=
-                      std::string::npos, time);
+    // The guard's words for a compiler it stopped: a cause, first, before the errors it printed until then.
+    const std::string time = buildProblem({"a.cpp:5:9: error: 'y' was not declared\n"
+                                           "raylab-build-guard: time: labs/lab3_sphere/sphere_geometry.cpp\n", "", 0});
+    CHECK_MESSAGE(time.rfind("compiling labs/lab3_sphere/sphere_geometry.cpp: the compiler ran past its time limit", 0) == 0, time);
+    CHECK(time.find("a.cpp:5:9: error: 'y' was not declared") != std::string::npos);
+    CHECK_MESSAGE(buildProblem({"raylab-build-guard: killed: a.cpp\n", "", 0}).rfind("compiling a.cpp: the compiler was killed, most "
+                                                                                   "likely out of memory", 0) == 0, time);
     const std::string big = buildProblem({"g++: internal compiler error: File size limit exceeded signal terminated program as\n", "", 0});
     CHECK_MESSAGE(big.find("the compiler stopped at the 32 MB limit on each file it writes") != std::string::npos, big);
 

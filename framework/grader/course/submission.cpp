@@ -140,7 +140,15 @@ std::string buildProblem(const KeptOutput& output) {
     };
     int count = 0;
     for (std::string line; std::getline(in, line);) {
-        if (const std::string refusal = guardRefusal(line); !refusal.empty()) line = "error: " + refusal;
+        if (const std::string refusal = guardRefusal(line); !refusal.empty()) {
+            // A compiler stopped by its limits: a cause; a file read outside: the code's error.
+            const bool limit = line.rfind("raylab-build-guard: time: ", 0) == 0 || line.rfind("raylab-build-guard: killed: ", 0) == 0;
+            if (limit) {
+                sayOnce(causes, refusal);
+                continue;
+            }
+            line = "error: " + refusal;
+        }
         all += line + "\n";
         const auto sign = std::find_if(std::begin(kLimitSigns), std::end(kLimitSigns),
                                        [&](const LimitSign& s) { return line.find(s.words) != std::string::npos; });
