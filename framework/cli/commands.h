@@ -44,22 +44,28 @@ std::string labList(const grader::LabCatalog& labs);
 
 // A program of this build's folder (name.exe on Windows).
 std::filesystem::path programInBuild(const std::string& name);
+// This program's name in the build: raylab (the student's labs) or raylab-reference.
+std::string thisProgram();
 
-// Whether the programs holding the student's labs are as new as the lab files (fresh_build.cpp).
+// Whether the programs holding the student's labs are as new as the files they are built from (fresh_build.cpp).
 enum class FreshBuild {
-    Fresh,       // no lab file is newer than the program
-    Rebuilt,     // the build brought it up to date
+    Fresh,       // no such file is newer than the programs
+    Rebuilt,     // the build brought them up to date
     BuildFailed, // the compiler's errors were shown
     Stale,       // it could not be rebuilt from here; the error names the newer file
 };
-// The first lab file (.cpp, .h) of `labFolders` written after `program`; empty when none is.
-std::filesystem::path newerLabFile(const std::vector<std::filesystem::path>& labFolders, const std::filesystem::path& program);
-// When a lab file is newer than `program`, builds `targets` first: the files this program takes from
-// labs/ when it is the `runningProgram`, which is then run again in this process's place with the
-// same arguments (the call returns only when nothing changed or the build failed); else every lab
-// file of labs/ (the agents'), which are also built when `program` does not exist yet.
-FreshBuild ensureFreshBuild(const Context& context, const std::filesystem::path& program,
-                            const std::vector<std::string>& targets, bool runningProgram);
+// What a program is seen to be built from: the lab files this build takes from labs/, or everything
+// the grading build compiles (every lab of labs/, framework/ with the labs' grading folders, cmake/).
+enum class BuildInputs { StudentLabs, GradingBuild };
+// The first file of `inputs` (files, and folders walked through) written after `since`, but for
+// handouts and pictures (.md, .png) and hidden files; empty when none is.
+std::filesystem::path newerSourceFile(const std::vector<std::filesystem::path>& inputs, std::filesystem::file_time_type since);
+// When one of `inputs` is newer than the oldest of `programs` (or than their last rebuild from here),
+// or a program is not built yet, builds `targets` first. The first program, when `runningProgram`,
+// is this one: it is then run again in this process's place with the same arguments (the call
+// returns only when nothing changed or the build failed).
+FreshBuild ensureFreshBuild(const Context& context, const std::vector<std::filesystem::path>& programs,
+                            const std::vector<std::string>& targets, BuildInputs inputs, bool runningProgram);
 
 // The most render threads raylab starts (--threads): more only exhausts the system.
 inline constexpr int kMaxThreads = 1024;

@@ -129,8 +129,8 @@ int runRender(const std::filesystem::path& scene, std::filesystem::path out, int
 // The student's figures come from the lab files as they are now: a build older than one of them is
 // brought up to date first. False when it could not be.
 bool codeIsFresh(Context& context) {
-    const std::string self = build::kImpl == std::string("student") ? "raylab" : "raylab-reference";
-    const FreshBuild fresh = ensureFreshBuild(context, programInBuild(self), {self}, true);
+    const std::string self = thisProgram();
+    const FreshBuild fresh = ensureFreshBuild(context, {programInBuild(self)}, {self}, BuildInputs::StudentLabs, true);
     if (fresh == FreshBuild::BuildFailed || fresh == FreshBuild::Stale) context.exitStatus = 1;
     return context.exitStatus == 0;
 }

@@ -6,8 +6,10 @@
 
 #include "grader/lab_catalog.h"
 #include "grader/sandbox/process.h"
+#include "src/atomic_file.h"
 #include "src/messages.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -42,6 +44,15 @@ std::vector<fs::path> studentLabFolders(bool everyLab) {
     return folders;
 }
 
+// The files that make the grading build, as far as a run can see them change: every lab's folder
+// of labs/, the framework (with each lab's grading folder), cmake/ and the top CMakeLists.txt.
+std::vector<fs::path> gradingBuildInputs() {
+    std::vector<fs::path> inputs = studentLabFolders(true);
+    const fs::path top = build::kSourceDir;
+    for (const char* name : {"framework", "cmake", "CMakeLists.txt"}) inputs.push_back(top / name);
+    return inputs;
+}
+
 // Rebuilds `targets` in this program's build folder; true when the build succeeded.
 bool rebuild(const std::vector<std::string>& targets) {
     std::vector<std::string> argv{RAYLAB_CMAKE_COMMAND, "--build", build::kBuildDir, "--config", build::kBuildType, "--target"};
@@ -50,48 +61,85 @@ bool rebuild(const std::vector<std::string>& targets) {
     return grader::runProcess(argv).succeeded();
 }
 
+// Written when `targets` were rebuilt from here: a changed file that none of them is made from
+// (a handout, a template of another program) is not seen as newer again at every run.
+fs::path rebuiltStamp(const std::vector<std::string>& targets) {
+    std::string name = "raylab-rebuilt";
+    for (const std::string& target : targets) name += "-" + target;
+    return fs::path(build::kBuildDir) / (name + ".stamp");
+}
+
 } // namespace
 
-fs::path newerLabFile(const std::vector<fs::path>& labFolders, const fs::path& program) {
+fs::path newerSourceFile(const std::vector<fs::path>& inputs, fs::file_time_type since) {
     std::error_code error;
-    const auto built = fs::last_write_time(program, error);
-    if (error) return {};
-    for (const fs::path& folder : labFolders)
-        for (const auto& entry : fs::directory_iterator(folder, error)) {
-            const std::string extension = entry.path().extension().string();
-            if (extension != ".cpp" && extension != ".h") continue;
-            const auto written = fs::last_write_time(entry.path(), error);
-            if (!error && written > built) return entry.path();
+    const auto isNewer = [since](const fs::path& file) {
+        const std::string extension = file.extension().string();
+        if (extension == ".md" || extension == ".png") return false; // read by people, or at run time
+        std::error_code unreadable;
+        const auto written = fs::last_write_time(file, unreadable);
+        return !unreadable && written > since;
+    };
+    for (const fs::path& input : inputs) {
+        if (fs::is_regular_file(input, error)) {
+            if (isNewer(input)) return input;
+            continue;
         }
+        for (auto entry = fs::recursive_directory_iterator(input, error); !error && entry != fs::recursive_directory_iterator();
+             entry.increment(error)) {
+            if (entry->path().filename().string().starts_with(".")) { // .git, an editor's files
+                if (entry->is_directory(error)) entry.disable_recursion_pending();
+                continue;
+            }
+            if (entry->is_regular_file(error) && isNewer(entry->path())) return entry->path();
+        }
+    }
     return {};
 }
 
-FreshBuild ensureFreshBuild(const Context& context, const fs::path& program, const std::vector<std::string>& targets,
-                            bool runningProgram) {
+FreshBuild ensureFreshBuild(const Context& context, const std::vector<fs::path>& programs,
+                            const std::vector<std::string>& targets, BuildInputs inputs, bool runningProgram) {
     std::error_code error;
-    if (!runningProgram && !fs::exists(program, error)) { // the figures' build makes raylab alone
-        std::printf("%s\n", tr("cli.building_agents").c_str());
-        return rebuild(targets) ? FreshBuild::Rebuilt : FreshBuild::BuildFailed;
+    // The oldest program, or the last rebuild from here when it is later; a program not built yet
+    // (the figures' build makes raylab alone) is built now.
+    auto built = fs::file_time_type::max();
+    bool missing = false;
+    for (const fs::path& program : programs) {
+        const auto written = fs::last_write_time(program, error);
+        missing = missing || error;
+        if (!error) built = std::min(built, written);
     }
-    // The running program is built from this build's labs; the agents (the other programs) from labs/ alone.
-    const fs::path changed = newerLabFile(studentLabFolders(!runningProgram), program);
-    if (changed.empty()) return FreshBuild::Fresh;
-    const std::string file = fs::relative(changed, build::kSourceDir).generic_string();
+    const auto stamp = fs::last_write_time(rebuiltStamp(targets), error);
+    if (!error) built = std::max(built, stamp);
+    std::string file;
+    if (!missing) {
+        // The running program is built from this build's labs; the grading build from all it compiles.
+        const fs::path changed =
+            newerSourceFile(inputs == BuildInputs::GradingBuild ? gradingBuildInputs() : studentLabFolders(false), built);
+        if (changed.empty()) return FreshBuild::Fresh;
+        file = fs::relative(changed, build::kSourceDir).generic_string();
+    }
 #ifdef _WIN32
-    if (runningProgram) { // a running program's file cannot be replaced
+    if (runningProgram && !missing) { // a running program's file cannot be replaced
         const std::string stale =
             tr("cli.stale_build", {{"file", file}, {"build", build::kBuildDir}, {"config", build::kBuildType}});
         std::fprintf(stderr, "%s\n", tr("cli.error", {{"what", stale}}).c_str());
         return FreshBuild::Stale;
     }
 #endif
-    std::printf("%s\n", tr("cli.rebuilding", {{"file", file}}).c_str());
+    std::printf("%s\n", missing ? tr("cli.building_agents").c_str() : tr("cli.rebuilding", {{"file", file}}).c_str());
     if (!rebuild(targets)) return FreshBuild::BuildFailed;
+    try {
+        writeFileAtomically(rebuiltStamp(targets), "");
+    } catch (const std::exception&) {
+        // without it, the next run checks the build again: slower, never wrong
+    }
     if (!runningProgram) return FreshBuild::Rebuilt;
 #ifndef _WIN32
     // Run the new program in this one's place, once (RAYLAB_REBUILT stops a loop on a skewed clock).
     if (std::getenv("RAYLAB_REBUILT") == nullptr) {
         setenv("RAYLAB_REBUILT", "1", 1);
+        const fs::path& program = programs.front();
         std::vector<std::string> args{program.string()};
         for (int k = 1; k < context.argc; ++k) args.emplace_back(context.argv[k]);
         const std::vector<char*> cargs = grader::argumentPointers(args);

@@ -142,10 +142,13 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
 }
 
 int gradeLabs(GradeOptions o, const Context& context) {
-    // labs/ as it is now: its agents rebuilt when a lab file changed, or graded as a submission when
-    // they no longer build (each lab that compiles is graded).
+    // labs/ as it is now: this program (the checks, their messages) and the agents rebuilt when a file
+    // they are built from changed (a lab, its grading folder, the framework), or labs/ graded as a
+    // submission when they no longer build (each lab that compiles is graded).
+    const std::string self = thisProgram();
     if (o.labs.empty() && o.agents.empty() &&
-        ensureFreshBuild(context, programInBuild("raylab-agent"), {"raylab-agents"}, false) == FreshBuild::BuildFailed) {
+        ensureFreshBuild(context, {programInBuild(self), programInBuild("raylab-agent")}, {self, "raylab-agents"},
+                         BuildInputs::GradingBuild, true) == FreshBuild::BuildFailed) {
         std::printf("%s\n", tr("cli.build_failed_grading_copy").c_str());
         o.labs = labsFolder().string();
     }

@@ -22,7 +22,9 @@ namespace {
 namespace fs = std::filesystem;
 using namespace raylab::grader;
 
-// Each mistake's agent renders the figures; those that fail their check are kept, small.
+// Each mistake's agent renders the figures of `scenes`; those that fail their check are its signatures,
+// kept small. Only the figures rendered are touched: a signature of a figure not in `scenes` stays, one
+// whose figure now passes is removed, and an unchanged picture is left byte for byte.
 void makeSignatures(const fs::path& folder, const fs::path& bin, const fs::path& scenes) {
     const ReferenceSet references = loadReferences(folder);
     const std::vector<Mistake> mistakes = loadMistakes(folder);
@@ -39,18 +41,23 @@ void makeSignatures(const fs::path& folder, const fs::path& bin, const fs::path&
         fs::remove_all(setup.scratch);
         const std::map<std::string, Image8> pictures = renderFigures(setup, agent);
         const fs::path out = folder / "mistakes" / m.id;
-        fs::remove_all(out);
-        std::string kept;
+        std::string kept, removed;
         for (const FigureReference& r : references.figures) {
             const auto picture = pictures.find(r.id);
             if (picture == pictures.end()) continue;
-            const Image8& image = picture->second;
-            if (compareImage(r, image).passed) continue;
+            const fs::path file = out / (r.id + ".png");
+            if (compareImage(r, picture->second).passed) {
+                if (fs::remove(file)) removed += " " + r.id;
+                continue;
+            }
             fs::create_directories(out);
-            writePng(out / (r.id + ".png"), downsample(image));
+            writePngIfChanged(file, downsample(picture->second));
             kept += " " + r.id;
         }
-        std::printf("  %-28s signatures:%s\n", m.id.c_str(), kept.empty() ? " none (no figure changes)" : kept.c_str());
+        std::error_code error;
+        if (fs::is_empty(out, error)) fs::remove(out, error);
+        std::printf("  %-28s signatures:%s%s%s\n", m.id.c_str(), kept.empty() ? " none among the figures rendered" : kept.c_str(),
+                    removed.empty() ? "" : "; removed (the figure now passes):", removed.c_str());
         fs::remove_all(setup.scratch);
     }
 }

@@ -3,6 +3,8 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -121,6 +123,32 @@ bool isOne(Language language, const std::string& count) {
 
 } // namespace
 
+std::string placeholderProblem(std::string_view text) {
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        if (text[k] == '}' && k + 1 < text.size() && text[k + 1] == '}') ++k;
+        if (text[k] != '{') continue;
+        if (k + 1 < text.size() && text[k + 1] == '{') {
+            ++k;
+            continue;
+        }
+        const std::size_t close = text.find('}', k);
+        if (close == std::string_view::npos) return "a { that no } closes (write {{ for a brace)";
+        const std::string_view inside = text.substr(k + 1, close - k - 1);
+        const std::size_t bars = std::size_t(std::count(inside.begin(), inside.end(), '|'));
+        const std::string_view name = inside.substr(0, inside.find('|'));
+        const bool isName = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+        });
+        if (!isName || (bars != 0 && bars != 2)) {
+            std::string problem(1, '{'); // not "{" + string: GCC 12 warns wrongly there (-Wrestrict)
+            problem.append(inside).append("} is not a placeholder: {name} or {name|one|other} (write {{ for a brace)");
+            return problem;
+        }
+        k = close;
+    }
+    return "";
+}
+
 std::string tr(Language language, std::string_view id, MessageArgs args) {
     const auto& catalogue = messageCatalogue(language);
     const auto found = catalogue.find(std::string(id));
@@ -128,13 +156,24 @@ std::string tr(Language language, std::string_view id, MessageArgs args) {
     const std::string& text = found->second;
     std::string out;
     for (std::size_t k = 0; k < text.size();) {
-        const std::size_t open = text.find('{', k);
-        const std::size_t close = open == std::string::npos ? open : text.find('}', open);
-        if (close == std::string::npos) {
+        const std::size_t open = text.find_first_of("{}", k);
+        if (open == std::string::npos) {
             out += text.substr(k);
             break;
         }
         out += text.substr(k, open - k);
+        // {{ and }} are a brace.
+        if (open + 1 < text.size() && text[open + 1] == text[open]) {
+            out += text[open];
+            k = open + 2;
+            continue;
+        }
+        const std::size_t close = text[open] == '{' ? text.find('}', open) : std::string::npos;
+        if (close == std::string::npos) { // a lone brace: as written (placeholderProblem names it)
+            out += text[open];
+            k = open + 1;
+            continue;
+        }
         // {name} is the argument; {name|one|other} the word that agrees with the number `name`.
         const std::string_view inside = std::string_view(text).substr(open + 1, close - open - 1);
         const std::size_t bar = inside.find('|');

@@ -28,13 +28,18 @@ using MessageArgs = std::vector<std::pair<std::string_view, std::string>>;
 
 // The message `id` in the current language, each {name} replaced by its argument, and each
 // {name|one|other} by the form that agrees with the number `name` in that language ("1 figure",
-// "2 figures"; French "0 figure"). An unknown id or placeholder is a programming error: std::logic_error.
+// "2 figures"; French "0 figure"); {{ and }} write a brace. An unknown id or placeholder is a
+// programming error: std::logic_error.
 std::string tr(std::string_view id, MessageArgs args = {});
 std::string tr(Language language, std::string_view id, MessageArgs args = {});
 
 // A check's or a lab function's name (as lab.toml writes it) as the reader sees it: the name itself
 // in English, its title in [check_title] of the language's catalogue otherwise, when it has one.
 std::string titleInLanguage(const std::string& name);
+
+// What is wrong with a message's placeholders, "" when nothing: each { opens {name} or
+// {name|one|other} (a name: letters, digits, _), or is doubled ({{) for a brace.
+std::string placeholderProblem(std::string_view text);
 
 // A language's whole catalogue: id -> text (for the tests).
 const std::map<std::string, std::string>& messageCatalogue(Language language);

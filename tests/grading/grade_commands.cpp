@@ -10,6 +10,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using namespace raylab::test;
@@ -145,6 +146,34 @@ TEST_CASE("distribute writes a tree without the solutions, with the references")
 } // TEST_SUITE
 
 TEST_SUITE("commands") {
+TEST_CASE("references for one figure's scene touch that figure alone: every other file stays, byte for byte") {
+    // A copy of the grader's data: the signatures of the other figures must survive, and a picture
+    // whose pixels did not change must not be re-encoded (the solutions did not change: nothing may).
+    const fs::path root = freshFolder("raylab-references-one-scene"), references = root / "references",
+                   scenes = root / "scenes";
+    fs::copy(referencesDir(), references, fs::copy_options::recursive);
+    fs::create_directories(scenes);
+    fs::copy_file(sourceDir() / "scenes/figures/lab2_directions.toml", scenes / "lab2_directions.toml");
+    std::map<std::string, std::string> before;
+    for (const auto& entry : fs::recursive_directory_iterator(references))
+        if (entry.is_regular_file()) before[fs::relative(entry.path(), references).generic_string()] = readFile(entry.path());
+    REQUIRE(before.size() > 50);
+    const ProgramRun run = runRaylab({"references", "--out", references.string(), "--scenes", scenes.string(),
+                                      "--mistakes", binDir().string()}, root);
+    REQUIRE_MESSAGE(run.status == 0, run.output);
+    CHECK_MESSAGE(run.output.find("lab2_directions") != std::string::npos, run.output);
+    CHECK_MESSAGE(run.output.find("signatures: lab2_directions") != std::string::npos, run.output);
+    std::map<std::string, std::string> after;
+    for (const auto& entry : fs::recursive_directory_iterator(references))
+        if (entry.is_regular_file()) after[fs::relative(entry.path(), references).generic_string()] = readFile(entry.path());
+    for (const auto& [file, bytes] : before) {
+        const auto now = after.find(file);
+        REQUIRE_MESSAGE(now != after.end(), file << " was deleted\n" << run.output);
+        CHECK_MESSAGE(now->second == bytes, file << " was rewritten");
+    }
+    CHECK(after.size() == before.size());
+}
+
 
 TEST_CASE("grade --lab N grades that lab alone") {
     const fs::path dir = freshFolder("raylab-grade-lab");

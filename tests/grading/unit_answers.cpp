@@ -1,6 +1,7 @@
 // The parent reads each run's answers: one per item, in order, after a hello; everything else is a
 // protocol violation that fails an item with its reason, and a NaN is a value, not a violation.
 #include "grader/judge/answers.h"
+#include "src/messages.h"
 
 #include <doctest/doctest.h>
 
@@ -86,6 +87,17 @@ TEST_SUITE("protocol session") {
         CHECK_FALSE(s.check("first").passed);
         CHECK(s.check("first").message.find("protocol violation") == std::string::npos);
         CHECK(s.check("second").passed);
+    }
+
+    TEST_CASE("a check whose message cannot be written costs that check alone, named as the course's fault") {
+        Session s;
+        s.checks[0].judge = [](const auto&, Judge&) { raylab::tr("grade.threw"); }; // {what} has no value
+        CHECK(s.read({kHello, value(1, 1.), value(2, 1.), picture(3), protocol::Done{}}));
+        CHECK_FALSE(s.check("first").passed);
+        CHECK(s.check("first").message.find("could not judge this check (message grade.threw: no value for {what})") !=
+              std::string::npos);
+        CHECK(s.check("second").passed);
+        CHECK(s.reported.figures.at("fig").image);
     }
 
     TEST_CASE("forged lines before the hello fail the awaited item only") {

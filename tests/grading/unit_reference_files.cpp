@@ -168,4 +168,29 @@ TEST_CASE("a reference's description: an unknown key, a wrong type or a NaN name
         CHECK(error(replaced(written, c.from, c.to)) == "fig.toml:" + lineOf(c.key) + ": " + c.key + ": " + c.problem);
 }
 
+
+TEST_CASE("a reference picture is written again only when its pixels change") {
+    const Folder folder;
+    const fs::path file = folder.root / "fig.png";
+    Image8 image{2, 1, {10, 20, 30, 40, 50, 60}};
+    CHECK(writePngIfChanged(file, image));
+    // The same pixels in other bytes (as another encoder would write them): left as they are.
+    { std::ofstream(file, std::ios::binary | std::ios::app) << "bytes after IEND"; }
+    const std::string encoded = [&] {
+        std::ifstream in(file, std::ios::binary);
+        return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    }();
+    CHECK_FALSE(writePngIfChanged(file, image));
+    std::ifstream in(file, std::ios::binary);
+    CHECK(std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()} == encoded);
+    image.rgb[4] = 51;
+    CHECK(writePngIfChanged(file, image));
+    CHECK(readImage(file).rgb == image.rgb);
+    // Another size is a change, and so is a file that is no picture.
+    CHECK(writePngIfChanged(file, Image8{1, 1, {1, 2, 3}}));
+    folder.write("broken.png", "not a png");
+    CHECK(writePngIfChanged(folder.root / "broken.png", image));
+    CHECK(readImage(folder.root / "broken.png").rgb == image.rgb);
+}
+
 } // TEST_SUITE

@@ -170,6 +170,16 @@ function(step_hints)
   run(output nonzero ${bin}/raylab grade --lab 6 --lang fr --report ${WORK}/grade-wrong-fr)
   expect("${output}" "toyColour renvoie 1 - (d + 1) / 2" "the check's French hint")
   expect("${output}" "1 - (d + 1) / 2 pour chaque direction d" "the check's French title")
+  # The instructor rewords the hint in the grading folder: `raylab grade` rebuilds the grader first.
+  set(messages ${tree}/framework/grader/labs/lab6_toy/messages.en.toml)
+  file(READ ${messages} hints)
+  string(REPLACE "the direction's colour, inverted" "the direction's colour, upside down" reworded "${hints}")
+  file(WRITE ${messages} "${reworded}")
+  run(output nonzero ${bin}/raylab grade --lab 6 --report ${WORK}/grade-reworded)
+  expect("${output}" "framework/grader/labs/lab6_toy/messages.en.toml changed since the last build: rebuilding first"
+         "raylab grade rebuilds when the lab's grading folder changed")
+  expect("${output}" "toyColour returns 1 - (d + 1) / 2: the direction's colour, upside down" "the reworded hint")
+  file(WRITE ${messages} "${hints}")
 endfunction()
 
 # 6. What adding the lab changed under framework/, listed: files added in lab 6's grading folder and

@@ -7,10 +7,12 @@
 #include "raylab/todo.h"
 
 #include <doctest/doctest.h>
+#include <toml++/toml.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <optional>
@@ -34,6 +36,10 @@ constexpr std::string_view kCheckTitles = "check_title."; // French only: Englis
 std::set<std::string> placeholders(const std::string& text) {
     std::set<std::string> names;
     for (std::size_t open = text.find('{'); open != std::string::npos; open = text.find('{', open + 1)) {
+        if (text.compare(open, 2, "{{") == 0) { // a brace, not a placeholder
+            ++open;
+            continue;
+        }
         const std::string inside = text.substr(open + 1, text.find('}', open) - open - 1);
         names.insert(inside.substr(0, inside.find('|')));
     }
@@ -203,6 +209,47 @@ TEST_SUITE("messages") {
         CHECK(tr(Language::Fr, "report.lab", {{"lab", "3"}}) == "TP 3");
         CHECK_THROWS_AS(tr("no.such.message"), std::logic_error);
         CHECK_THROWS_AS(tr("report.lab"), std::logic_error);
+    }
+
+    TEST_CASE("{{ and }} write a brace; a placeholder is a name or name|one|other, anything else is named") {
+        CHECK(placeholderProblem("{count|figure|figures} in {lab}, {{x, y}} }} {{").empty());
+        CHECK(placeholderProblem("no value for {point, normalize(p - c)}") ==
+              "{point, normalize(p - c)} is not a placeholder: {name} or {name|one|other} (write {{ for a brace)");
+        CHECK(placeholderProblem("{n|one}") != "");
+        CHECK(placeholderProblem("{}") != "");
+        CHECK(placeholderProblem("open { never closed") == "a { that no } closes (write {{ for a brace)");
+    }
+
+    TEST_CASE("every catalogue file, the framework's and each lab's, has well-formed placeholders: a bad one names file:line") {
+        // Read from the files themselves (the compiled catalogue has no lines): the framework's, and
+        // the grading folder of every lab there is, whatever the course.
+        const std::filesystem::path framework = std::filesystem::path(RAYLAB_MESSAGES_DIR).parent_path();
+        std::vector<std::filesystem::path> files;
+        for (const auto& entry : std::filesystem::directory_iterator(RAYLAB_MESSAGES_DIR))
+            if (entry.path().extension() == ".toml") files.push_back(entry.path());
+        for (const auto& lab : std::filesystem::directory_iterator(framework / "grader" / "labs"))
+            for (const char* name : {"messages.en.toml", "messages.fr.toml"})
+                if (std::filesystem::exists(lab.path() / name)) files.push_back(lab.path() / name);
+        REQUIRE(files.size() > 2);
+        std::size_t messages = 0;
+        for (const std::filesystem::path& file : files) {
+            const toml::table table = toml::parse_file(file.string());
+            std::function<void(const toml::table&, const std::string&)> walk = [&](const toml::table& t,
+                                                                                  const std::string& prefix) {
+                for (const auto& [key, node] : t) {
+                    const std::string id = prefix + std::string(key.str());
+                    if (const toml::table* inner = node.as_table()) walk(*inner, id + ".");
+                    else if (const auto* text = node.as_string()) {
+                        ++messages;
+                        const std::string problem = placeholderProblem(text->get());
+                        CHECK_MESSAGE(problem.empty(), file.string() << ":" << node.source().begin.line << ": " << id
+                                                                     << ": " << problem);
+                    }
+                }
+            };
+            walk(table, "");
+        }
+        CHECK(messages > 200);
     }
 
     TEST_CASE("a word agrees with its number: 1 in English; 0 and 1 (any number below 2) in French") {

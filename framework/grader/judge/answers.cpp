@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <stdexcept>
 
 namespace raylab::grader {
 
@@ -52,9 +53,15 @@ bool accept(Ledger& ledger, Item& item, const protocol::Answer& answer, std::str
             violation = "the output of " + calls[k].probe->name + " has the wrong size";
             return false;
         }
-    Judge judge;
-    item.check->judge(values->outputs, judge);
-    ledger.resolveCheck(item, judge.passed(), judge.message());
+    // A check whose message is broken (a placeholder without a value: the course's mistake) costs
+    // that check alone, never the lab's other checks nor the other labs.
+    try {
+        Judge judge;
+        item.check->judge(values->outputs, judge);
+        ledger.resolveCheck(item, judge.passed(), judge.message());
+    } catch (const std::logic_error& e) {
+        ledger.resolveCheck(item, false, tr("grade.check_unjudged", {{"what", e.what()}}));
+    }
     return true;
 }
 

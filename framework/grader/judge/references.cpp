@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -114,9 +116,35 @@ ReferenceSet loadReferences(const fs::path& folder) {
     return set;
 }
 
+bool writePngIfChanged(const fs::path& path, const Image8& image) {
+    std::error_code error;
+    if (fs::is_regular_file(path, error)) {
+        try {
+            const Image8 old = readImage(path);
+            if (old.width == image.width && old.height == image.height && old.rgb == image.rgb) return false;
+        } catch (const std::exception&) {
+            // not a picture we can read: written anew
+        }
+    }
+    writePng(path, image);
+    return true;
+}
+
+namespace {
+
+// The same for a text file.
+void writeFileIfChanged(const fs::path& path, const std::string& text) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string old{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (!in.bad() && old == text) return;
+    writeFileAtomically(path, text);
+}
+
+} // namespace
+
 void writeReference(const fs::path& folder, const FigureReference& f) {
     fs::create_directories(folder);
-    writePng(folder / (f.id + ".png"), f.image);
+    writePngIfChanged(folder / (f.id + ".png"), f.image);
     toml::table t;
     t.insert("lab", f.lab);
     t.insert("kind", f.stats ? "statistical" : "deterministic");
@@ -138,13 +166,13 @@ void writeReference(const fs::path& folder, const FigureReference& f) {
             frac.rgb.push_back(std::uint8_t(std::min(255.f, std::round((m - w) * 256.f))));
             sd.rgb.push_back(std::uint8_t(std::min(255.f, std::round(s.sampleSd[k] * kSdScale))));
         }
-        writePng(folder / (f.id + ".mean.png"), whole);
-        writePng(folder / (f.id + ".meanfrac.png"), frac);
-        writePng(folder / (f.id + ".sd.png"), sd);
+        writePngIfChanged(folder / (f.id + ".mean.png"), whole);
+        writePngIfChanged(folder / (f.id + ".meanfrac.png"), frac);
+        writePngIfChanged(folder / (f.id + ".sd.png"), sd);
     }
     std::ostringstream out;
     out << "# Made by `raylab references` from solutions/; see docs/grading.md.\n" << t << "\n";
-    writeFileAtomically(folder / (f.id + ".toml"), out.str());
+    writeFileIfChanged(folder / (f.id + ".toml"), out.str());
 }
 
 } // namespace raylab::grader

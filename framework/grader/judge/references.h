@@ -49,7 +49,12 @@ struct ReferenceSet {
 // Reads every <id>.toml of the folder; throws std::runtime_error naming the file and the problem.
 ReferenceSet loadReferences(const std::filesystem::path& folder);
 
-// Writes one figure's reference files into the folder.
+// Writes one figure's reference files into the folder; a file whose content did not change is left
+// byte for byte (writePngIfChanged), so that a regeneration shows only what it changed.
 void writeReference(const std::filesystem::path& folder, const FigureReference& reference);
+
+// Writes the picture as a PNG unless the file already holds the same pixels (an encoder's other
+// choices are not a change); true when it wrote.
+bool writePngIfChanged(const std::filesystem::path& path, const Image8& image);
 
 } // namespace raylab::grader
