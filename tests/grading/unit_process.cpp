@@ -67,7 +67,7 @@ TEST_CASE("a program within its time limit ends as it would without one") {
 }
 
 TEST_CASE("kept output: a short output whole, nothing cut") {
-    const ProcessResult r = runProcess({"printf", "line 1\nline 2\n"}, {{}, {}, 0., 1 << 16});
+    const ProcessResult r = runProcess({"printf", "line 1\nline 2\n"}, {.keepOutput = 1 << 16});
     CHECK(r.succeeded());
     CHECK(r.kept.head == "line 1\nline 2\n");
     CHECK(r.kept.tail.empty());
@@ -75,7 +75,7 @@ TEST_CASE("kept output: a short output whole, nothing cut") {
 }
 
 TEST_CASE("kept output: a long output's first and last 64 KB, byte for byte, and the size of what was cut between") {
-    const ProcessResult r = runProcess({"seq", "1", "2000000"}, {{}, {}, 0., 1 << 16});
+    const ProcessResult r = runProcess({"seq", "1", "2000000"}, {.keepOutput = 1 << 16});
     REQUIRE(r.succeeded());
     std::string expected;
     for (int k = 1; k <= 2000000; ++k) expected += std::to_string(k) + "\n";
@@ -86,7 +86,7 @@ TEST_CASE("kept output: a long output's first and last 64 KB, byte for byte, and
 
 TEST_CASE("kept output: a gigabyte streamed through, never held: 128 KB kept, memory and disk untouched") {
     const long before = peakMemory();
-    const ProcessResult r = runProcess({"head", "-c", "1073741824", "/dev/zero"}, {{}, {}, 0., 1 << 16});
+    const ProcessResult r = runProcess({"head", "-c", "1073741824", "/dev/zero"}, {.keepOutput = 1 << 16});
     REQUIRE(r.succeeded());
     CHECK(r.kept.head == std::string(1 << 16, '\0'));
     CHECK(r.kept.tail == std::string(1 << 16, '\0'));
@@ -98,11 +98,11 @@ TEST_CASE("kept output: a gigabyte streamed through, never held: 128 KB kept, me
 TEST_CASE("kept output: a process left holding the pipe does not hold the wait, nor does a time limit fail to stop") {
     // sh starts a sleeper that inherits the pipe, says its pid and exits: its exit ends the wait.
     const auto start = std::chrono::steady_clock::now();
-    const ProcessResult left = runProcess({"sh", "-c", "sleep 600 & echo $!"}, {{}, {}, 0., 1 << 16});
+    const ProcessResult left = runProcess({"sh", "-c", "sleep 600 & echo $!"}, {.keepOutput = 1 << 16});
     CHECK(left.succeeded());
     REQUIRE(!left.kept.head.empty());
     kill(pid_t(std::stol(left.kept.head)), SIGKILL);
-    const ProcessResult slow = runProcess({"sleep", "600"}, {{}, {}, 0.5, 1 << 16});
+    const ProcessResult slow = runProcess({"sleep", "600"}, {.timeLimit = 0.5, .keepOutput = 1 << 16});
     CHECK(slow.signal == SIGKILL);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     CHECK(seconds < 60.); // far below the sleeps' 600 s: neither was waited for

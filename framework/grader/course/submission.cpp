@@ -240,7 +240,7 @@ std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>
 
 bool buildGradingKit(const Toolchain& tools, const fs::path& sourceDir, const fs::path& buildDir, const fs::path& log) {
     fs::create_directories(buildDir);
-    const ProcessOptions keep{{}, {}, 0., kLogKeptBytes};
+    const ProcessOptions keep{.keepOutput = kLogKeptBytes};
     const std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--config",
                                          "Release", "--target", "raylab-grading-kit", "-j", "2"};
     const ProcessResult configured = runProcess(configureCommand(tools, sourceDir, buildDir, "", LabCatalog{}), keep);
@@ -267,7 +267,7 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
                                    "--target", "raylab-submission-agents", "-j", "2"};
     if (tools.generator.find("Ninja") != std::string::npos) build.insert(build.end(), {"--", "-k", "0"});
     else if (tools.generator.find("Makefiles") != std::string::npos) build.insert(build.end(), {"--", "-k"});
-    const ProcessOptions keep{{}, {}, 0., kLogKeptBytes};
+    const ProcessOptions keep{.keepOutput = kLogKeptBytes};
     const ProcessResult configured = runProcess(configure, keep);
     if (!configured.succeeded()) {
         writeFileAtomically(b.log, logText(configured.kept) + configured.error);
