@@ -552,7 +552,8 @@ bool isDiskFull(const std::exception& e) {
     if (const auto* write = dynamic_cast<const WriteError*>(&e)) code = write->code();
     else if (const auto* system = dynamic_cast<const std::system_error*>(&e)) code = system->code();
 #ifdef EDQUOT
-    if (code.value() == EDQUOT && (code.category() == std::generic_category() || code.category() == std::system_category())) return true;
+    const bool system = code.category() == std::generic_category() || code.category() == std::system_category();
+    if (system && code.value() == EDQUOT) return true;
 #endif
     return code == std::errc::no_space_on_device;
 }

@@ -55,8 +55,8 @@ struct ClassRunOptions {
 };
 
 // Grades every student of the class not graded yet. Returns the exit status: 0; 1 when OUT is held
-// by another run, a student's grading did not finish, or a disk was full (the run stopped there); 128 + the signal when interrupted
-// (130 for SIGINT, 143 for SIGTERM).
+// by another run, a student's grading did not finish, or a disk was full (the run stopped there);
+// 128 + the signal when interrupted (130 for SIGINT, 143 for SIGTERM).
 int runClass(const ClassRunOptions& options, const GradeStudent& grade);
 
 // Whether `e` says a disk is full (ENOSPC, or EDQUOT: a quota): a WriteError or a file system error.

@@ -142,7 +142,8 @@ std::string buildProblem(const KeptOutput& output) {
     for (std::string line; std::getline(in, line);) {
         if (const std::string refusal = guardRefusal(line); !refusal.empty()) {
             // A compiler stopped by its limits: a cause; a file read outside: the code's error.
-            const bool limit = line.rfind("raylab-build-guard: time: ", 0) == 0 || line.rfind("raylab-build-guard: killed: ", 0) == 0;
+            const bool limit =
+                line.rfind("raylab-build-guard: time: ", 0) == 0 || line.rfind("raylab-build-guard: killed: ", 0) == 0;
             if (limit) {
                 sayOnce(causes, refusal);
                 continue;
@@ -156,14 +157,17 @@ std::string buildProblem(const KeptOutput& output) {
             sayOnce(causes, tr(sign->cause, {{"limit", megabytes(kCompilerFileBytes)}}));
             continue;
         }
-        const bool error = !buildToolLine(line) && (line.find("error") != std::string::npos || line.find("Error") != std::string::npos);
+        const bool error =
+            !buildToolLine(line) && (line.find("error") != std::string::npos || line.find("Error") != std::string::npos);
         if (error && count < 40 && said.count(line) == 0) { // once each
             sayOnce(errors, line);
             ++count;
         }
     }
-    if (output.cut > 0) causes += tr("build.output_was_cut", {{"kept", tr("number.kilobytes", {{"count", std::to_string(2 * (kLogKeptBytes >> 10))}})},
-                                                            {"bytes", grouped(output.cut)}}) + "\n";
+    if (output.cut > 0) {
+        const std::string kept = tr("number.kilobytes", {{"count", std::to_string(2 * (kLogKeptBytes >> 10))}});
+        causes += tr("build.output_was_cut", {{"kept", kept}, {"bytes", grouped(output.cut)}}) + "\n";
+    }
     if (!causes.empty() || !errors.empty()) return causes + errors;
     if (all.size() > 3000) all.erase(0, all.size() - 3000).insert(0, "...");
     return all;
@@ -179,8 +183,10 @@ bool usableProgram(const fs::path& program, SubmissionBuild& b) {
     if (error) return false;
     if (size <= kAgentProgramBytes) return true;
     fs::remove(program, error);
-    b.compilerMessage.insert(0, tr("build.program_too_big", {{"program", program.filename().string()}, {"size", megabytes(size)},
-                                                             {"limit", megabytes(kAgentProgramBytes)}}) + "\n");
+    const std::string refused = tr("build.program_too_big", {{"program", program.filename().string()},
+                                                             {"size", megabytes(size)},
+                                                             {"limit", megabytes(kAgentProgramBytes)}});
+    b.compilerMessage.insert(0, refused + "\n");
     return false;
 }
 
@@ -192,7 +198,8 @@ void requireRoom(const KeptOutput& output, const fs::path& buildDir) {
     std::error_code error;
     const fs::space_info space = fs::space(buildDir, error);
     if (!error && space.available >= kCompilerFileBytes) return;
-    throw fs::filesystem_error("the build stopped on a full disk", buildDir, std::make_error_code(std::errc::no_space_on_device));
+    throw fs::filesystem_error("the build stopped on a full disk", buildDir,
+                               std::make_error_code(std::errc::no_space_on_device));
 }
 
 // The agent of one lab, built with the other labs from the reference (framework/grader/CMakeLists.txt).

@@ -40,10 +40,11 @@ std::vector<AgentPlan> findAgents(const std::filesystem::path& binDir, const std
 
 // Configures (once) and builds the agents of the submission's copy `labs` in `buildDir`, keeping
 // going past errors so that the labs that compile are still graded: a lab that does not compile costs
-// that lab and, without solutions/, the labs that use it (`course`: the labs and their `uses`). The build's
-// output, its first and last 64 KB, is written to `log` (empty: buildDir/build.log) when it ends. A
-// build that failed on a full disk throws std::filesystem_error (ENOSPC) rather than blame the code. A build folder may serve many submissions (a
-// class): each copy's objects are its own (CMake's targets are named after the copy's folder).
+// that lab and, without solutions/, the labs that use it (`course`: the labs and their `uses`). The
+// build's output, its first and last 64 KB, is written to `log` (empty: buildDir/build.log) when it
+// ends. A build that failed on a full disk throws std::filesystem_error (ENOSPC) rather than blame the
+// code. A build folder may serve many submissions (a class): each copy's objects are its own (CMake's
+// targets are named after the copy's folder).
 SubmissionBuild buildSubmission(const Toolchain& tools, const std::filesystem::path& sourceDir,
                                 const std::filesystem::path& labs, const std::filesystem::path& buildDir,
                                 const LabCatalog& course, const std::filesystem::path& log = {});

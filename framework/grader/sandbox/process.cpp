@@ -209,7 +209,9 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOpti
     OutputKeeper keeper(options.keepOutput);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(options.timeLimit);
     // Without a pipe to read, one wait; with one, short waits between its reads.
-    const DWORD step = kept != INVALID_HANDLE_VALUE ? 50 : options.timeLimit > 0. ? DWORD(options.timeLimit * 1000.) : INFINITE;
+    const DWORD step = kept != INVALID_HANDLE_VALUE ? 50
+                       : options.timeLimit > 0.      ? DWORD(options.timeLimit * 1000.)
+                                                     : INFINITE;
     for (;;) {
         if (kept != INVALID_HANDLE_VALUE) readAvailable(kept, keeper, kDrainBytes);
         if (WaitForSingleObject(process.hProcess, step) != WAIT_TIMEOUT) break;
