@@ -1,6 +1,8 @@
 // Bad submissions get the grade they earned, with a clear reason, and the run goes on.
 #include "grading_support.h"
 
+#include "grader/sandbox/cgroup.h"
+
 #include <fstream>
 
 using namespace raylab::test;
@@ -31,6 +33,30 @@ void expectFigure(const GradeResult& r, const std::string& id, bool passed, cons
 // Run twice by ctest: as this machine confines (bubblewrap when it can start), and with
 // RAYLAB_SANDBOX=fallback (an unprivileged user when root). `bubblewrap` false: --no-sandbox.
 bool confined(const GradeSetup& setup) { return sandboxKind(setup.limits) != "process group"; }
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// Lab 1 lost points, every item it lost says `says`, and the other labs have all of theirs.
+void expectOnlyLab1Lost(const GradeResult& r, const std::string& says) {
+    for (const LabOutcome& lab : r.labs) {
+        CAPTURE(lab.lab);
+        if (lab.lab == 1) CHECK_MESSAGE(lab.points < lab.maxPoints, failures(r));
+        else CHECK_MESSAGE(lab.points == lab.maxPoints, failures(r));
+    }
+    for (const CheckOutcome& c : r.checks)
+        if (c.lab == 1 && !c.passed) CHECK_MESSAGE(contains(c.message, says), c.name << ": " << c.message);
+    for (const FigureOutcome& f : r.figures)
+        if (f.lab == 1 && !f.passed) CHECK_MESSAGE(contains(f.reason, says), f.id << ": " << f.reason);
+}
+
+// Whether one of lab 1's items says `says`.
+bool lab1Says(const GradeResult& r, const std::string& says) {
+    for (const CheckOutcome& c : r.checks)
+        if (c.lab == 1 && contains(c.message, says)) return true;
+    for (const FigureOutcome& f : r.figures)
+        if (f.lab == 1 && contains(f.reason, says)) return true;
+    return false;
+}
 
 } // namespace
 
@@ -136,6 +162,70 @@ TEST_CASE("a stderr.txt replaced with a link to a file of the grader's: that run
         expectFigure(r, "lab3_cosine", false);
         CHECK(failures(r).find("the grader's own file") == std::string::npos);
         CHECK(r.labs[2].points == 0.);
+    }
+}
+
+// One student bounded as a whole (docs/grading.md, "Time budgets" and "Limits on a student"): small
+// limits here, so that each case ends in seconds; every case ends, and names the limit it hit.
+
+TEST_CASE("answers each just under the item's limit spend the lab's time budget: the rest of lab 1 is not run, the other labs are graded") {
+    GradeSetup setup = courseSetup();
+    setup.limits.wallSeconds = 3.; // the staller sleeps 2.5 s a call
+    setup.budget = {0., 8.};       // 8 s a lab
+    const GradeResult r = gradeAgent(setup, "raylab-bad-stalls");
+    CHECK_MESSAGE(lab1Says(r, "lab 1 used its 8 s"), failures(r));
+    for (const LabOutcome& lab : r.labs)
+        if (lab.lab != 1) CHECK_MESSAGE(lab.points == lab.maxPoints, lab.lab << failures(r));
+}
+
+TEST_CASE("a SIGSTOP uses no CPU but spends wall-clock time: lab 1 ends at its budget, not at the item's limit") {
+    GradeSetup setup = courseSetup();
+    setup.limits.wallSeconds = 600.; // what would hold the grader if stopped time did not count
+    setup.budget = {0., 4.};
+    const GradeResult r = gradeAgent(setup, "raylab-bad-stops_itself");
+    CHECK_MESSAGE(lab1Says(r, "lab 1 used its 4 s"), failures(r));
+    const LabOutcome& lab1 = r.labs.front();
+    CHECK(lab1.points == 0.);
+    for (const LabOutcome& lab : r.labs)
+        if (lab.lab != 1) CHECK_MESSAGE(lab.points == lab.maxPoints, lab.lab << failures(r));
+}
+
+TEST_CASE("a fork bomb is stopped at the process limit of all its processes together, and named") {
+    GradeSetup setup = courseSetup();
+    setup.limits.processes = 64;
+    if (!raylab::grader::detail::RunCgroup(setup.limits.processes, setup.limits.memoryBytes).active()) {
+        MESSAGE("skipped: no cgroup here (not root, or none delegated), nothing would bound a fork bomb");
+        return;
+    }
+    const GradeResult r = gradeAgent(setup, "raylab-bad-forks");
+    expectCheck(r, "computeNormal: unit and pointing outwards", false, "too many processes (more than 64");
+    expectFigure(r, "lab3_cosine", false, "too many processes");
+    CHECK(r.labs[0].points == r.labs[0].maxPoints);
+    CHECK(r.labs[1].points == r.labs[1].maxPoints);
+}
+
+TEST_CASE("two children that hold 600 MB each, under a limit of 1 GB a process, are stopped at the limit of all its processes") {
+    GradeSetup setup = courseSetup();
+    setup.limits.memoryBytes = 1ull << 30;
+    if (!raylab::grader::detail::RunCgroup(setup.limits.processes, setup.limits.memoryBytes).active()) {
+        MESSAGE("skipped: no cgroup here (not root, or none delegated), memory is limited per process only");
+        return;
+    }
+    const GradeResult r = gradeAgent(setup, "raylab-bad-holds_memory");
+    expectOnlyLab1Lost(r, "used more than 1 GB of memory");
+}
+
+TEST_CASE("filling its working folder, or /tmp, is stopped at the disk limit, and named") {
+    for (const std::string id : {"fills_scratch", "fills_tmp"}) {
+        CAPTURE(id);
+        GradeSetup setup = courseSetup();
+        if (id == "fills_tmp" && !confined(setup)) { // the process group has the machine's /tmp
+            MESSAGE("skipped: not confined here, /tmp is the machine's");
+            continue;
+        }
+        setup.limits.diskBytes = 32ull << 20;
+        const GradeResult r = gradeAgent(setup, "raylab-bad-" + id);
+        expectOnlyLab1Lost(r, "wrote more than 32 MB");
     }
 }
 

@@ -10,6 +10,7 @@
 #include <doctest/doctest.h>
 
 #include <chrono>
+#include <ctime>
 #include <fstream>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -188,6 +189,24 @@ TEST_CASE("a compiler that runs past the wall-clock limit is stopped with its pr
     CHECK(run.status == 1);
     CHECK_MESSAGE(run.output.find("raylab-build-guard: time: sleep") != std::string::npos, run.output);
     CHECK(seconds < 30.); // far below the sleep's 60 s: it was killed, not waited for
+}
+
+TEST_CASE("the build's deadline: past it a file is not compiled, before it it stops a compile that would outlast it") {
+    const Folders f;
+    const fs::path output = f.root / "output.txt";
+    const auto guard = [&](long long deadlineFromNow) {
+        fs::remove(output);
+        const std::string deadline = std::to_string(static_cast<long long>(std::time(nullptr)) + deadlineFromNow);
+        // A stand-in "compiler" that never ends: sleep, under the file's own limit of 300 s.
+        const raylab::grader::ProcessResult r = raylab::grader::runProcess({(fs::path(RAYLAB_GRADING_BIN) / "raylab-build-guard").string(), "--", "sleep", "60"},
+                                           {{}, output, 0., {"RAYLAB_BUILD_DEADLINE=" + deadline}});
+        CHECK(r.exitCode == 1);
+        return readFile(output);
+    };
+    const std::string spent = guard(-1);
+    CHECK_MESSAGE(spent.find("raylab-build-guard: build-time: sleep") != std::string::npos, spent);
+    const std::string stopped = guard(1);
+    CHECK_MESSAGE(stopped.find("raylab-build-guard: build-time: sleep") != std::string::npos, stopped);
 }
 
 } // TEST_SUITE

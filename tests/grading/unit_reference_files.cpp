@@ -2,6 +2,7 @@
 // figure's reference description are read strictly, every problem naming the file, the line and the key.
 #include "grader/judge/diagnosis.h"
 #include "grader/judge/references.h"
+#include "grader/judge/time_budget.h"
 
 #include <doctest/doctest.h>
 
@@ -9,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <tuple>
 
 using namespace raylab;
 using namespace raylab::grader;
@@ -67,6 +69,7 @@ FigureReference statistical() {
     f.stats->sampleSd.assign(kImage.rgb.size(), 16.f);
     f.stats->worstCorrectRmse = 4.;
     f.stats->rmseLimit = 5.;
+    f.renderSeconds = 1.5; // written as 1500 ms
     return f;
 }
 
@@ -126,6 +129,20 @@ TEST_CASE("a reference's description: what `raylab references` writes is read ba
     CHECK(f.stats->samples == 16);
     CHECK(f.stats->rmseLimit == 5.);
     CHECK(f.stats->worstCorrectRmse == 4.);
+    CHECK(f.renderSeconds == 1.5);
+}
+
+TEST_CASE("a lab's time budget: the factor times the reference's time on its figures, never under the floor") {
+    ReferenceSet set;
+    for (const auto& [id, lab, seconds] : {std::tuple{"a", 2, 0.5}, {"b", 2, 1.}, {"c", 3, 0.01}}) {
+        FigureReference f{id, lab, kImage, {}, {}};
+        f.renderSeconds = seconds;
+        set.figures.push_back(f);
+    }
+    const TimeBudget budget{20., 5.};
+    CHECK(labBudgetSeconds(set, 2, budget) == 30.); // 20 x (0.5 + 1)
+    CHECK(labBudgetSeconds(set, 3, budget) == 5.);  // 20 x 0.01, below the floor
+    CHECK(labBudgetSeconds(set, 4, budget) == 5.);  // no figure: checks only
 }
 
 TEST_CASE("a reference's description: an unknown key, a wrong type or a NaN names the file, line and key") {
@@ -148,7 +165,7 @@ TEST_CASE("a reference's description: an unknown key, a wrong type or a NaN name
     };
     CHECK(error(written + "colour = 1\n") ==
           "fig.toml:" + std::to_string(std::count(written.begin(), written.end(), '\n') + 1) +
-              ": colour: unknown key (known keys: lab, kind, ambiguous, samples, rmse_limit, worst_correct_rmse, "
+              ": colour: unknown key (known keys: lab, kind, render_milliseconds, ambiguous, samples, rmse_limit, worst_correct_rmse, "
               "bias_lsb, outlier_z)");
     struct Case {
         std::string from, to, key, problem; // `from` replaced by `to`: the error at the line of `key`

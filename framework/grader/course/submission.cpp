@@ -7,6 +7,7 @@
 #include "src/text.h"
 
 #include <algorithm>
+#include <ctime>
 #include <functional>
 #include <iomanip>
 #include <set>
@@ -18,6 +19,10 @@ namespace raylab::grader {
 namespace fs = std::filesystem;
 
 namespace {
+
+// A submission's whole build, every lab file together (the build guard stops a compile past it): far
+// beyond an honest one (seconds), a bound on one that makes each file expand to the compiler's limits.
+constexpr long long kBuildSeconds = 180;
 
 // What a CMake cache value or list item cannot hold as it is.
 constexpr const char* kCmakeUnsafe = "\n\r;\"\\$#[]";
@@ -103,6 +108,8 @@ std::string guardRefusal(const std::string& line) {
     if (why == "outside") return tr("build.guard_outside", {{"source", source}, {"file", read}});
     if (why == "time") return tr("build.guard_time", {{"source", source}});
     if (why == "killed") return tr("build.guard_killed", {{"source", source}});
+    if (why == "build-time")
+        return tr("build.guard_build_time", {{"source", source}, {"seconds", std::to_string(kBuildSeconds)}});
     return tr("build.guard_unchecked", {{"source", source}});
 }
 
@@ -142,8 +149,9 @@ std::string buildProblem(const KeptOutput& output) {
     for (std::string line; std::getline(in, line);) {
         if (const std::string refusal = guardRefusal(line); !refusal.empty()) {
             // A compiler stopped by its limits: a cause; a file read outside: the code's error.
-            const bool limit =
-                line.rfind("raylab-build-guard: time: ", 0) == 0 || line.rfind("raylab-build-guard: killed: ", 0) == 0;
+            const bool limit = line.rfind("raylab-build-guard: time: ", 0) == 0 ||
+                               line.rfind("raylab-build-guard: build-time: ", 0) == 0 ||
+                               line.rfind("raylab-build-guard: killed: ", 0) == 0;
             if (limit) {
                 sayOnce(causes, refusal);
                 continue;
@@ -232,6 +240,12 @@ std::vector<std::string> configureCommand(const Toolchain& tools, const fs::path
     return configure;
 }
 
+// `cmake --build` of one target, in Release (a multi-configuration generator, Visual Studio, would
+// build Debug otherwise), on 2 cores.
+std::vector<std::string> buildCommand(const Toolchain& tools, const fs::path& buildDir, const std::string& target) {
+    return {tools.cmake, "--build", fs::absolute(buildDir).string(), "--config", "Release", "--target", target, "-j", "2"};
+}
+
 } // namespace
 
 std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>& labs, bool& isolated) {
@@ -248,10 +262,9 @@ std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>
 bool buildGradingKit(const Toolchain& tools, const fs::path& sourceDir, const fs::path& buildDir, const fs::path& log) {
     fs::create_directories(buildDir);
     const ProcessOptions keep{.keepOutput = kLogKeptBytes};
-    const std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--config",
-                                         "Release", "--target", "raylab-grading-kit", "-j", "2"};
     const ProcessResult configured = runProcess(configureCommand(tools, sourceDir, buildDir, "", LabCatalog{}), keep);
-    const ProcessResult built = configured.succeeded() ? runProcess(build, keep) : ProcessResult{};
+    const ProcessResult built =
+        configured.succeeded() ? runProcess(buildCommand(tools, buildDir, "raylab-grading-kit"), keep) : ProcessResult{};
     writeFileAtomically(log, logText(configured.kept) + configured.error + logText(built.kept));
     return built.succeeded();
 }
@@ -269,9 +282,7 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     for (int lab : numbers) fs::remove(labAgent(bin, lab), error);
     const std::vector<std::string> configure =
         configureCommand(tools, sourceDir, buildDir, cmakeSafe(labs, buildDir).generic_string(), course);
-    // --config: a multi-configuration generator (Visual Studio) would build Debug otherwise.
-    std::vector<std::string> build{tools.cmake, "--build", fs::absolute(buildDir).string(), "--config", "Release",
-                                   "--target", "raylab-submission-agents", "-j", "2"};
+    std::vector<std::string> build = buildCommand(tools, buildDir, "raylab-submission-agents");
     if (tools.generator.find("Ninja") != std::string::npos) build.insert(build.end(), {"--", "-k", "0"});
     else if (tools.generator.find("Makefiles") != std::string::npos) build.insert(build.end(), {"--", "-k"});
     const ProcessOptions keep{.keepOutput = kLogKeptBytes};
@@ -283,8 +294,13 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
         b.brokenLabs = numbers;
         return b;
     }
-    const ProcessResult built = runProcess(build, keep);
-    writeFileAtomically(b.log, logText(configured.kept) + logText(built.kept) + built.error);
+    // What no student changes first (nothing to do in a class, whose kit is built), so that the
+    // build's deadline is the student's files' alone; a failure there shows in the build below.
+    const ProcessResult kit = runProcess(buildCommand(tools, buildDir, "raylab-grading-kit"), keep);
+    ProcessOptions toBuild = keep;
+    toBuild.environment = {"RAYLAB_BUILD_DEADLINE=" + std::to_string(std::time(nullptr) + kBuildSeconds)};
+    const ProcessResult built = runProcess(build, toBuild);
+    writeFileAtomically(b.log, logText(configured.kept) + logText(kit.kept) + logText(built.kept) + built.error);
     if (!built.succeeded()) {
         requireRoom(built.kept, buildDir);
         b.compilerMessage = built.started ? buildProblem(built.kept) : built.error;

@@ -3,6 +3,8 @@
 #include "src/messages.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <random>
 
 namespace raylab::grader {
@@ -38,8 +40,12 @@ protocol::Request requestFor(const GradeSetup& setup, const Item& item) {
                                    setup.threads};
 }
 
-// The items still unresolved, sent to the next run in this order, and their requests.
+int labOf(const Item& item) { return item.check ? item.check->lab : item.figure->lab; }
+
+// The items of one lab still unresolved (the lab of the first of them), sent to the next run in this
+// order, and their requests: each run spends one lab's time only.
 struct Batch {
+    int lab = 0;
     std::vector<Item*> sent;
     std::string requests; // one line each
 };
@@ -47,36 +53,38 @@ struct Batch {
 Batch unresolvedBatch(const GradeSetup& setup, std::vector<Item>& items) {
     Batch batch;
     for (Item& item : items)
-        if (!item.resolved) {
+        if (!item.resolved && (batch.sent.empty() || labOf(item) == batch.lab)) {
+            batch.lab = labOf(item);
             batch.sent.push_back(&item);
             batch.requests += protocol::serialize(requestFor(setup, item)) + "\n";
         }
     return batch;
 }
 
-// Judges one run's answers and fails what they leave open. Returns whether another run is worth
-// it: not after an attack on the grader, nor when the agent never started (it would do the same).
-bool settleRun(const AgentPlan& plan, const AgentRun& run, const Batch& batch, const std::map<std::uint64_t, Item*>& items,
-               Ledger& ledger, Reported& reported) {
+// Judges one run's answers and fails what they leave open. Returns why no other run is worth it,
+// for every item still open: an attack on the grader, or an agent that never started (it would do
+// the same); empty when the next run may go on.
+std::string settleRun(const AgentPlan& plan, const AgentRun& run, const Batch& batch,
+                      const std::map<std::uint64_t, Item*>& items, Ledger& ledger, Reported& reported) {
     const std::string program = plan.program.filename().string();
     if (!run.violations.empty()) { // a run that attacked the grader earns nothing
-        for (Item* item : batch.sent) ledger.fail(*item, tr("sandbox.attacked", {{"what", run.violations.front()}}));
+        const std::string why = tr("sandbox.attacked", {{"what", run.violations.front()}});
+        for (Item* item : batch.sent) ledger.fail(*item, why);
         for (const std::string& v : run.violations) reported.problems.push_back(program + " " + v);
-        return false;
+        return why;
     }
     const bool hello = readRun(run.lines, batch.sent, items, ledger);
     const auto unanswered = std::find_if(batch.sent.begin(), batch.sent.end(), [](const Item* i) { return !i->resolved; });
-    if (unanswered == batch.sent.end()) return true;
+    if (unanswered == batch.sent.end()) return "";
     const std::string why = run.describe();
     const std::string errors = run.stderrTail.empty() ? "" : tr("grade.error_output", {{"tail", run.stderrTail}});
     if (!hello) {
         reported.problems.push_back(tr("grade.agent_silent", {{"program", program}, {"why", why}}) + errors);
-        for (Item* item : batch.sent) ledger.fail(*item, tr("grade.never_started", {{"program", program}, {"why", why}}));
-        return false;
+        return tr("grade.never_started", {{"program", program}, {"why", why}});
     }
     // The run stopped on the first item it left unanswered; the next run starts after it.
     ledger.fail(**unanswered, tr((*unanswered)->check ? "grade.check_stopped" : "grade.figure_stopped", {{"why", why}}) + errors);
-    return true;
+    return "";
 }
 
 } // namespace
@@ -92,12 +100,30 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan, bool withC
     std::vector<Item> items = itemsOf(plan, checks, setup.references);
     const std::map<std::uint64_t, Item*> index = byId(items);
     Ledger ledger(reported);
+    // Each lab's wall-clock time over every run of it: an agent that sleeps, stops or answers slowly spends it too.
+    std::map<int, double> spent;
     for (int attempt = 0;; ++attempt) {
         const Batch batch = unresolvedBatch(setup, items);
         if (batch.sent.empty()) return reported;
+        const double budget = labBudgetSeconds(setup.references, batch.lab, setup.budget);
+        if (spent[batch.lab] >= budget) {
+            const std::string why = tr("grade.lab_budget_spent", {{"lab", std::to_string(batch.lab)},
+                                                                  {"seconds", std::to_string(std::lround(budget))}});
+            reported.problems.push_back(why);
+            for (Item* item : batch.sent) ledger.fail(*item, why);
+            continue;
+        }
+        SandboxLimits limits = setup.limits;
+        limits.totalSeconds = std::min(limits.totalSeconds, budget - spent[batch.lab]);
+        const auto start = std::chrono::steady_clock::now();
         const AgentRun run = runAgent(
-            {plan.program, {}, scratch / ("run" + std::to_string(attempt)), {setup.scenes}, {}, batch.requests}, setup.limits);
-        if (!settleRun(plan, run, batch, index, ledger, reported)) return reported;
+            {plan.program, {}, scratch / ("run" + std::to_string(attempt)), {setup.scenes}, {}, batch.requests}, limits);
+        spent[batch.lab] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (const std::string why = settleRun(plan, run, batch, index, ledger, reported); !why.empty()) {
+            for (Item& item : items)
+                if (!item.resolved) ledger.fail(item, why);
+            return reported;
+        }
     }
 }
 

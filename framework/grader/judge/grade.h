@@ -10,6 +10,7 @@
 #include "grader/judge/outcome.h"
 #include "grader/lab_catalog.h"
 #include "grader/judge/references.h"
+#include "grader/judge/time_budget.h"
 #include "grader/sandbox/sandbox.h"
 
 #include <filesystem>
@@ -27,6 +28,7 @@ struct GradeSetup {
     std::filesystem::path scenes;  // the figure scene files, for the agents
     std::filesystem::path scratch; // a folder of our own: agents run and write here
     SandboxLimits limits;
+    TimeBudget budget; // each lab's wall-clock time in all (limits.wallSeconds stays each item's)
     int threads = 0;
     long long seed = -1; // >= 0: the agents render with this seed instead of the scenes' own
 };

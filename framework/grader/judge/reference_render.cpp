@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -128,8 +129,10 @@ StatisticalMargins measureRmseLimit(const SceneDescription& d, FigureReference& 
 bool isStatistical(const SceneDescription& d) { return d.samples > 1 && d.sampler != SamplerKind::Center; }
 
 RenderedReference renderReference(const SceneDescription& d, int lab, int threads) {
+    const auto start = std::chrono::steady_clock::now();
     RenderedReference rendered{FigureReference{d.id, lab, renderImage8(d, threads), {}, {}}, {}};
     FigureReference& f = rendered.reference;
+    f.renderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (isStatistical(d)) {
         f.stats = convergedStatistics(d, threads);
         rendered.margins = measureRmseLimit(d, f, threads);

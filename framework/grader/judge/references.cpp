@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -79,11 +80,12 @@ std::vector<std::pair<int, int>> readAmbiguous(const TomlReader& r, const toml::
 FigureReference readReference(const fs::path& folder, const fs::path& file) {
     const toml::table t = parseTomlFile(file);
     const TomlReader r(file);
-    r.onlyKeys(t, "", {"lab", "kind", "ambiguous", "samples", "rmse_limit", "worst_correct_rmse", "bias_lsb", "outlier_z"});
+    r.onlyKeys(t, "", {"lab", "kind", "render_milliseconds", "ambiguous", "samples", "rmse_limit", "worst_correct_rmse", "bias_lsb", "outlier_z"});
     FigureReference f;
     f.id = file.stem().string();
     f.lab = int(r.requiredInteger(t, "", "lab", 1, std::numeric_limits<int>::max()));
     f.image = readImage(folder / (f.id + ".png"));
+    f.renderSeconds = double(r.integer(t, "", "render_milliseconds", 0, std::numeric_limits<int>::max()).value_or(0)) / 1000.;
     f.ambiguous = readAmbiguous(r, t, f.image);
     const std::string kind = r.string(t, "", "kind").value_or("deterministic");
     if (kind == "statistical") {
@@ -148,6 +150,8 @@ void writeReference(const fs::path& folder, const FigureReference& f) {
     toml::table t;
     t.insert("lab", f.lab);
     t.insert("kind", f.stats ? "statistical" : "deterministic");
+    // Rounded up to a tenth of a second: a regeneration rarely changes it (the budget's floor is 20 s).
+    t.insert("render_milliseconds", std::int64_t(std::ceil(f.renderSeconds * 10.)) * 100);
     toml::array ambiguous;
     for (const auto& [i, j] : f.ambiguous) ambiguous.push_back(toml::array{i, j});
     t.insert("ambiguous", ambiguous);

@@ -3,7 +3,9 @@
 // `raylab references` from solutions/, so grading never needs solutions/.
 //
 //   <id>.png   the reference picture (8-bit, as the student's)
-//   <id>.toml  its lab, its kind and, for a deterministic figure, the pixels whose value is
+//   <id>.toml  its lab, its kind, the time the reference took to render it (render_milliseconds,
+//              rounded up to 100 ms: a lab's time budget is made from it, time_budget.h) and, for a
+//              deterministic figure, the pixels whose value is
 //              ambiguous at float precision; for a random figure, the statistical thresholds
 //   <id>.mean.png, <id>.meanfrac.png, <id>.sd.png   a random figure's converged per-pixel mean
 //              (integer part, fraction x 256) and the standard deviation of one sample (x 3), in LSB
@@ -37,6 +39,7 @@ struct FigureReference {
     Image8 image;
     std::vector<std::pair<int, int>> ambiguous; // (i, j) of pixels not held to 1 LSB
     std::optional<StatisticalReference> stats;  // set for random figures
+    double renderSeconds = 0.; // the reference's wall-clock time for one render (0: not recorded)
 };
 
 struct ReferenceSet {

@@ -45,10 +45,12 @@ fs::path bubblewrap() {
     return probe.works ? probe.program : fs::path();
 }
 
-std::vector<std::string> bubblewrapSystem(const fs::path& bwrap) {
+std::vector<std::string> bubblewrapSystem(const fs::path& bwrap, const fs::path& tmp) {
     std::vector<std::string> args{bwrap.string()};
     args.insert(args.end(), std::begin(kBubblewrapIsolation), std::end(kBubblewrapIsolation));
-    args.insert(args.end(), {"--ro-bind", "/usr", "/usr", "--dev", "/dev", "--tmpfs", "/tmp"});
+    args.insert(args.end(), {"--ro-bind", "/usr", "/usr", "--dev", "/dev"});
+    if (tmp.empty()) args.insert(args.end(), {"--tmpfs", "/tmp"});
+    else args.insert(args.end(), {"--bind", tmp.string(), "/tmp"});
     // /lib, /bin ... are links into /usr on merged systems, folders elsewhere.
     for (const char* top : {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
         std::error_code error;
@@ -61,8 +63,10 @@ std::vector<std::string> bubblewrapSystem(const fs::path& bwrap) {
     return args;
 }
 
+fs::path agentTmp(const fs::path& scratch) { return scratch / "tmp"; }
+
 std::vector<std::string> bubblewrapArgs(const fs::path& bwrap, const AgentCommand& c) {
-    std::vector<std::string> args = bubblewrapSystem(bwrap);
+    std::vector<std::string> args = bubblewrapSystem(bwrap, agentTmp(c.scratch));
     args.insert(args.end(), {"--proc", "/proc"});
     addBind(args, "--bind", c.scratch);
     for (const fs::path& folder : c.writable) addBind(args, "--bind", folder);

@@ -13,13 +13,16 @@
 //    not in it: only the sandbox stops that);
 //  - `#include "/dev/zero"` or a template that never ends would stall a class run: the compiler runs
 //    under CPU, memory and file-size limits and a wall-clock limit, in a process group of its own
-//    that is killed whole.
+//    that is killed whole; and within the whole build's time, when the grader gives it
+//    (RAYLAB_BUILD_DEADLINE in the environment: seconds since the epoch), so that a constexpr bomb in
+//    each lab file costs one build's time, not each file's.
 // Usage: raylab-build-guard [--allow DIR]... [--wall-seconds N] -- COMPILER ARGS...
 // A refusal is one line `raylab-build-guard: <why>: <source>[ <- <file read>]` on stderr, <why> one of `outside`,
-// `time` (past the CPU or wall-clock limit), `killed` (by a signal from elsewhere: out of memory),
-// `no-depfile` (the grader says it in the student's language, grader/submission.cpp), and exit
-// status 1, with the object file removed; so is the object of a compile that failed (one stopped at
-// the file size limit, kCompilerFileBytes, would stay in a build folder a class shares).
+// `time` (past the CPU or wall-clock limit), `build-time` (the build's deadline passed), `killed` (by a
+// signal from elsewhere: out of memory), `no-depfile` (the grader says it in the student's language,
+// grader/submission.cpp), and exit status 1, with the object file removed; so is the object of a
+// compile that failed (one stopped at the file size limit, kCompilerFileBytes, would stay in a build
+// folder a class shares).
 #include "grader/sandbox/build_limits.h"
 #include "grader/sandbox/confined_compile.h"
 #include "grader/sandbox/sandbox_internal.h"
@@ -32,6 +35,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -228,11 +232,21 @@ int main(int argc, char** argv) {
         setenv("CCACHE_DISABLE", "1", 1);
         setenv("CCACHE_DIR", "/nonexistent", 1); // its configuration is root's too
     }
-    int status = compile(confined ? confined->command() : command->compiler, command->wallSeconds, user);
+    // The build's deadline, when it comes before this file's own limit.
+    unsigned wallSeconds = command->wallSeconds;
+    bool deadlineFirst = false;
+    if (const char* deadline = std::getenv("RAYLAB_BUILD_DEADLINE")) {
+        const long long left = std::atoll(deadline) - static_cast<long long>(std::time(nullptr));
+        if (left <= 0) return refuse("build-time", source, command->object);
+        deadlineFirst = left < static_cast<long long>(wallSeconds);
+        if (deadlineFirst) wallSeconds = unsigned(left);
+    }
+    int status = compile(confined ? confined->command() : command->compiler, wallSeconds, user);
     // bwrap passes a signal on as 128 + its number
     if (!bwrap.empty() && status == 128 + SIGXCPU) status = kPastTimeLimit;
     if (!bwrap.empty() && status == 128 + SIGKILL) status = g_timedOut ? kPastTimeLimit : kKilled;
-    if (status == kPastTimeLimit) return refuse("time", source, command->object);
+    if (status == kPastTimeLimit)
+        return refuse(deadlineFirst && g_timedOut ? "build-time" : "time", source, command->object);
     if (status == kKilled) return refuse("killed", source, command->object);
     if (status != 0) {
         std::error_code ignored;

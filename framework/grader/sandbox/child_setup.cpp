@@ -3,6 +3,8 @@
 
 #ifdef RAYLAB_POSIX_SANDBOX
 
+#include "grader/sandbox/cgroup.h"
+
 #include <cstdlib>
 #include <csignal>
 #include <fcntl.h>
@@ -27,6 +29,8 @@ void limit(int resource, unsigned long long value) {
     setsid(); // its own session and process group: the parent stops them all at once
     // Entered first: the fallback's user may not cross the grader's folders above it (a 0700 run scratch).
     if (chdir(plan.scratch.c_str()) != 0) _exit(126);
+    // Its cgroup, joined while still root and before anything it runs can fork.
+    if (plan.cgroup && !joinCgroup(*plan.cgroup)) _exit(126);
     // The fallback: never a student's program as root (126: it did not start).
     if (plan.user && !dropPrivileges(*plan.user)) _exit(126);
 #ifdef __linux__
@@ -51,6 +55,9 @@ void limit(int resource, unsigned long long value) {
     limit(RLIMIT_AS, plan.limits.memoryBytes);
 #endif
     limit(RLIMIT_FSIZE, plan.limits.fileBytes);
+    // Without a cgroup, the fallback's user's processes: counted for the user on the whole machine, and
+    // never enforced for root (bubblewrap's agents), so the cgroup's limit comes first where there is one.
+    if (plan.user && !plan.cgroup) limit(RLIMIT_NPROC, unsigned(plan.limits.processes));
     limit(RLIMIT_CORE, 0);
     if (plan.seccomp && !installSeccomp(*plan.seccomp)) _exit(126);
     execve(plan.cargv[0], plan.cargv.data(), plan.cenv.data());

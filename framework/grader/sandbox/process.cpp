@@ -305,8 +305,11 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOpti
     }
     if (!options.workingDirectory.empty())
         posix_spawn_file_actions_addchdir_np(&actions, options.workingDirectory.c_str());
+    std::vector<std::string> variables = options.environment;
+    for (char** v = environ; *v; ++v) variables.emplace_back(*v); // ours after: the options' come first
+    const std::vector<char*> cvariables = argumentPointers(variables);
     pid_t pid = -1;
-    const int error = posix_spawnp(&pid, cargs[0], &actions, nullptr, cargs.data(), environ);
+    const int error = posix_spawnp(&pid, cargs[0], &actions, nullptr, cargs.data(), cvariables.data());
     posix_spawn_file_actions_destroy(&actions);
     if (stream[1] >= 0) close(stream[1]); // the program's end: its last writer closing it ends the stream
     if (error != 0) {

@@ -21,6 +21,7 @@ struct ProcessOptions {
     std::filesystem::path workingDirectory = {}; // empty: ours
     std::filesystem::path output = {};           // stdout and stderr are appended here; empty: ours
     double timeLimit = 0.;                       // seconds; past it the program is killed (0: none)
+    std::vector<std::string> environment = {};   // NAME=value, added to ours (POSIX; Windows: ours only)
     // > 0: stdout and stderr are read through a pipe instead, and only their first and last
     // `keepOutput` bytes kept (ProcessResult::kept; `output` unused): a build's output is the
     // submission's to make as long as it likes (a template error of a gigabyte), so it is streamed

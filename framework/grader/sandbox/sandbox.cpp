@@ -1,5 +1,6 @@
 #include "grader/sandbox/sandbox.h"
 
+#include "grader/sandbox/cgroup.h"
 #include "grader/sandbox/job_object.h"
 #include "grader/sandbox/process.h"
 #include "grader/sandbox/sandbox_internal.h"
@@ -22,6 +23,7 @@
 #include <csignal>
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #endif
@@ -30,9 +32,23 @@ namespace raylab::grader {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// "256 MB", "4 GB".
+std::string sizeText(unsigned long long bytes) {
+    constexpr unsigned long long kGB = 1ull << 30, kMB = 1ull << 20;
+    if (bytes >= kGB && bytes % kGB == 0) return std::to_string(bytes / kGB) + " GB";
+    return std::to_string((bytes + kMB - 1) / kMB) + " MB";
+}
+
+} // namespace
+
 std::string AgentRun::describe() const {
     std::string text;
-    if (timedOut) text = tr("sandbox.timed_out");
+    if (processLimit) text = tr("sandbox.process_limit", {{"count", std::to_string(limits.processes)}});
+    else if (memoryLimit) text = tr("sandbox.memory_limit", {{"size", sizeText(limits.memoryBytes)}});
+    else if (diskLimit) text = tr("sandbox.disk_limit", {{"size", sizeText(limits.diskBytes)}});
+    else if (timedOut) text = tr("sandbox.timed_out");
     else if (cpuLimit) text = tr("sandbox.cpu_limit");
     else if (outputLimit) text = tr("sandbox.output_limit");
 #ifdef _WIN32
@@ -162,9 +178,10 @@ void setNonBlocking(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK
 
 // Starts the child (bwrap or the agent itself) with the channels' child ends; returns its pid.
 pid_t startChild(const AgentCommand& c, const SandboxLimits& limits, const fs::path& bwrap, const UnprivilegedUser* user,
-                 int reportFd, int requestFd) {
+                 const RunCgroup& cgroup, int reportFd, int requestFd) {
     ChildPlan plan;
     plan.user = user;
+    if (cgroup.active()) plan.cgroup = &cgroup.joinFiles();
     if (user) plan.seccomp = &seccompProgram(); // compiled here, before the fork
     if (!bwrap.empty()) plan.argv = bubblewrapArgs(bwrap, c);
     plan.argv.push_back(c.program.string());
@@ -184,8 +201,92 @@ pid_t startChild(const AgentCommand& c, const SandboxLimits& limits, const fs::p
     return pid;
 }
 
+// What a file or folder (an agent's scratch folder, its /tmp included) takes on disk: blocks, so that
+// a sparse file counts what it holds. Links are not followed; a file removed during the walk ends it
+// early (the next look counts).
+unsigned long long diskUsed(const fs::path& path) {
+    struct stat file;
+    if (lstat(path.c_str(), &file) != 0) return 0;
+    unsigned long long used = static_cast<unsigned long long>(file.st_blocks) * 512u;
+    if (!S_ISDIR(file.st_mode)) return used;
+    std::error_code error;
+    for (fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, error), end;
+         !error && it != end; it.increment(error))
+        if (lstat(it->path().c_str(), &file) == 0) used += static_cast<unsigned long long>(file.st_blocks) * 512u;
+    return used;
+}
+
+// The fallback's /tmp is the machine's (no mount namespace): what the agent's user makes there during
+// the run counts with its scratch folder, and is removed once the run is over.
+class SharedTmp {
+public:
+    explicit SharedTmp(const UnprivilegedUser* user) : m_user(user) {
+        if (m_user) m_before = entries();
+    }
+    ~SharedTmp() {
+        std::error_code ignored;
+        for (const fs::path& made : created()) fs::remove_all(made, ignored); // links are removed, not followed
+    }
+    SharedTmp(const SharedTmp&) = delete;
+    SharedTmp& operator=(const SharedTmp&) = delete;
+
+    unsigned long long used() const {
+        unsigned long long total = 0;
+        for (const fs::path& made : created()) total += diskUsed(made);
+        return total;
+    }
+
+private:
+    std::vector<fs::path> entries() const {
+        std::vector<fs::path> found;
+        std::error_code error;
+        for (fs::directory_iterator it("/tmp", error), end; !error && it != end; it.increment(error))
+            found.push_back(it->path());
+        std::sort(found.begin(), found.end());
+        return found;
+    }
+    // Made during the run by the agent's user.
+    std::vector<fs::path> created() const {
+        std::vector<fs::path> made;
+        if (!m_user) return made;
+        for (const fs::path& entry : entries()) {
+            struct stat file;
+            if (!std::binary_search(m_before.begin(), m_before.end(), entry) && lstat(entry.c_str(), &file) == 0 &&
+                file.st_uid == m_user->uid)
+                made.push_back(entry);
+        }
+        return made;
+    }
+
+    const UnprivilegedUser* m_user;
+    std::vector<fs::path> m_before;
+};
+
+// The limits the parent watches while the agent runs, looked at every kMeterPeriod: everything it
+// wrote, and its cgroup's (a fork refused there is a fork bomb, a process killed at the memory limit
+// leaves the others holding it: the run is stopped at once).
+constexpr double kMeterPeriod = 0.1;
+
+struct RunMeter {
+    const fs::path& scratch;
+    const SharedTmp& tmp;
+    const RunCgroup& cgroup;
+    const SandboxLimits& limits;
+
+    // Whether it went past one, which is recorded in `run`.
+    bool overLimit(AgentRun& run) const {
+        run.processLimit = cgroup.processLimitHit();
+        run.memoryLimit = cgroup.memoryLimitHit();
+        run.diskLimit = !run.processLimit && !run.memoryLimit && diskUsed(scratch) + tmp.used() > limits.diskBytes;
+        return run.processLimit || run.memoryLimit || run.diskLimit;
+    }
+};
+
+// How a watch ended.
+enum class WatchEnd { exited, timedOut, overLimit };
+
 // The parent's side of a running agent: its channel read as it comes, its requests written as it
-// reads them, until it exits or runs out of time.
+// reads them, until it exits, runs out of time or goes past a limit the meter watches.
 class AgentWatch {
 public:
     AgentWatch(pid_t pid, int reportFd, int requestFd, const SandboxLimits& limits, std::string requests)
@@ -201,15 +302,20 @@ public:
     AgentWatch(const AgentWatch&) = delete;
     AgentWatch& operator=(const AgentWatch&) = delete;
 
-    // Until the child exits (true, its wait status in `status`) or its time is up (false).
-    bool wait(int& status) {
+    // Until the child exits (its wait status in `status`), its time is up or it goes past a limit.
+    WatchEnd wait(int& status, const RunMeter& meter, AgentRun& run) {
+        Clock::time_point nextLook = Clock::now();
         for (;;) {
             if (m_requestFd >= 0 && m_pending.empty()) { // all written: the child reads end-of-file
                 close(m_requestFd);
                 m_requestFd = -1;
             }
             const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(m_deadline - Clock::now()).count();
-            if (left <= 0) return false;
+            if (left <= 0) return WatchEnd::timedOut;
+            if (Clock::now() >= nextLook) {
+                if (meter.overLimit(run)) return WatchEnd::overLimit;
+                nextLook = Clock::now() + seconds(kMeterPeriod);
+            }
             pollfd fds[2] = {{m_channelOpen ? m_reportFd : -1, POLLIN, 0},
                              {m_requestFd, POLLOUT, 0}};
             // Short naps: the child's exit is noticed within 20 ms even while a grandchild holds the pipe.
@@ -221,7 +327,7 @@ public:
             if (fds[1].revents & (POLLOUT | POLLERR | POLLHUP)) writePending(m_requestFd, m_pending);
             if (waitpid(m_pid, &status, WNOHANG) == m_pid) {
                 if (m_channelOpen) drain(); // what it wrote just before it went
-                return true;
+                return WatchEnd::exited;
             }
         }
     }
@@ -263,27 +369,35 @@ AgentRun runPosix(const AgentCommand& c, const SandboxLimits& limits) {
             if (!handOver(folder, *user))
                 throw std::runtime_error("grader: cannot give " + folder.string() + " to the user " + user->name);
     }
+    // Bubblewrap's /tmp is a folder of its scratch, on disk, where its disk limit counts it.
+    if (!bwrap.empty()) fs::create_directories(agentTmp(c.scratch));
+    const RunCgroup cgroup(limits.processes, limits.memoryBytes);
+    const SharedTmp tmp(bwrap.empty() ? user : nullptr);
     int report[2], request[2] = {-1, -1};
     if (!openPipe(report) || !openPipe(request))
         throw std::runtime_error("grader: cannot open a pipe to the agent");
     // Without a PID namespace the child could reach the grader: its signals are guarded too.
     std::optional<ChildGuard> guard(std::in_place, bwrap.empty());
-    const pid_t pid = startChild(c, limits, bwrap, user, report[1], request[0]);
+    const pid_t pid = startChild(c, limits, bwrap, user, cgroup, report[1], request[0]);
     guard->started(pid);
     close(report[1]);
     close(request[0]);
     AgentWatch watch(pid, report[0], request[1], limits, c.requests);
     AgentRun run;
     int status = 0;
-    run.timedOut = !watch.wait(status);
+    const WatchEnd end = watch.wait(status, RunMeter{c.scratch, tmp, cgroup, limits}, run);
+    run.timedOut = end == WatchEnd::timedOut;
     // Whatever it started is stopped too: the PID namespace goes with bwrap, the session is swept.
     kill(-pid, SIGKILL);
-    if (run.timedOut) waitpid(pid, &status, 0);
+    if (end != WatchEnd::exited) waitpid(pid, &status, 0);
     sweep(pid);
     guard->stopGuarding();
     run.violations = guard->violations();
     guard.reset();
-    if (!run.timedOut) {
+    // A limit reached as it ended: a fork refused, a process the kernel killed for the memory of all.
+    run.processLimit = run.processLimit || cgroup.processLimitHit();
+    run.memoryLimit = run.memoryLimit || cgroup.memoryLimitHit();
+    if (end == WatchEnd::exited) {
         if (WIFEXITED(status)) run.exitCode = WEXITSTATUS(status);
         if (WIFSIGNALED(status)) run.signal = WTERMSIG(status);
         // bwrap passes on the child's end: a signal as 128 + its number.
@@ -351,6 +465,7 @@ AgentRun runAgent(const AgentCommand& command, const SandboxLimits& limits) {
     if (answers.refused) run.violations.push_back(tr("sandbox.replaced_output", {{"file", "results.jsonl"}}));
     run.lines = splitLines(answers.text);
 #endif
+    run.limits = limits;
     collectOutput(c.scratch, run);
     return run;
 }

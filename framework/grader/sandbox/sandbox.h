@@ -31,9 +31,14 @@ struct SandboxLimits {
     double wallSeconds = 180.;  // wall-clock time without a word from the child: each check and figure
                                 // announces itself, so this is a limit per item, and a slow item
                                 // never makes the next one late
-    double totalSeconds = 1800.; // wall-clock time of the whole run
-    unsigned long long memoryBytes = 4ull << 30;
-    unsigned long long fileBytes = 256ull << 20;
+    double totalSeconds = 1800.; // wall-clock time of the whole run, stopped or asleep included (a
+                                 // session gives each run what is left of its lab's budget)
+    unsigned long long memoryBytes = 4ull << 30; // all of its processes together where the machine
+                                                 // gives the grader a cgroup, else each process
+    unsigned long long fileBytes = 256ull << 20; // each file it writes
+    unsigned long long diskBytes = 256ull << 20; // everything in its scratch folder, its /tmp included
+    int processes = 256; // at once, threads and its own included: a cgroup's pids limit, else RLIMIT_NPROC of
+                         // the fallback's user
     bool bubblewrap = true; // use it, or the fallback, when they can run (false: `--no-sandbox`; the
                             // environment's RAYLAB_SANDBOX=bubblewrap|fallback|none chooses too)
 };
@@ -58,10 +63,15 @@ struct AgentRun {
     int signal = 0;    // when a signal ended it
     bool cpuLimit = false;    // Windows: the job used up its CPU time (POSIX: SIGXCPU)
     bool outputLimit = false; // Windows: it wrote more than SandboxLimits::fileBytes (POSIX: SIGXFSZ)
+    bool diskLimit = false;     // its scratch folder grew past SandboxLimits::diskBytes: killed
+    bool processLimit = false;  // it tried more than SandboxLimits::processes at once
+    bool memoryLimit = false;   // its processes together used SandboxLimits::memoryBytes (a cgroup's)
+    SandboxLimits limits = {};  // what it ran under, for describe()
     std::vector<std::string> violations; // what it tried against the grader ("sent signal 15 to the grader",
                                          // "replaced its output file stderr.txt with a link or a special file")
     std::string stderrTail; // the end of its error output, for the report
-    std::string describe() const; // "killed after 180 s", "exited with status 3", "crashed (signal 11)"
+    // "stopped: it ran past the time limit", "wrote more than 256 MB", "exited with status 3", "crashed (signal 11)"
+    std::string describe() const;
 };
 
 // Runs `program args... --request-fd 4 --report-fd 3` (POSIX: two pipes the parent opened; the

@@ -49,8 +49,13 @@ const BubblewrapProbe& bubblewrapProbe();
 std::filesystem::path bubblewrap();
 
 // bwrap, its namespaces, and the system read-only (/usr, /lib..., the dynamic linker's files), its own
-// /dev and /tmp: what every confined program sees (an agent, the compiler).
-std::vector<std::string> bubblewrapSystem(const std::filesystem::path& bwrap);
+// /dev and /tmp: what every confined program sees (an agent, the compiler). /tmp is a tmpfs, or the
+// folder `tmp` when given (an agent's: on disk, in its scratch folder, so that it counts against its
+// disk limit; a tmpfs takes the machine's memory and bubblewrap 0.8 cannot size one).
+std::vector<std::string> bubblewrapSystem(const std::filesystem::path& bwrap, const std::filesystem::path& tmp = {});
+
+// The folder an agent sees as /tmp under bubblewrap, inside its scratch folder (made by the parent).
+std::filesystem::path agentTmp(const std::filesystem::path& scratch);
 
 // bwrap's arguments before an agent: the system read-only, the given files, nothing else.
 std::vector<std::string> bubblewrapArgs(const std::filesystem::path& bwrap, const AgentCommand& c);
@@ -66,6 +71,7 @@ struct ChildPlan {
     int reportFd = -1, requestFd = -1;
     const UnprivilegedUser* user = nullptr;        // the fallback: the child becomes this user
     const std::vector<sock_filter>* seccomp = nullptr; // and installs this filter before exec
+    const std::vector<std::string>* cgroup = nullptr;  // the run's cgroup it joins first (cgroup.h)
 
     void seal() {
         for (std::string& a : argv) cargv.push_back(a.data());
@@ -75,7 +81,7 @@ struct ChildPlan {
     }
 };
 
-// In the forked child: its session, its user (the fallback), channels, limits, filter, then the program.
+// In the forked child: its session, its cgroup, its user (the fallback), channels, limits, filter, then the program.
 [[noreturn]] void execChild(const ChildPlan& plan);
 
 // A small environment: the grader's variables are none of the child's business.
