@@ -182,6 +182,24 @@ TEST_CASE("the fallback with Landlock: the compiler reads the system's headers, 
     CHECK_FALSE(f.objectExists());
 }
 
+TEST_CASE("an object file past kCompilerFileBytes stops the assembler, under every sandbox; nothing of it is left") {
+    std::vector<std::string> sandboxes{"none"};
+    if (raylab::grader::bubblewrapMissing().empty()) sandboxes.push_back("bubblewrap");
+    if (geteuid() == 0) sandboxes.push_back("fallback");
+    else MESSAGE("the fallback needs root: not tested here");
+    for (const std::string& sandbox : sandboxes) {
+        CAPTURE(sandbox);
+        const Folders f;
+        // 100 MB of data from a line of source: the object would be that large.
+        const ProgramRun run = f.compileIn(sandbox, "big.cpp", "asm(\".section .rodata\\n.fill 100000000, 1, 1\\n.text\");\n");
+        CHECK(run.status != 0);
+        CHECK_MESSAGE(run.output.find("File size limit exceeded") != std::string::npos, run.output); // the grader's cue
+        CHECK_FALSE(f.objectExists());
+        for (const auto& entry : fs::directory_iterator(f.root)) // no private folder left
+            CHECK(entry.path().filename().string().rfind(".raylab-guard-", 0) == std::string::npos);
+    }
+}
+
 TEST_CASE("a compile error stays the compiler's: its status, no refusal line") {
     const Folders f;
     const ProgramRun run = f.compile("broken.cpp", "not C++ at all\n");
@@ -198,7 +216,7 @@ TEST_CASE("a compiler that runs past the wall-clock limit is stopped with its pr
                                       f.root / "output.txt");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     CHECK(run.status == 1);
-    CHECK_MESSAGE(run.output.find("raylab-build-guard: stopped: sleep") != std::string::npos, run.output);
+    CHECK_MESSAGE(run.output.find("raylab-build-guard: time: sleep") != std::string::npos, run.output);
     CHECK(seconds < 30.); // far below the sleep's 60 s: it was killed, not waited for
 }
 
