@@ -12,6 +12,7 @@
 #include "grader/course/submission.h"
 #include "grader/course/submission_copy.h"
 #include "src/messages.h"
+#include "src/text.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -45,7 +46,7 @@ constexpr int kNothingWrittenStatus = 3;
 // made (a live run's never: its lock is held); `command` says whose they were.
 void noteRemovedScratch(const RunScratch& scratch, const std::string& command) {
     for (const fs::path& removed : scratch.removedAtStart())
-        std::printf("%s\n", tr("grade.abandoned_scratch_removed", {{"folder", removed.string()}, {"command", command}}).c_str());
+        std::printf("%s\n", tr("grade.abandoned_scratch_removed", {{"folder", printablePath(removed)}, {"command", command}}).c_str());
 }
 
 GradeSetup setupFor(const GradeOptions& o, const Context& context, const fs::path& scratch) {
@@ -72,7 +73,7 @@ int gradeImageFolder(const GradeOptions& o, const Context& context) {
     noteRemovedScratch(scratch, "grade --images");
     const GradeSetup setup = setupFor(o, context, scratch.path());
     GradeResult result = gradeImages(setup, o.images);
-    result.title = "raylab grade --images " + o.images;
+    result.title = "raylab grade --images " + printablePath(o.images);
     int found = 0, failed = 0;
     for (const FigureOutcome& f : result.figures) {
         std::printf("%s  %-24s %s\n", tr(f.passed ? "report.pass" : "report.fail").c_str(), f.id.c_str(), f.reason.c_str());
@@ -86,7 +87,7 @@ int gradeImageFolder(const GradeOptions& o, const Context& context) {
                                                    {"total", std::to_string(result.figures.size())},
                                                    {"failed", std::to_string(failed)},
                                                    {"missing", std::to_string(result.figures.size() - std::size_t(found))},
-                                                   {"report", o.report + "/index.html"}})
+                                                   {"report", printablePath(fs::path(o.report) / "index.html")}})
                             .c_str());
     return found > 0 && failed == 0 ? 0 : 1;
 }
@@ -116,7 +117,7 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
             return result;
         }
         ignored = ignoredFilesNote(copy, setup.labs);
-        std::printf("%s\n", tr("grade.building", {{"labs", o.labs}, {"folder", buildDir.string()}}).c_str());
+        std::printf("%s\n", tr("grade.building", {{"labs", printablePath(o.labs)}, {"folder", printablePath(buildDir)}}).c_str());
         std::fflush(stdout);
         const SubmissionBuild b =
             buildSubmission(tools, build::kSourceDir, copy.folder, buildDir, setup.labs, places.log);
@@ -157,11 +158,11 @@ int gradeLabs(GradeOptions o, const Context& context) {
     if (!o.item.empty()) o.lab = labOfItem(setup.labs, o.item); // its lab is graded, the item alone kept
     const fs::path buildDir = o.buildDir.empty() ? fs::path("out/grade-build") : fs::path(o.buildDir);
     GradeResult result = gradeCodeOnce(o, setup, toolchain(false), {buildDir, buildDir / "submission", {}},
-                                       "raylab grade " + (o.labs.empty() ? std::string("(labs/)") : o.labs));
+                                       "raylab grade " + (o.labs.empty() ? std::string("(labs/)") : printablePath(o.labs)));
     if (!o.item.empty()) result = onlyItem(result, o.item);
     std::printf("%s", terminalSummary(result).c_str());
     writeReports(result, setup.references, o.report);
-    std::printf("%s\n", tr("grade.report_written", {{"report", o.report + "/index.html"}}).c_str());
+    std::printf("%s\n", tr("grade.report_written", {{"report", printablePath(fs::path(o.report) / "index.html")}}).c_str());
     if (result.allPassed()) return 0;
     const bool nothingWritten = std::all_of(result.labs.begin(), result.labs.end(),
                                             [](const LabOutcome& l) { return l.notStarted || l.maxPoints == 0.; });
@@ -231,10 +232,10 @@ int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& contex
     if (o.agents.empty())
         run.beforeFirstStudent = [&] {
             const fs::path log = classBuild / "grading-kit.log";
-            std::printf("%s\n", tr("grade.building_class_kit", {{"folder", classBuild.string()}}).c_str());
+            std::printf("%s\n", tr("grade.building_class_kit", {{"folder", printablePath(classBuild)}}).c_str());
             std::fflush(stdout);
             if (!buildGradingKit(toolchain(true), build::kSourceDir, classBuild, log))
-                std::printf("%s\n", tr("grade.class_kit_failed", {{"log", log.string()}}).c_str());
+                std::printf("%s\n", tr("grade.class_kit_failed", {{"log", printablePath(log)}}).c_str());
         };
     const int status = runClass(run, [&](const StudentWork& work) {
         GradeOptions student = o;
@@ -244,7 +245,8 @@ int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& contex
         try {
             result = gradeCodeOnce(student, setup, toolchain(true),
                                    {classBuild, work.folder / "submission", work.folder / "build.log"}, title);
-        } catch (const std::exception& e) { // one student's trouble never stops the class
+        } catch (const std::exception& e) { // one student's trouble never stops the class; a full disk does
+            if (isDiskFull(e)) throw;
             result = gradeBuildFailure(setup, e.what());
             result.title = title;
         }

@@ -24,7 +24,11 @@ namespace {
     throw WriteError("cannot write " + file.string() + ": " + reason);
 }
 
-std::string describe(int error) { return std::generic_category().message(error); }
+[[noreturn]] void fail(const fs::path& file, std::error_code code) {
+    throw WriteError("cannot write " + file.string() + ": " + code.message(), code);
+}
+
+std::error_code systemError(int error) { return std::error_code(error, std::generic_category()); }
 
 #ifdef RAYLAB_POSIX_FILES
 int currentProcess() { return int(getpid()); }
@@ -62,11 +66,11 @@ int writeAll(int fd, std::string_view bytes) {
 // open, so that a pipe nobody reads is refused (ENXIO) instead of blocking forever.
 void writeInPlace(const fs::path& file, std::string_view bytes) {
     const int fd = ::open(file.c_str(), O_WRONLY | O_TRUNC | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0) fail(file, describe(errno));
+    if (fd < 0) fail(file, systemError(errno));
     ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
     int error = writeAll(fd, bytes);
     if (::close(fd) != 0 && error == 0) error = errno;
-    if (error != 0) fail(file, describe(error));
+    if (error != 0) fail(file, systemError(error));
 }
 
 // Opens a temporary file of our own (O_EXCL) beside `target`; its name on success.
@@ -81,7 +85,7 @@ int openTemporary(const fs::path& target, fs::path& temporary) {
 void writeReplacing(const fs::path& target, std::string_view bytes) {
     fs::path temporary;
     const int fd = openTemporary(target, temporary);
-    if (fd < 0) fail(target, describe(errno));
+    if (fd < 0) fail(target, systemError(errno));
     int error = writeAll(fd, bytes);
     // fsync before the rename: after a crash, the name points at the whole new file or the old one.
     if (error == 0 && ::fsync(fd) != 0 && errno != EINVAL) error = errno; // EINVAL: a file system without fsync
@@ -89,7 +93,7 @@ void writeReplacing(const fs::path& target, std::string_view bytes) {
     if (error == 0 && ::rename(temporary.c_str(), target.c_str()) != 0) error = errno;
     if (error != 0) {
         ::unlink(temporary.c_str());
-        fail(target, describe(error));
+        fail(target, systemError(error));
     }
     // Makes the rename itself durable; the file is whole either way, so a folder that cannot be
     // synced is no error.
@@ -106,7 +110,7 @@ void writeInPlace(const fs::path& file, std::string_view bytes) {
     std::ofstream out(file, std::ios::binary);
     out.write(bytes.data(), std::streamsize(bytes.size()));
     out.close();
-    if (!out) fail(file, describe(errno));
+    if (!out) fail(file, systemError(errno));
 }
 
 void writeReplacing(const fs::path& target, std::string_view bytes) {
@@ -120,7 +124,7 @@ void writeReplacing(const fs::path& target, std::string_view bytes) {
     if (error) {
         std::error_code ignored;
         fs::remove(temporary, ignored);
-        fail(target, error.message());
+        fail(target, error);
     }
 }
 
@@ -135,14 +139,14 @@ void writeFileAtomically(const fs::path& file, std::string_view bytes) {
     fs::path target = file;
     if (fs::is_symlink(fs::symlink_status(file, error))) {
         target = fs::weakly_canonical(file, error);
-        if (error) fail(file, error.message());
+        if (error) fail(file, error);
     }
     const fs::file_status status = fs::status(target, error);
     if (fs::is_directory(status)) fail(file, "it is a folder");
     if (fs::exists(status) && !fs::is_regular_file(status)) return writeInPlace(target, bytes);
     if (target.has_parent_path()) {
         fs::create_directories(target.parent_path(), error);
-        if (error) fail(file, error.message());
+        if (error) fail(file, error);
     }
     writeReplacing(target, bytes);
 }

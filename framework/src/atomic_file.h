@@ -5,14 +5,21 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <string_view>
+#include <system_error>
 
 namespace raylab {
 
-// A file that could not be written: what() names the file and the reason ("No space left on device").
+// A file that could not be written: what() names the file and the reason ("No space left on device"),
+// code() the system's error when there is one (a class run stops on a full disk, course/class_run.h).
 class WriteError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit WriteError(const std::string& what, std::error_code code = {}) : std::runtime_error(what), m_code(code) {}
+    std::error_code code() const { return m_code; }
+
+private:
+    std::error_code m_code;
 };
 
 // Writes `bytes` to a temporary file in the folder of `file` (created if needed), flushes it to the

@@ -75,4 +75,8 @@ std::string printableText(std::string_view text, TextForm form) {
     return out;
 }
 
+std::string printableName(std::string_view name) { return printableText(name, TextForm::Name); }
+
+std::string printablePath(const std::filesystem::path& path) { return printableName(path.generic_string()); }
+
 } // namespace raylab

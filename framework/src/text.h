@@ -4,6 +4,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -22,5 +23,13 @@ enum class TextForm {
 // non-characters U+FFFE and U+FFFF are written \xHH, byte by byte; so two names that differ in
 // their bytes never print alike, as they would with U+FFFD.
 std::string printableText(std::string_view text, TextForm form = TextForm::Message);
+
+// A name (a student's folder, a file of a submission) as the console, grades.csv and the reports
+// show it: printableText's Name form, so a newline or an escape sequence in it shows as \n or \x1B
+// and never moves the cursor. Every name and path printed goes through it (or printablePath).
+std::string printableName(std::string_view name);
+
+// A path so, with '/' between its folders on every system (a '\' would show doubled).
+std::string printablePath(const std::filesystem::path& path);
 
 } // namespace raylab

@@ -4,8 +4,10 @@
 // The students are graded by a prebuilt agent (--agent), so no test here runs CMake.
 #include "support/files.h"
 #include "grader/course/class_run.h"
+#include "src/text.h"
 #include "grading_support.h"
 #include "support/read_csv.h"
+#include "support/small_disk.h"
 
 #include <nlohmann/json.hpp>
 
@@ -393,7 +395,7 @@ TEST_CASE("hostile folder names each get their own row with their printable name
     CHECK(rows.size() == names.size() + 1);
     // A spreadsheet reads a formula as text; two names that differ in bytes that are not UTF-8 differ.
     const auto shownInCsv = [](const std::string& name) {
-        const std::string shown = raylab::grader::printableName(name);
+        const std::string shown = raylab::printableName(name);
         return std::string("=+-@").find(shown[0]) != std::string::npos ? "'" + shown : shown;
     };
     CHECK(shownInCsv("=1+2*3") == "'=1+2*3");
@@ -401,7 +403,7 @@ TEST_CASE("hostile folder names each get their own row with their printable name
     CHECK(shownInCsv("bad\xFEname") == "bad\\xFEname");
     CHECK(shownInCsv("new\nline") == "new\\nline");
     for (const std::string& name : names) {
-        CAPTURE(raylab::grader::printableName(name));
+        CAPTURE(raylab::printableName(name));
         int found = 0;
         for (const auto& row : rows)
             if (row[0] == shownInCsv(name)) {
@@ -496,6 +498,57 @@ TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap (o
     REQUIRE(fallbackRows.size() == 2);
     // Lab 1 earns every point: the agent reaches its scratch inside the run's (mkdtemp, root's 0700).
     CHECK_MESSAGE(fallbackRows[1][1] == fallbackRows[1][7], fallback);
+}
+#endif
+
+#ifdef __linux__
+// A real full disk: OUT is a tmpfs of 20 MB, filled but for about two students' results (48 KB each
+// for lab 1). Under bubblewrap and under the fallback (as root), as every hostile case.
+TEST_CASE("grade-class on a results disk that fills: said once, the student concerned not graded, every result kept; "
+          "the same command resumes once there is room") {
+    std::vector<std::string> sandboxes{"bubblewrap"};
+    if (geteuid() == 0) sandboxes.push_back("fallback");
+    for (const std::string& sandbox : sandboxes) {
+        CAPTURE(sandbox);
+        const fs::path root = freshFolder("raylab-ledger-full-disk-" + sandbox);
+        const fs::path classDir = makeClass(root, kSix);
+        SmallDisk disk(root / "out", 20);
+        if (!disk.mounted()) {
+            MESSAGE("SKIPPED: " << disk.why);
+            return;
+        }
+        const fs::path filler = root / "out" / "filler";
+        std::ofstream(filler, std::ios::binary) << std::string(fs::space(root / "out").available - (120 << 10), 'f');
+        const auto run = [&](const std::string& name) {
+            const std::vector<std::string> environment{"RAYLAB_SANDBOX=" + sandbox};
+            ProgramProcess process = startProgram(binDir() / "raylab", classArgs(classDir, root / "out"), root / name, 0, environment);
+            const int status = process.finish();
+            return std::pair(status, process.text());
+        };
+        const auto count = [](const std::string& text, const std::string& part) {
+            int found = 0;
+            for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++found;
+            return found;
+        };
+
+        const auto [status, output] = run("full.txt");
+        CHECK(status == 1);
+        CHECK_MESSAGE(count(output, "not graded: disk full") == 1, output);
+        CHECK_MESSAGE(count(output, "stopped: a disk is full") == 1, output);
+        CHECK_MESSAGE(count(output, "No space left on device") == 1, output); // the file it could not write, once
+        const std::size_t kept = results(root / "out").size();
+        CHECK_MESSAGE((kept > 0 && kept < kSix.size()), output);
+        CHECK(readCsv(readFile(root / "out" / "grades.csv")).size() == kept + 1);
+        CHECK(output.find(kSix.back()) == std::string::npos); // stopped: the last student not tried
+
+        fs::remove(filler); // room
+        const auto [resumed, resumedOutput] = run("resumed.txt");
+        CHECK_MESSAGE(resumed == 0, resumedOutput);
+        CHECK(count(resumedOutput, "already graded") == int(kept));
+        const auto rows = readCsv(readFile(root / "out" / "grades.csv"));
+        REQUIRE(rows.size() == kSix.size() + 1);
+        for (std::size_t k = 1; k < rows.size(); ++k) CHECK(rows[k][rows[k].size() - 3] == rows[k][rows[k].size() - 2]); // total == max
+    }
 }
 #endif
 

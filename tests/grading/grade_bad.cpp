@@ -1,9 +1,11 @@
 // Bad submissions get the grade they earned, with a clear reason, and the run goes on.
 #include "grading_support.h"
+#include "support/files.h"
 
 #include "grader/sandbox/cgroup.h"
 
 #include <fstream>
+#include <sstream>
 
 using namespace raylab::test;
 
@@ -130,6 +132,43 @@ TEST_CASE("overwriting the references does not help: confined it cannot, in the 
     fs::remove_all(copy);
 }
 
+TEST_CASE("a lab that re-executes the build's other agents (the reference's, a sibling's) gets nothing from them") {
+    const GradeSetup setup = courseSetup();
+    const GradeResult r = gradeBad("runs_siblings");
+    if (!confined(setup)) {
+        MESSAGE("SKIPPED: no sandbox here (" << sandboxKind(setup.limits) << "): the reference's agent would answer");
+        return;
+    }
+    // Under bubblewrap they are not there; under the fallback its user may not run them.
+    expectCheck(r, "fillGradient: the corners and the middle of a 5 x 3 image", false, "not done yet");
+    expectFigure(r, "lab1_gradient", false, "not done yet");
+    CHECK(r.labs[0].points == 0.);
+    expectFigure(r, "lab3_cosine", true); // the labs it did are graded
+}
+
+TEST_CASE("a lab's agent answers its own lab only: lab 2's, asked every lab's items, refuses the others'") {
+    const GradeResult r = gradeAgent(courseSetup(), "raylab-agent-lab2"); // built with lab 2 from labs/ here
+    expectCheck(r, "fillGradient: the corners and the middle of a 5 x 3 image", false, "answers lab 2 only, not lab 1");
+    expectFigure(r, "lab3_cosine", false, "answers lab 2 only, not lab 3");
+    CHECK(r.labs[0].points == 0.);
+    CHECK(r.labs[2].points == 0.);
+}
+
+TEST_CASE("a lab that reads the reference solution's file and /etc/passwd at run time shows none of them") {
+    const GradeSetup setup = courseSetup();
+    const GradeResult r = gradeBad("reads_solutions");
+    expectCheck(r, "fillGradient: the corners and the middle of a 5 x 3 image", false, "stolen: [");
+    expectFigure(r, "lab1_gradient", false, "stolen: [");
+    if (!confined(setup)) return; // unconfined, root reads them: what the sandboxes are for
+    const std::string said = failures(r);
+    CHECK_MESSAGE(said.find("stolen: [] []") != std::string::npos, said); // both files read as empty
+    std::istringstream solution(readFile(sourceDir() / "solutions" / "lab1_first_image" / "gradient.cpp"));
+    for (std::string line; std::getline(solution, line);)
+        if (line.size() >= 30) CHECK_MESSAGE(said.find(line) == std::string::npos, line);
+    CHECK(said.find("root:x:0:0") == std::string::npos);
+    CHECK(r.labs[0].points == 0.);
+}
+
 TEST_CASE("a submission that signals the grader: the grader goes on; in the process group that run earns nothing") {
     for (const bool bubblewrap : {false, true}) {
         CAPTURE(bubblewrap);
@@ -225,6 +264,13 @@ TEST_CASE("filling its working folder, or /tmp, is stopped at the disk limit, an
         }
         setup.limits.diskBytes = 32ull << 20;
         const GradeResult r = gradeAgent(setup, "raylab-bad-" + id);
+        const std::string kind = sandboxKind(setup.limits);
+        if (id == "fills_tmp" && kind.rfind("unprivileged user", 0) == 0 && kind.find("no Landlock") == std::string::npos) {
+            // The fallback with Landlock has no /tmp at all: not a byte written there, nothing to stop.
+            CHECK_FALSE(fs::exists("/tmp/fill-0"));
+            for (const LabOutcome& lab : r.labs) CHECK_MESSAGE(lab.points == lab.maxPoints, failures(r));
+            continue;
+        }
         expectOnlyLab1Lost(r, "wrote more than 32 MB");
     }
 }

@@ -58,8 +58,9 @@ TEST_SUITE("checks") {
 
     TEST_CASE("lab 2's checks need no lab 4: with lab 4 a stub, lab 2 keeps every point") {
         GradeSetup setup = courseSetup();
-        // raylab-agent-lab4: lab 4 from labs/ (the stub), every other lab from the reference; all labs graded.
-        const GradeResult r = gradeCode(setup, {{binDir() / "raylab-agent-lab4", 0}}, false);
+        // raylab-alone-lab2: lab 2 from solutions/, every other lab the stub; all labs graded (raylab-agent-lab4
+        // would answer lab 4 only).
+        const GradeResult r = gradeCode(setup, {{binDir() / "raylab-alone-lab2", 0}}, false);
         fs::remove_all(setup.scratch);
         CHECK_MESSAGE(r.labs[1].points == r.labs[1].maxPoints, failures(r));
         CHECK(r.labs[3].points == 0.);

@@ -3,6 +3,7 @@
 #include "support/files.h"
 #include "grading_support.h"
 #include "grader/course/class_run.h"
+#include "src/text.h"
 #include "grader/sandbox/process.h"
 #include "support/read_csv.h"
 #include "support/run_program.h"
@@ -91,7 +92,7 @@ TEST_CASE("grade-class builds the framework once and grades each student in its 
     CHECK(rows[0] == std::vector<std::string>{"student", "lab1", "lab2", "lab3", "lab4", "lab5", "total", "max", "problems"});
     for (const std::string& name : kHostileNames) {
         CAPTURE(name);
-        std::string shown = raylab::grader::printableName(name); // one line in grades.csv, a formula defused
+        std::string shown = raylab::printableName(name); // one line in grades.csv, a formula defused
         if (std::string("=+-@").find(shown[0]) != std::string::npos) shown = "'" + shown;
         CHECK(std::count_if(rows.begin(), rows.end(), [&](const auto& row) { return row[0] == shown; }) == 1);
     }

@@ -55,13 +55,14 @@ TEST_SUITE("protocol") {
         CHECK(std::holds_alternative<protocol::Done>(roundTrip(protocol::Done{})));
 
         const protocol::Request request = protocol::CheckRequest{
-            9, {{protocol::probeNamed("intersect"), {0, 0, 3, 1, 0, 0, 0, 0, 0, 1, 0, INFINITY}}}};
+            9, {{protocol::probeNamed("intersect"), {0, 0, 3, 1, 0, 0, 0, 0, 0, 1, 0, INFINITY}}}, 3};
         const protocol::Parsed<protocol::Request> parsed = protocol::parseRequest(protocol::serialize(request));
         REQUIRE(parsed.message);
         const auto& check = std::get<protocol::CheckRequest>(*parsed.message);
         CHECK(check.calls.at(0).probe ==
               protocol::probeNamed("intersect")); // lab 3's, registered by its grading folder
         CHECK(check.calls.at(0).inputs.back() == INFINITY);
+        CHECK(check.lab == 3);
     }
 
     TEST_CASE("a 600 x 400 picture travels whole and fast") {

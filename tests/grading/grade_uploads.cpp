@@ -8,9 +8,13 @@
 #include "support/files.h"
 #include "support/run_program.h"
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <unistd.h>
+#include <utility>
+#include <vector>
 
 using namespace raylab::test;
 
@@ -41,10 +45,12 @@ struct Graded {
     std::string total;               // "75 / 75"
 };
 
-// `raylab grade --labs FOLDER`, in English, in the cases' shared build folder.
-Graded grade(const fs::path& folder) {
+// `raylab grade --labs FOLDER`, in English, in the cases' shared build folder; `sandbox` not empty:
+// with RAYLAB_SANDBOX=`sandbox`.
+Graded grade(const fs::path& folder, const std::string& sandbox = "") {
     std::vector<std::string> argv{(binDir() / "raylab").string(), "grade", "--labs", folder.string(), "--build-dir",
                                   kBuild.string(), "--report", (kRoot / "report").string(), "--lang", "en"};
+    if (!sandbox.empty()) argv.insert(argv.begin(), {"/usr/bin/env", "RAYLAB_SANDBOX=" + sandbox});
     const ProgramRun run = runProgram(argv, kRoot / "output.txt", kRoot);
     Graded g{run.status, run.output, {}, {}};
     std::istringstream lines(run.output);
@@ -151,6 +157,68 @@ TEST_CASE("a missing ';' in lab 4 costs lab 4 only: labs 1, 2, 3 and 5 (which do
     CHECK(g.labs == expected);
     CHECK(g.output.find("lab 4: the code does not build") != std::string::npos);
     CHECK(g.output.find("look_at.cpp") != std::string::npos); // the compiler's message names the file
+}
+
+TEST_CASE("a submission folder named with a newline and an escape sequence: one printable line on the console, 75/75") {
+    const fs::path folder = submission("new\nline\x1B[2J");
+    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+    const Graded g = grade(folder);
+    CHECK_MESSAGE(g.total == "75 / 75", g.output);
+    CHECK_MESSAGE(g.output.find("building " + (kRoot / "submissions").generic_string() + "/new\\nline\\x1B[2J in ") !=
+                      std::string::npos, g.output);
+    CHECK_MESSAGE(g.output.find('\x1B') == std::string::npos, g.output);
+}
+
+// Every file of the build folder, the largest first.
+std::vector<std::pair<std::uintmax_t, fs::path>> largestFiles(const fs::path& folder) {
+    std::vector<std::pair<std::uintmax_t, fs::path>> files;
+    for (const auto& entry : fs::recursive_directory_iterator(folder))
+        if (entry.is_regular_file()) files.emplace_back(entry.file_size(), entry.path());
+    std::sort(files.rbegin(), files.rend());
+    return files;
+}
+
+// Under bubblewrap and under the fallback (as root), as every hostile case.
+std::vector<std::string> sandboxes() {
+    std::vector<std::string> all{""};
+    if (geteuid() == 0) all.push_back("fallback");
+    return all;
+}
+
+TEST_CASE("a lab file that makes a 100 MB object costs its lab, the 32 MB limit named; nothing of it stays in the build folder") {
+    for (const std::string& sandbox : sandboxes()) {
+        CAPTURE(sandbox);
+        const fs::path folder = submission("big-object");
+        fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+        const fs::path samples = folder / "lab5_antialiasing" / "pixel_samples.cpp";
+        write(samples, readFile(samples) + "asm(\".section .rodata\\n.fill 100000000, 1, 1\\n.text\");\n");
+        const Graded g = grade(folder, sandbox);
+        CHECK_MESSAGE(g.total == "62 / 75", g.output);
+        CHECK(g.labs.at(5) == "0 / 13");
+        CHECK_MESSAGE(g.output.find("the compiler stopped at the 32 MB limit on each file it writes") != std::string::npos, g.output);
+        CHECK(g.output.find("File size limit exceeded") == std::string::npos); // the build tool's words, replaced
+        const auto files = largestFiles(kBuild);
+        REQUIRE(!files.empty());
+        CHECK_MESSAGE(files.front().first < (std::uintmax_t(32) << 20), files.front().second);
+    }
+}
+
+TEST_CASE("two lab files of 33 MB objects each make a program over 64 MB: refused, named, removed; its lab costs its points") {
+    for (const std::string& sandbox : sandboxes()) {
+        CAPTURE(sandbox);
+        const fs::path folder = submission("big-program");
+        fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+        for (const char* file : {"ray_cast_integrator.cpp", "sphere_geometry.cpp"}) {
+            const fs::path source = folder / "lab3_sphere" / file;
+            write(source, readFile(source) + "asm(\".section .rodata\\n.fill 33300000, 1, 1\\n.text\");\n");
+        }
+        const Graded g = grade(folder, sandbox);
+        CHECK_MESSAGE(g.labs.at(3) == "0 / 24", g.output);
+        CHECK(g.labs.at(1) == "10 / 10");
+        const std::regex named(R"(your build made a [0-9.]+ MB program \(raylab-agent-lab3\): over the 64 MB limit)");
+        CHECK_MESSAGE(std::regex_search(g.output, named), g.output);
+        CHECK_FALSE(fs::exists(kBuild / "bin" / "raylab-agent-lab3"));
+    }
 }
 
 // The students' tree has no solutions/: no reference lab stands in for a broken one. The grader's

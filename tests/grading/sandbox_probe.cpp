@@ -20,6 +20,7 @@
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/uio.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
@@ -146,6 +147,28 @@ int main(int argc, char** argv) {
                ",\"root\":" + (root ? "true" : "false") + ",\"read\":" + (file >= 0 ? "true" : "false") +
                ",\"wrote\":" + (written >= 0 ? "true" : "false") + ",\"inet\":" + (inet >= 0 ? "true" : "false") +
                ",\"unix\":" + (local >= 0 ? "true" : "false") + ",\"peeked\":" + (peeked ? "true" : "false") + "}");
+    } else if (mode == "reach") { // the file its request names ({"sceneFile":"..."}); arg: a file beside it;
+                                  // argv[3]: another program, run as the grader runs agents
+        std::string request;
+        char buffer[4096];
+        for (ssize_t n; (n = read(requestFd, buffer, sizeof buffer)) > 0;) request.append(buffer, std::size_t(n));
+        const std::string key = "\"sceneFile\":\"";
+        const std::size_t from = request.find(key) + key.size(), to = request.find('"', from);
+        const std::string input = request.find(key) == std::string::npos ? "" : request.substr(from, to - from);
+        const int sibling = open(arg.c_str(), O_RDONLY);
+        bool ran = false;
+        if (argc > 3) {
+            const pid_t child = fork();
+            if (child == 0) { // its descriptors, as a hostile agent would (no mode: a probe ends at once)
+                char* const program[] = {argv[3], nullptr};
+                execv(argv[3], program);
+                _exit(127);
+            }
+            int status = 0;
+            ran = child > 0 && waitpid(child, &status, 0) == child && !(WIFEXITED(status) && WEXITSTATUS(status) == 127);
+        }
+        report(R"({"kind":"reach","input":")" + readAll(input) + R"(","sibling":)" + (sibling >= 0 ? "true" : "false") +
+               R"(,"ran":)" + (ran ? "true" : "false") + "}");
     } else if (mode == "environment") {
         report(std::string(R"({"kind":"environment","secret":")") + (std::getenv("RAYLAB_TEST_SECRET") ? "seen" : "") +
                "\"}");

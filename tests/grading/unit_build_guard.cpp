@@ -3,6 +3,7 @@
 // symlink, the assembler's `.incbin`) does not compile; without it (RAYLAB_SANDBOX=none) the
 // dependency file is checked, a second wall: no object and one refusal line. An honest file compiles
 // in both; a compiler that runs past the wall-clock limit is stopped whole.
+#include "grader/sandbox/landlock.h"
 #include "grader/sandbox/sandbox.h"
 #include "support/files.h"
 #include "support/run_program.h"
@@ -153,6 +154,52 @@ TEST_CASE("the fallback (root, RAYLAB_SANDBOX=fallback): the compiler runs as an
     CHECK(f.object().find(kSecret) != std::string::npos);
 }
 
+TEST_CASE("the fallback with Landlock: the compiler reads the system's headers, and .incbin of a world-readable file fails") {
+    if (geteuid() != 0 || raylab::grader::detail::landlockAbi() == 0) {
+        MESSAGE("SKIPPED: needs root (the fallback) and a kernel with Landlock");
+        return;
+    }
+    const Folders f;
+    // A classmate's file in a world-readable class folder: the unprivileged user could read it.
+    std::ofstream(f.secret / "answer.txt") << kSecret;
+    fs::permissions(f.root, fs::perms(0755));
+    fs::permissions(f.secret, fs::perms(0755));
+    fs::permissions(f.secret / "answer.txt", fs::perms(0644));
+    const auto compile = [&](const std::string& body) {
+        std::ofstream(f.submission / "file.cpp") << body;
+        return runProgram({"/usr/bin/env", "RAYLAB_SANDBOX=fallback", (fs::path(RAYLAB_GRADING_BIN) / "raylab-build-guard").string(),
+                           "--allow", f.submission.string(), "--allow", "/usr", "--", RAYLAB_CXX_COMPILER, "-MD", "-MF",
+                           (f.root / "file.d").string(), "-c", (f.submission / "file.cpp").string(), "-o", (f.root / "file.o").string()},
+                          f.root / "output.txt", f.root);
+    };
+    const ProgramRun honest = compile("#include <vector>\nint f() { return int(std::vector<int>(3).size()); }\n");
+    CHECK_MESSAGE(honest.status == 0, honest.output);
+    fs::remove(f.root / "file.o");
+    const ProgramRun stealing =
+        compile("asm(\".section .rodata\\n.incbin \\\"" + (f.secret / "answer.txt").string() + "\\\"\\n.text\");\n");
+    CHECK(stealing.status != 0);
+    CHECK(stealing.output.find(kSecret) == std::string::npos);
+    CHECK_FALSE(f.objectExists());
+}
+
+TEST_CASE("an object file past kCompilerFileBytes stops the assembler, under every sandbox; nothing of it is left") {
+    std::vector<std::string> sandboxes{"none"};
+    if (raylab::grader::bubblewrapMissing().empty()) sandboxes.push_back("bubblewrap");
+    if (geteuid() == 0) sandboxes.push_back("fallback");
+    else MESSAGE("the fallback needs root: not tested here");
+    for (const std::string& sandbox : sandboxes) {
+        CAPTURE(sandbox);
+        const Folders f;
+        // 100 MB of data from a line of source: the object would be that large.
+        const ProgramRun run = f.compileIn(sandbox, "big.cpp", "asm(\".section .rodata\\n.fill 100000000, 1, 1\\n.text\");\n");
+        CHECK(run.status != 0);
+        CHECK_MESSAGE(run.output.find("File size limit exceeded") != std::string::npos, run.output); // the grader's cue
+        CHECK_FALSE(f.objectExists());
+        for (const auto& entry : fs::directory_iterator(f.root)) // no private folder left
+            CHECK(entry.path().filename().string().rfind(".raylab-guard-", 0) == std::string::npos);
+    }
+}
+
 TEST_CASE("a compile error stays the compiler's: its status, no refusal line") {
     const Folders f;
     const ProgramRun run = f.compile("broken.cpp", "not C++ at all\n");
@@ -169,7 +216,7 @@ TEST_CASE("a compiler that runs past the wall-clock limit is stopped with its pr
                                       f.root / "output.txt");
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     CHECK(run.status == 1);
-    CHECK_MESSAGE(run.output.find("raylab-build-guard: stopped: sleep") != std::string::npos, run.output);
+    CHECK_MESSAGE(run.output.find("raylab-build-guard: time: sleep") != std::string::npos, run.output);
     CHECK(seconds < 30.); // far below the sleep's 60 s: it was killed, not waited for
 }
 

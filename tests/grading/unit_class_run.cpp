@@ -3,10 +3,13 @@
 // problems cell, short and whole characters.
 #include "grader/course/class_run.h"
 #include "grader/course/run_scratch.h"
+#include "grader/course/submission.h"
 #include "src/csv.h"
 #include "src/text.h"
+#include "src/atomic_file.h"
 #include "support/files.h"
 #include "support/read_csv.h"
+#include "support/small_disk.h"
 
 #include <doctest/doctest.h>
 
@@ -15,15 +18,17 @@
 #include <iterator>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 #if defined(__unix__) || defined(__APPLE__)
+#include <cstdio>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
 #endif
 
 namespace fs = std::filesystem;
-using raylab::grader::printableName;
+using raylab::printableName;
 using raylab::grader::removeAbandonedScratch;
 using raylab::grader::RunScratch;
 using raylab::grader::problemSummary;
@@ -76,6 +81,11 @@ TEST_CASE("printable names: one line of UTF-8, control characters and bytes that
     for (const std::string& name : std::vector<std::string>{"bad\xFEname", "bad\xFFname", "bad\\xFEname", "bad\xEF\xBF\xBDname", "new\nline",
                                    "new\\nline", std::string("nul\0", 4), "nul\\x00"})
         CHECK_MESSAGE(shown.insert(printableName(name)).second, printableName(name));
+}
+
+TEST_CASE("printable paths: a folder's newline and escape sequence shown as the names are, '/' between folders") {
+    CHECK(raylab::printablePath(fs::path("class") / "new\nline\x1B[2J" / "gradient.cpp") == "class/new\\nline\\x1B[2J/gradient.cpp");
+    CHECK(raylab::printablePath("plain/path") == "plain/path");
 }
 
 TEST_CASE("printable messages keep their lines and tabs, and are UTF-8 whatever the bytes") {
@@ -178,6 +188,117 @@ TEST_CASE("a class run prepares once, before the first student it grades, and no
     CHECK_FALSE(fs::exists(steps));
     fs::remove_all(root);
 }
+
+#ifdef __linux__
+
+namespace {
+
+// runClass's exit status, and what it and the students' processes printed.
+std::pair<int, std::string> runClassPrinting(const raylab::grader::ClassRunOptions& options,
+                                             const raylab::grader::GradeStudent& grade, const fs::path& printed) {
+    std::fflush(stdout);
+    const int saved = ::dup(1), file = ::open(printed.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    REQUIRE(file >= 0);
+    ::dup2(file, 1);
+    ::close(file);
+    const int status = raylab::grader::runClass(options, grade);
+    std::fflush(stdout);
+    ::dup2(saved, 1);
+    ::close(saved);
+    return {status, raylab::test::readFile(printed)};
+}
+
+std::size_t occurrences(const std::string& text, const std::string& part) {
+    std::size_t count = 0;
+    for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++count;
+    return count;
+}
+
+} // namespace
+
+// A real full disk: the results folder is a tmpfs of 20 MB, and each student's report takes 6 MB.
+TEST_CASE("a full results disk: said once, the student concerned not graded, the run stops keeping every result; the "
+          "next run, with room, resumes") {
+    const fs::path root = raylab::test::freshFolder("raylab-unit-full-disk");
+    raylab::test::SmallDisk disk(root / "out", 20);
+    if (!disk.mounted()) {
+        MESSAGE("SKIPPED: " << disk.why);
+        return;
+    }
+    const std::vector<std::string> names{"ann", "bob", "cid", "dan", "eve", "fay"};
+    for (const std::string& name : names) {
+        fs::create_directories(root / "class" / name);
+        std::ofstream(root / "class" / name / "gradient.cpp") << "// work\n";
+    }
+    raylab::grader::ClassRunOptions options;
+    options.classFolder = root / "class";
+    options.out = root / "out";
+    const auto grade = [](const raylab::grader::StudentWork& work) {
+        raylab::writeFileAtomically(work.folder / "report.bin", std::string(std::size_t(6) << 20, 'r'));
+        return raylab::grader::StudentRecord{work.name, {{"total", "1"}}};
+    };
+    const auto graded = [&] {
+        std::vector<std::string> found;
+        for (const std::string& name : names)
+            if (fs::exists(root / "out" / "students" / name / "result.json")) found.push_back(name);
+        return found;
+    };
+    const std::vector<std::string> firstThree{"ann", "bob", "cid"};
+
+    const auto [status, output] = runClassPrinting(options, grade, root / "first.txt");
+    CHECK(status == 1);
+    CHECK_MESSAGE(occurrences(output, "not graded: disk full") == 1, output);
+    const std::size_t dan = output.find("dan" + std::string(18, ' ') + "not graded: disk full\n"); // its line, padded
+    CHECK_MESSAGE((dan == 0 || (dan != std::string::npos && output[dan - 1] == '\n')), output);
+    CHECK_MESSAGE(occurrences(output, "stopped: a disk is full") == 1, output);
+    CHECK_MESSAGE(output.find("eve") == std::string::npos, output); // the run stopped: no student after
+    CHECK(graded() == firstThree);
+    CHECK(raylab::test::readCsv(raylab::test::readFile(root / "out" / "grades.csv")).size() == 1 + 3);
+
+    // Still full: the next run keeps the three and stops at the same student, saying so once again.
+    const auto [again, againOutput] = runClassPrinting(options, grade, root / "again.txt");
+    CHECK(again == 1);
+    CHECK_MESSAGE(occurrences(againOutput, "already graded") == 3, againOutput);
+    CHECK_MESSAGE(occurrences(againOutput, "not graded: disk full") == 1, againOutput);
+    CHECK(graded() == firstThree);
+
+    // With room, the same command resumes where it stopped and ends with every student.
+    REQUIRE(disk.resize(100));
+    const auto [resumed, resumedOutput] = runClassPrinting(options, grade, root / "resumed.txt");
+    CHECK_MESSAGE(resumed == 0, resumedOutput);
+    CHECK(occurrences(resumedOutput, "already graded") == 3);
+    CHECK(graded() == names);
+    CHECK(raylab::test::readCsv(raylab::test::readFile(root / "out" / "grades.csv")).size() == 1 + names.size());
+}
+
+// The build's words for a full disk, from a stand-in for CMake: the code's error on a disk with room,
+// a full disk (which stops a class run) on one without.
+TEST_CASE("a build that fails on a full disk is a full disk, not the code's compile error") {
+    const fs::path root = raylab::test::freshFolder("raylab-unit-build-full-disk");
+    raylab::test::SmallDisk disk(root / "build", 100);
+    if (!disk.mounted()) {
+        MESSAGE("SKIPPED: " << disk.why);
+        return;
+    }
+    const fs::path cmake = root / "cmake";
+    std::ofstream(cmake) << "#!/bin/sh\necho 'lab3.dir/sphere_geometry.cpp.o: No space left on device' >&2\nexit 1\n";
+    fs::permissions(cmake, fs::perms::owner_all);
+    fs::create_directories(root / "labs");
+    const raylab::grader::Toolchain tools{cmake.string(), "", {}};
+    const auto build = [&] { return raylab::grader::buildSubmission(tools, root, root / "labs", root / "build", {}, root / "build.log"); };
+    const raylab::grader::SubmissionBuild roomy = build();
+    CHECK_MESSAGE(roomy.compilerMessage.find("No space left on device") != std::string::npos, roomy.compilerMessage);
+
+    std::ofstream(root / "build" / "filler", std::ios::binary) << std::string(fs::space(root / "build").available - (1 << 20), 'f');
+    try {
+        build();
+        FAIL("a build on a full disk was graded as the code's error");
+    } catch (const std::exception& e) {
+        CHECK_MESSAGE(raylab::grader::isDiskFull(e), e.what());
+    }
+}
+
+#endif
 
 } // TEST_SUITE
 #endif

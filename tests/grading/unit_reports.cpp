@@ -4,6 +4,7 @@
 #include "support/run_program.h"
 #include "grader/course/glossary_links.h"
 #include "grader/course/grade_reports.h"
+#include "grader/course/submission.h"
 #include "grader/sandbox/process.h"
 #include "src/messages.h"
 
@@ -107,6 +108,43 @@ TEST_CASE("the console links each term of the glossary once, at its first use, i
     setLanguage(Language::En);
     CHECK(withGlossaryLinks("RMSE 2 LSB\nLSBs and NaNs\nNaN") ==
           "RMSE 2 LSB (see docs/glossary.md#lsb, docs/glossary.md#rmse)\nLSBs and NaNs\nNaN (see docs/glossary.md#nan)");
+    setLanguage(before);
+}
+
+TEST_CASE("a build's problem says the cause a person acts on first, in place of the build tools' words, in the reader's "
+          "language") {
+    const Language before = language();
+    setLanguage(Language::En);
+    const std::string memory = buildProblem(
+        {"[ 50%] Building CXX object sphere_geometry.cpp.o\nvirtual memory exhausted: Cannot allocate memory\n"
+         "g++: fatal error: Killed signal terminated program cc1plus\ncompilation terminated.\n"
+         "gmake[2]: *** [CMakeFiles/lab3.dir/sphere_geometry.cpp.o] Error 1\n",
+         "", 0});
+    CHECK_MESSAGE(memory.rfind("the compiler ran out of memory (a file that expands too much?)\n", 0) == 0, memory);
+    CHECK(memory.find("ran out of memory") == memory.rfind("ran out of memory")); // said once
+    for (const char* noise : {"virtual memory", "Killed signal", "gmake"}) CHECK_MESSAGE(memory.find(noise) == std::string::npos, memory);
+
+    // The guard's words for a compiler it stopped: a cause, first, before the errors it printed until then.
+    const std::string time = buildProblem({"a.cpp:5:9: error: 'y' was not declared\n"
+                                           "raylab-build-guard: time: labs/lab3_sphere/sphere_geometry.cpp\n", "", 0});
+    CHECK_MESSAGE(time.rfind("compiling labs/lab3_sphere/sphere_geometry.cpp: the compiler ran past its time limit", 0) == 0, time);
+    CHECK(time.find("a.cpp:5:9: error: 'y' was not declared") != std::string::npos);
+    CHECK_MESSAGE(buildProblem({"raylab-build-guard: killed: a.cpp\n", "", 0}).rfind("compiling a.cpp: the compiler was killed, most "
+                                                                                   "likely out of memory", 0) == 0, time);
+    const std::string big = buildProblem({"g++: internal compiler error: File size limit exceeded signal terminated program as\n", "", 0});
+    CHECK_MESSAGE(big.find("the compiler stopped at the 32 MB limit on each file it writes") != std::string::npos, big);
+
+    // A gigabyte of errors: the first and the last kept, the cut said, the first error still there.
+    const KeptOutput cut{"a.cpp:1:2: error: 'x' was not declared\n", "z.cpp:9:1: error: expected ';'\n", 1073612345};
+    const std::string many = buildProblem(cut);
+    CHECK_MESSAGE(many.rfind("the compiler's output was cut to 128 KB (1,073,612,345 bytes left out)", 0) == 0, many);
+    CHECK(many.find("a.cpp:1:2: error: 'x' was not declared") != std::string::npos);
+    CHECK(many.find("z.cpp:9:1: error: expected ';'") != std::string::npos);
+    setLanguage(Language::Fr);
+    const std::string french = buildProblem(cut);
+    CHECK_MESSAGE(french.find("1\u00A0073\u00A0612\u00A0345 octets omis") != std::string::npos, french);
+    CHECK_MESSAGE(buildProblem({"virtual memory exhausted\n", "", 0}).find("le compilateur a manqué de mémoire") != std::string::npos,
+                  french);
     setLanguage(before);
 }
 

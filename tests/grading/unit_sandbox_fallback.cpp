@@ -1,9 +1,11 @@
 // The sandbox where bubblewrap cannot start and the grader is root (sandbox/unprivileged.h), forced
 // with RAYLAB_SANDBOX=fallback on a machine that has bubblewrap: the agent runs as another user, in
-// a scratch folder of its own; it cannot take root back, write the grader's folders or read a file
-// only root can read; with libseccomp, it opens no network socket and reads no process's memory.
+// a scratch folder of its own, from a copy of its program; it cannot take root back, write the grader's
+// folders, read a file only root can read, or run another program of its folder; with libseccomp, it
+// opens no network socket and reads no process's memory; with Landlock, it opens no file it was not given.
 // Each test also runs the probe in the process group (as root), which does all of it: the probe
 // sees what the test claims.
+#include "grader/sandbox/landlock.h"
 #include "grader/sandbox/sandbox.h"
 #include "support/files.h"
 
@@ -21,7 +23,9 @@ namespace fs = std::filesystem;
 
 #ifdef __linux__
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
@@ -110,7 +114,7 @@ TEST_CASE("an agent runs as an unprivileged user: no root, nothing of the grader
 TEST_CASE("its seccomp filter: no AF_INET socket, no process_vm_readv; AF_UNIX still works") {
     if (skippedUnlessRoot()) return;
     const FallbackForced fallback;
-    if (sandboxKind(SandboxLimits{}) != "unprivileged user") {
+    if (sandboxKind(SandboxLimits{}).find("no seccomp filter") != std::string::npos) {
         MESSAGE("SKIPPED: raylab was built without libseccomp (" << sandboxKind(SandboxLimits{}) << ")");
         return;
     }
@@ -122,6 +126,100 @@ TEST_CASE("its seccomp filter: no AF_INET socket, no process_vm_readv; AF_UNIX s
     const nlohmann::json open = privileges(folders, false);
     CHECK(open["inet"] == true);
     CHECK(open["peeked"] == true);
+}
+
+TEST_CASE("a tree in a folder only root may enter (as /root): the agent runs, reads its inputs, and nothing beside") {
+    if (skippedUnlessRoot()) return;
+    const FallbackForced fallback;
+    // home/ as /root is (0700), the build's programs and the scenes in it, as the grader's tree would be.
+    const fs::path home = raylab::test::freshFolder("raylab-fallback-home");
+    const fs::path bin = home / "build" / "bin", scenes = home / "scenes";
+    fs::create_directories(bin);
+    fs::create_directories(scenes);
+    fs::copy_file(kProbe, bin / "raylab-agent-lab1");
+    fs::copy_file(kProbe, bin / "raylab-agent-reference");
+    std::ofstream(scenes / "figure.toml") << "its input";
+    std::ofstream(home / "solution.cpp") << "what it must not read";
+    fs::permissions(home, fs::perms::owner_all);
+    const std::string requests = "{\"sceneFile\":\"" + (scenes / "figure.toml").string() + "\"}\n";
+    const auto reach = [&](bool sandboxAllowed) {
+        SandboxLimits limits;
+        limits.bubblewrap = sandboxAllowed;
+        limits.wallSeconds = 20.;
+        const AgentRun run = runAgent({bin / "raylab-agent-lab1",
+                                       {"reach", (home / "solution.cpp").string(), (bin / "raylab-agent-reference").string()},
+                                       home / "scratch",
+                                       {scenes},
+                                       {},
+                                       requests},
+                                      limits);
+        for (const std::string& line : run.lines)
+            if (line.find("\"reach\"") != std::string::npos) return nlohmann::json::parse(line);
+        FAIL("the probe did not report: " << run.describe() << " " << run.stderrTail);
+        return nlohmann::json{};
+    };
+    const nlohmann::json confined = reach(true);
+    CHECK(confined["input"] == "its input"); // its scene, through its copy
+    CHECK(confined["sibling"] == false);     // a file of the tree beside it
+    CHECK(confined["ran"] == false);         // the reference's program beside it
+    const nlohmann::json open = reach(false); // root's process group: every one of them is there
+    CHECK(open["input"] == "its input");
+    CHECK(open["sibling"] == true);
+    CHECK(open["ran"] == true);
+    fs::remove_all(home);
+}
+
+TEST_CASE("with Landlock, a world-readable file it was not given cannot be opened") {
+    if (skippedUnlessRoot()) return;
+    if (detail::landlockAbi() == 0) {
+        MESSAGE("SKIPPED: this kernel has no Landlock");
+        return;
+    }
+    const FallbackForced fallback;
+    const GraderFolders folders;
+    const fs::path open = folders.root / "open" / "notes.txt"; // anyone may read it, without Landlock
+    fs::create_directories(open.parent_path());
+    std::ofstream(open) << "a classmate's file";
+    fs::permissions(folders.root, fs::perms(0755));
+    fs::permissions(open.parent_path(), fs::perms(0755));
+    fs::permissions(open, fs::perms(0644));
+    fs::remove_all(folders.scratch);
+    const AgentRun run = runAgent({kProbe, {"privileges", open.string(), folders.results.string()}, folders.scratch}, SandboxLimits{});
+    nlohmann::json said;
+    for (const std::string& line : run.lines)
+        if (line.find("\"privileges\"") != std::string::npos) said = nlohmann::json::parse(line);
+    REQUIRE_MESSAGE(!said.is_null(), run.describe() << " " << run.stderrTail);
+    CHECK(said["read"] == false);
+    CHECK(sandboxKind(SandboxLimits{}).find("no Landlock") == std::string::npos);
+}
+
+TEST_CASE("a Landlock ruleset: a file of an allowed folder opens, one beside it does not") {
+    if (detail::landlockAbi() == 0) {
+        MESSAGE("SKIPPED: this kernel has no Landlock");
+        return;
+    }
+    const fs::path root = raylab::test::freshFolder("raylab-landlock");
+    fs::create_directories(root / "allowed");
+    std::ofstream(root / "allowed" / "in.txt") << "in";
+    std::ofstream(root / "outside.txt") << "out";
+    detail::LandlockRules rules = detail::systemRules();
+    rules.read.push_back(root / "allowed");
+    const detail::LandlockRuleset ruleset(rules);
+    const pid_t child = fork(); // the restriction is for good: a child of the test's takes it
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        if (!detail::restrictSelf(ruleset.fd())) _exit(10);
+        const bool in = open((root / "allowed" / "in.txt").c_str(), O_RDONLY) >= 0;
+        const bool out = open((root / "outside.txt").c_str(), O_RDONLY) >= 0;
+        const bool written = open((root / "allowed" / "new.txt").c_str(), O_WRONLY | O_CREAT, 0644) >= 0;
+        _exit((in ? 0 : 1) | (out ? 2 : 0) | (written ? 4 : 0));
+    }
+    int status = 0;
+    REQUIRE(waitpid(child, &status, 0) == child);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0); // the allowed file read; nothing outside read; nothing written
+    CHECK(fs::exists(root / "outside.txt"));
+    fs::remove_all(root);
 }
 
 TEST_CASE("RAYLAB_SANDBOX and --no-sandbox name the mode the results record") {

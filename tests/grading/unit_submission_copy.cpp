@@ -195,7 +195,7 @@ TEST_CASE("a name that is not UTF-8 or holds a control character is shown escape
     u.write("lab3_sphere/bad\xfe\x1b[2Jname.cpp", "x");
     const SubmissionCopy copy = u.make();
     REQUIRE(copy.ignored.size() == 1);
-    CHECK(copy.ignored[0].rfind("lab3_sphere/bad\\xfe\\x1b[2Jname.cpp: not a lab file", 0) == 0);
+    CHECK(copy.ignored[0].rfind("lab3_sphere/bad\\xFE\\x1B[2Jname.cpp: not a lab file", 0) == 0);
 }
 
 } // TEST_SUITE

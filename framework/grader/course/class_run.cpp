@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdint>
@@ -18,11 +19,11 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #if defined(__unix__) || defined(__APPLE__)
 #define RAYLAB_POSIX_CLASS_RUN 1
-#include <cerrno>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/wait.h>
@@ -135,7 +136,7 @@ ClassEntries listClass(const fs::path& classFolder, const fs::path& out) {
     std::error_code error;
     const fs::path outCanonical = fs::weakly_canonical(out, error);
     auto it = fs::directory_iterator(classFolder, error);
-    if (error) throw std::runtime_error("cannot read the class folder " + classFolder.string() + ": " + error.message());
+    if (error) throw std::runtime_error("cannot read the class folder " + printablePath(classFolder) + ": " + error.message());
     for (; !error && it != fs::directory_iterator(); it.increment(error)) {
         const fs::path path = it->path();
         const std::string name = path.filename().string();
@@ -156,7 +157,7 @@ ClassEntries listClass(const fs::path& classFolder, const fs::path& out) {
             entries.students.push_back({name, path, studentsFolder(out) / safeStudentName(name)});
         }
     }
-    if (error) throw std::runtime_error("cannot read the class folder " + classFolder.string() + ": " + error.message());
+    if (error) throw std::runtime_error("cannot read the class folder " + printablePath(classFolder) + ": " + error.message());
     std::sort(entries.students.begin(), entries.students.end(),
               [](const StudentWork& a, const StudentWork& b) { return a.name < b.name; });
     return entries;
@@ -217,16 +218,16 @@ public:
         const fs::path file = out / kLockFile;
         m_fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
         if (m_fd < 0) {
-            problem = "cannot open the lock " + file.string() + ": " + std::strerror(errno);
+            problem = "cannot open the lock " + printablePath(file) + ": " + std::strerror(errno);
             return false;
         }
         if (::flock(m_fd, LOCK_EX | LOCK_NB) != 0) {
             if (errno != EWOULDBLOCK) {
-                problem = "cannot take the lock " + file.string() + ": " + std::strerror(errno);
+                problem = "cannot take the lock " + printablePath(file) + ": " + std::strerror(errno);
                 return false;
             }
-            const std::string holder = "another grade-class run (" + holderPid() + ") is grading into " + out.string() +
-                                       " (lock: " + file.string() + ")";
+            const std::string holder = "another grade-class run (" + holderPid() + ") is grading into " + printablePath(out) +
+                                       " (lock: " + printablePath(file) + ")";
             if (!wait) {
                 problem = holder + "; wait for it to finish, or add --wait";
                 return false;
@@ -235,13 +236,13 @@ public:
             std::fflush(stdout);
             while (::flock(m_fd, LOCK_EX) != 0)
                 if (errno != EINTR || g_stopSignal != 0) {
-                    problem = "stopped while waiting for the lock " + file.string();
+                    problem = "stopped while waiting for the lock " + printablePath(file);
                     return false;
                 }
         }
         const std::string pid = std::to_string(getpid()) + "\n";
         if (::ftruncate(m_fd, 0) != 0 || ::pwrite(m_fd, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
-            problem = "cannot write the lock " + file.string() + ": " + std::strerror(errno);
+            problem = "cannot write the lock " + printablePath(file) + ": " + std::strerror(errno);
             return false;
         }
         return true;
@@ -277,7 +278,20 @@ public:
 
 // ---- grading one student ------------------------------------------------------------------------
 
-enum class Outcome { Graded, Stopped, Failed };
+enum class Outcome { Graded, Stopped, Failed, DiskFull };
+
+// The exit status of a student's process that stopped on a full disk (sysexits' EX_TEMPFAIL: the
+// next run, once there is room, succeeds).
+constexpr int kDiskFullStatus = 75;
+
+// Whether runInOwnProcess's status says so.
+bool diskFullStatus(int status) {
+#ifdef RAYLAB_POSIX_CLASS_RUN
+    return WIFEXITED(status) && WEXITSTATUS(status) == kDiskFullStatus;
+#else
+    return status == kDiskFullStatus;
+#endif
+}
 
 void gradeAndRecord(const StudentWork& work, const GradeStudent& grade, const Settings& madeBy) {
     StudentRecord record = grade(work);
@@ -334,8 +348,8 @@ std::optional<int> runInOwnProcess(const std::function<void()>& work, const std:
         try {
             work();
         } catch (const std::exception& e) {
-            std::fprintf(stderr, "raylab: error: %s\n", e.what());
-            status = 1;
+            std::fprintf(stderr, "raylab: error: %s\n", printableText(e.what()).c_str());
+            status = isDiskFull(e) ? kDiskFullStatus : 1;
         }
         std::fflush(nullptr);
         _exit(status);
@@ -370,6 +384,7 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, co
             try {
                 gradeAndRecord(work, grade, madeBy);
             } catch (const std::exception& e) {
+                if (isDiskFull(e)) throw;
                 throw std::runtime_error("grading " + printableName(work.name) + ": " + e.what());
             }
         },
@@ -378,6 +393,7 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, co
     std::error_code error;
     if (fs::exists(work.folder / kResultFile, error)) return Outcome::Graded; // written whole, even if stopped just after
     if (g_stopSignal != 0) return Outcome::Stopped;
+    if (diskFullStatus(*status)) return Outcome::DiskFull;
     why = describeStatus(*status);
     return Outcome::Failed;
 }
@@ -390,7 +406,7 @@ std::optional<int> runInOwnProcess(const std::function<void()>& work, const std:
         return 0;
     } catch (const std::exception& e) {
         why = e.what();
-        return 1;
+        return isDiskFull(e) ? kDiskFullStatus : 1;
     }
 }
 
@@ -401,13 +417,20 @@ Outcome gradeInOwnProcess(const StudentWork& work, const GradeStudent& grade, co
         return Outcome::Graded;
     } catch (const std::exception& e) {
         why = e.what();
-        return g_stopSignal != 0 ? Outcome::Stopped : Outcome::Failed;
+        return g_stopSignal != 0 ? Outcome::Stopped : isDiskFull(e) ? Outcome::DiskFull : Outcome::Failed;
     }
 }
 
 #endif
 
 const char* signalName(int signal) { return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal"; }
+
+// Said once, when a disk is full: the run stops, what it graded is kept, and the next run resumes.
+int stopOnFullDisk(const fs::path& out) {
+    std::printf("%s\n", tr("grade.disk_full_stopped", {{"students", printablePath(studentsFolder(out))}}).c_str());
+    std::fflush(stdout);
+    return 1;
+}
 
 } // namespace
 
@@ -434,8 +457,6 @@ std::string safeStudentName(const std::string& folderName) {
     return cut;
 }
 
-std::string printableName(const std::string& folderName) { return printableText(folderName, TextForm::Name); }
-
 int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
     const fs::path& out = options.out;
     fs::create_directories(studentsFolder(out));
@@ -447,71 +468,94 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
         std::fprintf(stderr, "raylab: error: %s\n", problem.c_str());
         return 1;
     }
-    std::map<std::string, StudentRecord> ledger = readLedger(out), madeOtherwise;
-    for (auto it = ledger.begin(); it != ledger.end();) // not this run's: graded again, out of the CSV until then
-        if (it->second.madeBy != options.madeBy) {
-            madeOtherwise.insert(*it);
-            it = ledger.erase(it);
-        } else {
-            ++it;
-        }
-    writeGrades(out, ledger); // the CSV of every finished student, even if a last run stopped before it
-    const ClassEntries entries = listClass(options.classFolder, out);
-    for (const std::string& line : entries.skipped) std::printf("%s\n", line.c_str());
-    std::vector<std::string> unfinished;
-    bool prepared = false;
-    for (const StudentWork& work : entries.students) {
-        if (g_stopSignal != 0) break;
-        const std::string shown = printableName(work.name);
-        const std::string safe = work.folder.filename().string();
-        if (ledger.count(safe)) {
-            std::printf("%-20s already graded (%s)\n", shown.c_str(), (work.folder / kResultFile).string().c_str());
-            continue;
-        }
-        if (const auto old = madeOtherwise.find(safe); old != madeOtherwise.end())
-            std::printf("%-20s %s\n", shown.c_str(),
-                        tr("grade.graded_again", {{"changes", settingsChanged(old->second.madeBy, options.madeBy)}}).c_str());
-        std::string why;
-        std::vector<int> runOnly = options.runOnlyDescriptors;
-        runOnly.push_back(lock.descriptor());
-        if (options.beforeFirstStudent && !prepared) { // stopped with the run, as a student's grading
-            prepared = true;
-            runInOwnProcess(options.beforeFirstStudent, runOnly, why);
+    // A full disk (here, or in a student's process) stops the run: every student after would fail alike.
+    try {
+        std::map<std::string, StudentRecord> ledger = readLedger(out), madeOtherwise;
+        for (auto it = ledger.begin(); it != ledger.end();) // not this run's: graded again, out of the CSV until then
+            if (it->second.madeBy != options.madeBy) {
+                madeOtherwise.insert(*it);
+                it = ledger.erase(it);
+            } else {
+                ++it;
+            }
+        writeGrades(out, ledger); // the CSV of every finished student, even if a last run stopped before it
+        const ClassEntries entries = listClass(options.classFolder, out);
+        for (const std::string& line : entries.skipped) std::printf("%s\n", line.c_str());
+        std::vector<std::string> unfinished;
+        bool prepared = false;
+        for (const StudentWork& work : entries.students) {
             if (g_stopSignal != 0) break;
+            const std::string shown = printableName(work.name);
+            const std::string safe = work.folder.filename().string();
+            if (ledger.count(safe)) {
+                std::printf("%-20s already graded (%s)\n", shown.c_str(), printablePath(work.folder / kResultFile).c_str());
+                continue;
+            }
+            if (const auto old = madeOtherwise.find(safe); old != madeOtherwise.end())
+                std::printf("%-20s %s\n", shown.c_str(),
+                            tr("grade.graded_again", {{"changes", settingsChanged(old->second.madeBy, options.madeBy)}}).c_str());
+            std::string why;
+            std::vector<int> runOnly = options.runOnlyDescriptors;
+            runOnly.push_back(lock.descriptor());
+            if (options.beforeFirstStudent && !prepared) { // stopped with the run, as a student's grading
+                prepared = true;
+                const std::optional<int> status = runInOwnProcess(options.beforeFirstStudent, runOnly, why);
+                if (g_stopSignal != 0) break;
+                if (status && diskFullStatus(*status)) return stopOnFullDisk(out);
+            }
+            fs::create_directories(work.folder);
+            const Outcome outcome = gradeInOwnProcess(work, grade, options.madeBy, runOnly, why);
+            if (outcome == Outcome::Stopped) {
+                std::printf("%-20s interrupted: not graded (the next run grades them)\n", shown.c_str());
+                break;
+            }
+            if (outcome == Outcome::DiskFull) {
+                std::printf("%-20s %s\n", shown.c_str(), tr("grade.not_graded_disk_full").c_str());
+                return stopOnFullDisk(out);
+            }
+            std::optional<StudentRecord> record;
+            if (outcome == Outcome::Graded) record = readRecord(work.folder / kResultFile);
+            if (!record) {
+                std::printf("%-20s not graded: %s\n", shown.c_str(), why.empty() ? "no result was written" : why.c_str());
+                unfinished.push_back(shown);
+                continue;
+            }
+            ledger[safe] = std::move(*record);
+            writeGrades(out, ledger);
+            std::fflush(stdout);
         }
-        fs::create_directories(work.folder);
-        const Outcome outcome = gradeInOwnProcess(work, grade, options.madeBy, runOnly, why);
-        if (outcome == Outcome::Stopped) {
-            std::printf("%-20s interrupted: not graded (the next run grades them)\n", shown.c_str());
-            break;
-        }
-        std::optional<StudentRecord> record;
-        if (outcome == Outcome::Graded) record = readRecord(work.folder / kResultFile);
-        if (!record) {
-            std::printf("%-20s not graded: %s\n", shown.c_str(), why.empty() ? "no result was written" : why.c_str());
-            unfinished.push_back(shown);
-            continue;
-        }
-        ledger[safe] = std::move(*record);
-        writeGrades(out, ledger);
         std::fflush(stdout);
+        if (g_stopSignal != 0) {
+            std::printf("stopped by %s; %s holds every student graded so far: run the same command again to resume\n",
+                        signalName(g_stopSignal), printablePath(out / "grades.csv").c_str());
+            std::fflush(stdout);
+            return 128 + g_stopSignal;
+        }
+        std::printf("grades: %s, reports: %s/<student>/report/index.html\n", printablePath(out / "grades.csv").c_str(),
+                    printablePath(studentsFolder(out)).c_str());
+        if (!unfinished.empty()) {
+            std::string names;
+            for (const std::string& n : unfinished) names += (names.empty() ? "" : ", ") + n;
+            std::printf("not graded (run again to retry): %s\n", names.c_str());
+            return 1;
+        }
+        return 0;
+    } catch (const std::exception& e) {
+        if (!isDiskFull(e)) throw;
+        std::printf("raylab: %s\n", printableText(e.what()).c_str());
+        return stopOnFullDisk(out);
     }
-    std::fflush(stdout);
-    if (g_stopSignal != 0) {
-        std::printf("stopped by %s; %s holds every student graded so far: run the same command again to resume\n",
-                    signalName(g_stopSignal), (out / "grades.csv").string().c_str());
-        std::fflush(stdout);
-        return 128 + g_stopSignal;
-    }
-    std::printf("grades: %s, reports: %s/<student>/report/index.html\n", (out / "grades.csv").string().c_str(),
-                studentsFolder(out).string().c_str());
-    if (!unfinished.empty()) {
-        std::string names;
-        for (const std::string& n : unfinished) names += (names.empty() ? "" : ", ") + n;
-        std::printf("not graded (run again to retry): %s\n", names.c_str());
-        return 1;
-    }
-    return 0;
+}
+
+bool isDiskFull(const std::exception& e) {
+    std::error_code code;
+    if (const auto* write = dynamic_cast<const WriteError*>(&e)) code = write->code();
+    else if (const auto* system = dynamic_cast<const std::system_error*>(&e)) code = system->code();
+#ifdef EDQUOT
+    const bool system = code.category() == std::generic_category() || code.category() == std::system_category();
+    if (system && code.value() == EDQUOT) return true;
+#endif
+    return code == std::errc::no_space_on_device;
 }
 
 std::string problemSummary(const std::string& problem) {

@@ -3,9 +3,11 @@
 // result.json is written atomically when, and only when, that student's grading finished; grades.csv
 // is regenerated from those results, so an interrupted run resumes where it stopped and never
 // duplicates or loses a row. One run at a time per OUT (a lock); SIGINT and SIGTERM stop the run
-// cleanly: the student being graded is left ungraded and the next run grades them. No process of a
+// cleanly: the student being graded is left ungraded and the next run grades them; so does a full
+// disk, said once (isDiskFull), the student marked "not graded: disk full". No process of a
 // run outlives it, and only the run holds the lock, so the next run starts at once after a SIGKILL.
 
+#include <exception>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -16,7 +18,7 @@ namespace raylab::grader {
 
 using Settings = std::vector<std::pair<std::string, std::string>>; // name, value
 
-// A student's row of grades.csv: the folder's name as printableName shows it, and the cells after
+// A student's row of grades.csv: the folder's name as printableName (src/text.h) shows it, and the cells after
 // it, by column; and what made it (the run's `madeBy`).
 struct StudentRecord {
     std::string student;
@@ -53,18 +55,19 @@ struct ClassRunOptions {
 };
 
 // Grades every student of the class not graded yet. Returns the exit status: 0; 1 when OUT is held
-// by another run or a student's grading did not finish; 128 + the signal when interrupted
-// (130 for SIGINT, 143 for SIGTERM).
+// by another run, a student's grading did not finish, or a disk was full (the run stopped there);
+// 128 + the signal when interrupted (130 for SIGINT, 143 for SIGTERM).
 int runClass(const ClassRunOptions& options, const GradeStudent& grade);
+
+// Whether `e` says a disk is full (ENOSPC, or EDQUOT: a quota): a WriteError or a file system error.
+// A class run stops on it, saying so once; the student being graded is left for the next run. So
+// grade-class passes it on rather than grade the student as a build failure.
+bool isDiskFull(const std::exception& e);
 
 // A file name for any folder name, one to one: ASCII letters and digits, '_', and '-' and '.' after
 // the first character are kept, every other byte is written %XX. A name whose form is longer than
 // 160 bytes is cut and ends with '~' and a 64-bit hash of the whole name.
 std::string safeStudentName(const std::string& folderName);
-
-// The name as one line of UTF-8 for the terminal, grades.csv and the reports, one to one: control
-// characters as \n, \t, \r or \xHH, bytes that are not UTF-8 as \xHH, a backslash as \\.
-std::string printableName(const std::string& folderName);
 
 // A problem as a cell of grades.csv: its first line and its first three error lines (a build
 // problem may have a cause per lab), each cut at a word past 200 characters.

@@ -1,12 +1,18 @@
 #include "grader/course/submission.h"
 
+#include "grader/sandbox/build_limits.h"
 #include "grader/sandbox/process.h"
+#include "src/atomic_file.h"
 #include "src/messages.h"
+#include "src/text.h"
 
+#include <algorithm>
 #include <ctime>
-#include <fstream>
 #include <functional>
+#include <iomanip>
+#include <set>
 #include <sstream>
+#include <system_error>
 
 namespace raylab::grader {
 
@@ -20,6 +26,11 @@ constexpr long long kBuildSeconds = 180;
 
 // What a CMake cache value or list item cannot hold as it is.
 constexpr const char* kCmakeUnsafe = "\n\r;\"\\$#[]";
+
+// A build's output kept in its log: its first and last 64 KB, the first errors and how it ended. A
+// submission can make the compiler write a gigabyte (a template error repeated); a person reads the
+// first errors anyway, and the results disk of a class must not fill with them.
+constexpr std::size_t kLogKeptBytes = std::size_t(64) << 10;
 
 fs::path agentFile(const fs::path& binDir, const std::string& name) {
 #ifdef _WIN32
@@ -60,6 +71,31 @@ std::string ccacheLauncher(const Toolchain& tools, const fs::path& sourceDir, co
     return tools.cmake + ";-E;env;CCACHE_BASEDIR=" + base + ";" + tools.ccache.generic_string();
 }
 
+// "1,073,612,345": a count of bytes as a person reads it, in the reader's language.
+std::string grouped(std::uint64_t count) {
+    std::string digits = std::to_string(count), text;
+    const std::string separator = tr("number.thousands");
+    for (std::size_t k = 0; k < digits.size(); ++k) {
+        if (k > 0 && (digits.size() - k) % 3 == 0) text += separator;
+        text += digits[k];
+    }
+    return text;
+}
+
+// "32 MB", "64.8 MB": a size as the report names it (a program just over its limit is not "64 MB").
+std::string megabytes(std::uint64_t bytes) {
+    std::ostringstream count;
+    if (bytes % (std::uint64_t(1) << 20) == 0) count << (bytes >> 20);
+    else count << std::fixed << std::setprecision(1) << double(bytes) / double(std::uint64_t(1) << 20);
+    return tr("number.megabytes", {{"count", count.str()}});
+}
+
+// A program's kept output as its log holds it: the head, a line saying how much was cut, the tail.
+std::string logText(const KeptOutput& kept) {
+    if (kept.cut == 0) return kept.head + kept.tail;
+    return kept.head + "\n" + tr("build.output_cut", {{"bytes", grouped(kept.cut)}}) + "\n" + kept.tail;
+}
+
 // A refusal of raylab-build-guard (build_guard.cpp), in the reader's language; empty for another line.
 std::string guardRefusal(const std::string& line) {
     const std::string prefix = "raylab-build-guard: ";
@@ -70,10 +106,27 @@ std::string guardRefusal(const std::string& line) {
     const std::size_t arrow = rest.find(" <- ");
     const std::string source = rest.substr(0, arrow), read = arrow == std::string::npos ? "" : rest.substr(arrow + 4);
     if (why == "outside") return tr("build.guard_outside", {{"source", source}, {"file", read}});
-    if (why == "stopped") return tr("build.guard_stopped", {{"source", source}});
-    if (why == "build-time") return tr("build.guard_build_time", {{"source", source}, {"seconds", std::to_string(kBuildSeconds)}});
+    if (why == "time") return tr("build.guard_time", {{"source", source}});
+    if (why == "killed") return tr("build.guard_killed", {{"source", source}});
+    if (why == "build-time")
+        return tr("build.guard_build_time", {{"source", source}, {"seconds", std::to_string(kBuildSeconds)}});
     return tr("build.guard_unchecked", {{"source", source}});
 }
+
+// The build tools' words for a limit the compiler reached, and the cause a person acts on instead:
+// "virtual memory exhausted" and "Killed signal terminated program cc1plus" (the kernel's answer to a
+// compiler out of memory) say nothing to a student.
+struct LimitSign {
+    const char* words;
+    const char* cause; // a message key
+};
+constexpr LimitSign kLimitSigns[] = {
+    {"virtual memory exhausted", "build.out_of_memory"},
+    {"out of memory allocating", "build.out_of_memory"},
+    {"Cannot allocate memory", "build.out_of_memory"},
+    {"Killed signal terminated program", "build.out_of_memory"},
+    {"File size limit exceeded", "build.file_too_big"},
+};
 
 // make's and ninja's own lines ("gmake[2]: *** [...] Error 1", "FAILED: ..."): they repeat the
 // compiler's errors without their cause.
@@ -83,21 +136,78 @@ bool buildToolLine(const std::string& line) {
     return false;
 }
 
-// The lines that say what went wrong, not the whole log.
-std::string errorLines(const fs::path& log) {
-    std::ifstream in(log);
-    std::string all, errors;
+} // namespace
+
+std::string buildProblem(const KeptOutput& output) {
+    std::istringstream in(logText(output));
+    std::string all, causes, errors;
+    std::set<std::string> said;
+    const auto sayOnce = [&](std::string& to, const std::string& line) {
+        if (said.insert(line).second) to += line + "\n";
+    };
     int count = 0;
     for (std::string line; std::getline(in, line);) {
-        if (const std::string refusal = guardRefusal(line); !refusal.empty()) line = "error: " + refusal;
+        if (const std::string refusal = guardRefusal(line); !refusal.empty()) {
+            // A compiler stopped by its limits: a cause; a file read outside: the code's error.
+            const bool limit = line.rfind("raylab-build-guard: time: ", 0) == 0 ||
+                               line.rfind("raylab-build-guard: build-time: ", 0) == 0 ||
+                               line.rfind("raylab-build-guard: killed: ", 0) == 0;
+            if (limit) {
+                sayOnce(causes, refusal);
+                continue;
+            }
+            line = "error: " + refusal;
+        }
         all += line + "\n";
-        const bool error = !buildToolLine(line) && (line.find("error") != std::string::npos || line.find("Error") != std::string::npos ||
-                                                    line.find("out of memory") != std::string::npos); // cc1plus past the guard's limit
-        if (error && errors.find(line + "\n") == std::string::npos && count++ < 40) errors += line + "\n"; // once each
+        const auto sign = std::find_if(std::begin(kLimitSigns), std::end(kLimitSigns),
+                                       [&](const LimitSign& s) { return line.find(s.words) != std::string::npos; });
+        if (sign != std::end(kLimitSigns)) {
+            sayOnce(causes, tr(sign->cause, {{"limit", megabytes(kCompilerFileBytes)}}));
+            continue;
+        }
+        const bool error =
+            !buildToolLine(line) && (line.find("error") != std::string::npos || line.find("Error") != std::string::npos);
+        if (error && count < 40 && said.count(line) == 0) { // once each
+            sayOnce(errors, line);
+            ++count;
+        }
     }
-    if (!errors.empty()) return errors;
+    if (output.cut > 0) {
+        const std::string kept = tr("number.kilobytes", {{"count", std::to_string(2 * (kLogKeptBytes >> 10))}});
+        causes += tr("build.output_was_cut", {{"kept", kept}, {"bytes", grouped(output.cut)}}) + "\n";
+    }
+    if (!causes.empty() || !errors.empty()) return causes + errors;
     if (all.size() > 3000) all.erase(0, all.size() - 3000).insert(0, "...");
     return all;
+}
+
+namespace {
+
+// Whether `program` was built and is no larger than the limit. One larger is removed (the build
+// folder may be a class's, shared) and named first in `b`'s message.
+bool usableProgram(const fs::path& program, SubmissionBuild& b) {
+    std::error_code error;
+    const std::uintmax_t size = fs::file_size(program, error);
+    if (error) return false;
+    if (size <= kAgentProgramBytes) return true;
+    fs::remove(program, error);
+    const std::string refused = tr("build.program_too_big", {{"program", program.filename().string()},
+                                                             {"size", megabytes(size)},
+                                                             {"limit", megabytes(kAgentProgramBytes)}});
+    b.compilerMessage.insert(0, refused + "\n");
+    return false;
+}
+
+// A build that failed for want of room is no fault of the submission: it is said as a full disk (a
+// class run stops on it, class_run.h), not graded as a compile error. The build's words alone are not
+// enough (a submission can print them): the disk must be nearly full too.
+void requireRoom(const KeptOutput& output, const fs::path& buildDir) {
+    if ((output.head + output.tail).find("No space left on device") == std::string::npos) return;
+    std::error_code error;
+    const fs::space_info space = fs::space(buildDir, error);
+    if (!error && space.available >= kCompilerFileBytes) return;
+    throw fs::filesystem_error("the build stopped on a full disk", buildDir,
+                               std::make_error_code(std::errc::no_space_on_device));
 }
 
 // The agent of one lab, built with the other labs from the reference (framework/grader/CMakeLists.txt).
@@ -151,11 +261,12 @@ std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>
 
 bool buildGradingKit(const Toolchain& tools, const fs::path& sourceDir, const fs::path& buildDir, const fs::path& log) {
     fs::create_directories(buildDir);
-    std::error_code error;
-    fs::remove(log, error);
-    const ProcessOptions toLog{{}, log};
-    return runProcess(configureCommand(tools, sourceDir, buildDir, "", LabCatalog{}), toLog).succeeded() &&
-           runProcess(buildCommand(tools, buildDir, "raylab-grading-kit"), toLog).succeeded();
+    const ProcessOptions keep{.keepOutput = kLogKeptBytes};
+    const ProcessResult configured = runProcess(configureCommand(tools, sourceDir, buildDir, "", LabCatalog{}), keep);
+    const ProcessResult built =
+        configured.succeeded() ? runProcess(buildCommand(tools, buildDir, "raylab-grading-kit"), keep) : ProcessResult{};
+    writeFileAtomically(log, logText(configured.kept) + configured.error + logText(built.kept));
+    return built.succeeded();
 }
 
 SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDir, const fs::path& labs,
@@ -174,36 +285,41 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     std::vector<std::string> build = buildCommand(tools, buildDir, "raylab-submission-agents");
     if (tools.generator.find("Ninja") != std::string::npos) build.insert(build.end(), {"--", "-k", "0"});
     else if (tools.generator.find("Makefiles") != std::string::npos) build.insert(build.end(), {"--", "-k"});
-    fs::remove(b.log, error);
-    const ProcessOptions toLog{{}, b.log};
-    const ProcessResult configured = runProcess(configure, toLog);
+    const ProcessOptions keep{.keepOutput = kLogKeptBytes};
+    const ProcessResult configured = runProcess(configure, keep);
     if (!configured.succeeded()) {
-        b.compilerMessage = configured.started ? errorLines(b.log) : configured.error;
+        writeFileAtomically(b.log, logText(configured.kept) + configured.error);
+        requireRoom(configured.kept, buildDir);
+        b.compilerMessage = configured.started ? buildProblem(configured.kept) : configured.error;
         b.brokenLabs = numbers;
         return b;
     }
     // What no student changes first (nothing to do in a class, whose kit is built), so that the
     // build's deadline is the student's files' alone; a failure there shows in the build below.
-    runProcess(buildCommand(tools, buildDir, "raylab-grading-kit"), toLog);
-    ProcessOptions toBuild = toLog;
+    const ProcessResult kit = runProcess(buildCommand(tools, buildDir, "raylab-grading-kit"), keep);
+    ProcessOptions toBuild = keep;
     toBuild.environment = {"RAYLAB_BUILD_DEADLINE=" + std::to_string(std::time(nullptr) + kBuildSeconds)};
     const ProcessResult built = runProcess(build, toBuild);
-    if (!built.succeeded()) b.compilerMessage = built.started ? errorLines(b.log) : built.error;
+    writeFileAtomically(b.log, logText(configured.kept) + logText(kit.kept) + logText(built.kept) + built.error);
+    if (!built.succeeded()) {
+        requireRoom(built.kept, buildDir);
+        b.compilerMessage = built.started ? buildProblem(built.kept) : built.error;
+    }
     b.isolated = fs::is_directory(sourceDir / "solutions", error);
     if (b.isolated) {
         for (int lab : numbers) {
             const fs::path program = labAgent(bin, lab);
-            if (fs::exists(program, error)) b.agents.push_back({program, lab});
+            if (usableProgram(program, b)) b.agents.push_back({program, lab});
             else b.brokenLabs.push_back(lab);
         }
-    } else if (fs::exists(agentFile(bin, "raylab-agent"), error)) {
+    } else if (usableProgram(agentFile(bin, "raylab-agent"), b)) {
         b.agents.push_back({agentFile(bin, "raylab-agent"), 0});
     } else {
         // Some lab did not compile: each lab's own agent (the labs it uses from the submission, the
         // others' stubs) grades it when its labs compiled.
         for (int lab : numbers) {
             const fs::path program = labAgent(bin, lab);
-            if (fs::exists(program, error)) b.agents.push_back({program, lab});
+            if (usableProgram(program, b)) b.agents.push_back({program, lab});
             else b.brokenLabs.push_back(lab);
         }
     }

@@ -5,6 +5,7 @@
 // with CMake, and finding the agents of a build.
 
 #include "grader/judge/grade.h"
+#include "grader/sandbox/process.h"
 
 #include <filesystem>
 #include <string>
@@ -22,10 +23,16 @@ struct SubmissionBuild {
     std::vector<AgentPlan> agents; // those that built: one for all labs, or one for each lab
     bool isolated = false;         // each lab's agent has the other labs from the reference (else the
                                    // labs it uses from the submission, the others' stubs)
-    std::vector<int> brokenLabs;   // labs whose agent did not build
-    std::string compilerMessage;   // the error lines of the build log, when something did not build
+    std::vector<int> brokenLabs;   // labs whose agent did not build, or was refused (over kAgentProgramBytes)
+    std::string compilerMessage;   // buildProblem's, when something did not build
     std::filesystem::path log;
 };
+
+// What a build's output says went wrong, for the report: first the causes a person acts on (the
+// compiler ran out of memory or time, a file it wrote reached kCompilerFileBytes, the output was cut,
+// in the reader's language) in place of the build tools' words for them, then the error lines, each
+// once; without any, the output's end.
+std::string buildProblem(const KeptOutput& output);
 
 // The agents of a build folder's bin/: one for each of `labs` when solutions/ was there, else one
 // for all.
@@ -33,9 +40,11 @@ std::vector<AgentPlan> findAgents(const std::filesystem::path& binDir, const std
 
 // Configures (once) and builds the agents of the submission's copy `labs` in `buildDir`, keeping
 // going past errors so that the labs that compile are still graded: a lab that does not compile costs
-// that lab and, without solutions/, the labs that use it (`course`: the labs and their `uses`). The build's
-// output goes to `log` (empty: buildDir/build.log). A build folder may serve many submissions (a
-// class): each copy's objects are its own (CMake's targets are named after the copy's folder).
+// that lab and, without solutions/, the labs that use it (`course`: the labs and their `uses`). The
+// build's output, its first and last 64 KB, is written to `log` (empty: buildDir/build.log) when it
+// ends. A build that failed on a full disk throws std::filesystem_error (ENOSPC) rather than blame the
+// code. A build folder may serve many submissions (a class): each copy's objects are its own (CMake's
+// targets are named after the copy's folder).
 SubmissionBuild buildSubmission(const Toolchain& tools, const std::filesystem::path& sourceDir,
                                 const std::filesystem::path& labs, const std::filesystem::path& buildDir,
                                 const LabCatalog& course, const std::filesystem::path& log = {});

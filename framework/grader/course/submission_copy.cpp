@@ -2,11 +2,11 @@
 
 #include "src/atomic_file.h"
 #include "src/messages.h"
+#include "src/text.h"
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <map>
 #include <optional>
@@ -37,28 +37,6 @@ constexpr int kMaxDepth = 12;
 constexpr int kMaxEntries = 50000;
 // The grade lists this many ignored files, then how many more.
 constexpr std::size_t kMaxListed = 12;
-
-// A path as the reader sees it: control characters and bytes that are not UTF-8 escaped (\xNN), so
-// that no name can break a line, a terminal or a report, and two names never look alike.
-std::string printable(const std::string& text) {
-    std::string shown;
-    for (std::size_t k = 0; k < text.size();) {
-        const auto byte = static_cast<unsigned char>(text[k]);
-        std::size_t length = byte < 0x80 ? 1 : (byte >> 5) == 0x6 ? 2 : (byte >> 4) == 0xE ? 3 : (byte >> 3) == 0x1E ? 4 : 0;
-        for (std::size_t c = 1; length > 1 && c < length; ++c)
-            if (k + c >= text.size() || (static_cast<unsigned char>(text[k + c]) & 0xC0) != 0x80) length = 0;
-        if (length == 0 || byte < 0x20 || byte == 0x7F) {
-            char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\x%02x", unsigned(byte));
-            shown += escaped;
-            ++k;
-        } else {
-            shown.append(text, k, length);
-            k += length;
-        }
-    }
-    return shown;
-}
 
 std::string labFileNames(const LabCatalog& catalog) {
     std::string files;
@@ -169,7 +147,7 @@ public:
     std::vector<std::string> ignored;
 
     void ignore(const fs::path& relative, const std::string& why) {
-        ignored.push_back(tr("submission.ignored_file", {{"file", printable(relative.generic_string())}, {"why", why}}));
+        ignored.push_back(tr("submission.ignored_file", {{"file", printablePath(relative)}, {"why", why}}));
     }
 
 private:
@@ -227,7 +205,7 @@ SubmissionCopy copySubmission(const fs::path& submission, const LabCatalog& cata
                 if (std::find(copy.labs.begin(), copy.labs.end(), c.lab->number) == copy.labs.end())
                     copy.labs.push_back(c.lab->number);
             } else if (*bytes != *kept) {
-                walk.ignore(c.relative, tr("submission.other_copy", {{"file", printable(keptFrom.generic_string())}}));
+                walk.ignore(c.relative, tr("submission.other_copy", {{"file", printablePath(keptFrom)}}));
             }
         }
     }

@@ -35,9 +35,9 @@ std::map<std::uint64_t, Item*> byId(std::vector<Item>& items) {
 }
 
 protocol::Request requestFor(const GradeSetup& setup, const Item& item) {
-    if (item.check) return protocol::CheckRequest{item.id, item.check->calls};
+    if (item.check) return protocol::CheckRequest{item.id, item.check->calls, item.check->lab};
     return protocol::RenderRequest{item.id, fs::absolute(setup.scenes / (item.figure->id + ".toml")).string(), setup.seed,
-                                   setup.threads};
+                                   setup.threads, item.figure->lab};
 }
 
 int labOf(const Item& item) { return item.check ? item.check->lab : item.figure->lab; }

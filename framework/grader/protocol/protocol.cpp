@@ -82,9 +82,9 @@ Request readRequest(const json& j) {
     const auto item = field<std::uint64_t>(j, "item");
     if (type == "render")
         return RenderRequest{item, field<std::string>(j, "scene"), field<long long>(j, "seed"),
-                             field<int>(j, "threads")};
+                             field<int>(j, "threads"), field<int>(j, "lab")};
     if (type != "check") throw std::runtime_error("unknown request type " + type);
-    CheckRequest request{item, {}};
+    CheckRequest request{item, {}, field<int>(j, "lab")};
     for (const json& c : field<json>(j, "calls")) {
         const ProbeSpec* probe = probeNamed(field<std::string>(c, "probe"));
         if (probe == nullptr) throw std::runtime_error("unknown probe");
@@ -157,12 +157,13 @@ std::string serialize(const Request& request) {
                      {"item", r->item},
                      {"scene", r->sceneFile},
                      {"seed", r->seed},
-                     {"threads", r->threads}});
+                     {"threads", r->threads},
+                     {"lab", r->lab}});
     const auto& c = std::get<CheckRequest>(request);
     json calls = json::array();
     for (const Call& call : c.calls)
         calls.push_back({{"probe", call.probe->name}, {"inputs", numbers(call.inputs)}});
-    return dump({{"type", "check"}, {"item", c.item}, {"calls", calls}});
+    return dump({{"type", "check"}, {"item", c.item}, {"calls", calls}, {"lab", c.lab}});
 }
 
 std::string serialize(const Answer& answer) {

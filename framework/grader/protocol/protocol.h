@@ -69,15 +69,18 @@ private:
 };
 
 // Parent -> child.
+// Each names its lab: an agent built for one lab (raylab-agent-labN) answers that lab's items only.
 struct CheckRequest { // a function check: its calls, answered together
     std::uint64_t item;
     std::vector<Call> calls;
+    int lab;
 };
 struct RenderRequest { // a figure: the scene file to render
     std::uint64_t item;
     std::string sceneFile;
     long long seed; // >= 0: replaces the scene's seed
     int threads;
+    int lab;
 };
 using Request = std::variant<CheckRequest, RenderRequest>;
 

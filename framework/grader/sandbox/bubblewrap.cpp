@@ -52,14 +52,12 @@ std::vector<std::string> bubblewrapSystem(const fs::path& bwrap, const fs::path&
     if (tmp.empty()) args.insert(args.end(), {"--tmpfs", "/tmp"});
     else args.insert(args.end(), {"--bind", tmp.string(), "/tmp"});
     // /lib, /bin ... are links into /usr on merged systems, folders elsewhere.
-    for (const char* top : {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
+    for (const char* top : kSystemTopFolders) {
         std::error_code error;
         if (fs::is_symlink(top, error)) args.insert(args.end(), {"--symlink", fs::read_symlink(top).string(), top});
         else if (fs::is_directory(top, error)) addBind(args, "--ro-bind", top);
     }
-    // /etc/alternatives: Debian's c++ and cc are links through it.
-    for (const char* file : {"/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/localtime", "/etc/alternatives"})
-        addBind(args, "--ro-bind-try", file);
+    for (const char* file : kSystemEtcFiles) addBind(args, "--ro-bind-try", file);
     return args;
 }
 

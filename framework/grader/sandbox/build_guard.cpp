@@ -6,8 +6,9 @@
 //    student's work, or throw its bytes into the report: on Linux with bubblewrap the compiler runs
 //    confined (confined_compile.h), seeing only the allowed folders (the submission, the stubs, the
 //    include folders of the command line) and the system; where bubblewrap cannot start and we are
-//    root, it runs as an unprivileged user (unprivileged.h: it reads world-readable files only, and
-//    writes only its private folder); RAYLAB_SANDBOX=none|fallback in the environment chooses (see
+//    root, it runs as an unprivileged user (unprivileged.h: it writes only its private folder and,
+//    where the kernel has Landlock, opens only the system, the allowed folders and that folder; without
+//    Landlock it reads every world-readable file); RAYLAB_SANDBOX=none|fallback in the environment chooses (see
 //    sandboxMode). Then, a second wall, every file the compiler read must lie in an allowed folder
 //    or the compiler's own, checked on the dependency file it writes, after symlinks (`.incbin` is
 //    not in it: only the sandbox stops that);
@@ -18,9 +19,14 @@
 //    each lab file costs one build's time, not each file's.
 // Usage: raylab-build-guard [--allow DIR]... [--wall-seconds N] -- COMPILER ARGS...
 // A refusal is one line `raylab-build-guard: <why>: <source>[ <- <file read>]` on stderr, <why> one of `outside`,
-// `stopped`, `build-time` (the build's deadline passed), `no-depfile` (the grader says it in the
-// student's language, grader/submission.cpp), and exit status 1, with the object file removed.
+// `time` (past the CPU or wall-clock limit), `build-time` (the build's deadline passed), `killed` (by a
+// signal from elsewhere: out of memory), `no-depfile` (the grader says it in the student's language,
+// grader/submission.cpp), and exit status 1, with the object file removed; so is the object of a
+// compile that failed (one stopped at the file size limit, kCompilerFileBytes, would stay in a build
+// folder a class shares).
+#include "grader/sandbox/build_limits.h"
 #include "grader/sandbox/confined_compile.h"
+#include "grader/sandbox/landlock.h"
 #include "grader/sandbox/sandbox_internal.h"
 #include "grader/sandbox/scratch_file.h"
 #include "grader/sandbox/unprivileged.h"
@@ -52,7 +58,6 @@ namespace {
 constexpr rlim_t kCpuSeconds = 120;
 constexpr unsigned kWallSeconds = 300; // --wall-seconds N (the tests)
 constexpr rlim_t kMemoryBytes = rlim_t(2) << 30;
-constexpr rlim_t kFileBytes = rlim_t(1) << 30;
 constexpr std::size_t kDepfileBytes = std::size_t(16) << 20; // a lab file's lists a few hundred headers
 
 volatile std::sig_atomic_t g_compiler = 0; // the compiler's process group, once started
@@ -153,10 +158,13 @@ fs::path resolved(const fs::path& path) {
     return error ? fs::absolute(path).lexically_normal() : real;
 }
 
+// What stopped a compiler that did not end by itself.
+constexpr int kPastTimeLimit = -1, kKilled = -2;
+
 // Runs the compiler under the limits (as `user`, under the seccomp filter, when given); its exit
-// status, or -1 when it was stopped.
+// status, or kPastTimeLimit, or kKilled.
 int compile(const std::vector<std::string>& argv, unsigned wallSeconds,
-            const raylab::grader::detail::UnprivilegedUser* user) {
+            const raylab::grader::detail::UnprivilegedUser* user, int landlock) {
     const std::vector<sock_filter>* filter = user ? &raylab::grader::detail::seccompProgram() : nullptr;
     // Made before fork: the child allocates nothing under its address-space limit (an ASan build's
     // allocator would fail there).
@@ -174,10 +182,12 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds,
 #ifdef __linux__
         prctl(PR_SET_PDEATHSIG, SIGKILL); // the driver dies with us (its compiler keeps the CPU limit)
 #endif
-        const rlimit cpu{kCpuSeconds, kCpuSeconds}, memory{kMemoryBytes, kMemoryBytes}, file{kFileBytes, kFileBytes};
+        const rlim_t fileBytes = raylab::grader::kCompilerFileBytes;
+        const rlimit cpu{kCpuSeconds, kCpuSeconds}, memory{kMemoryBytes, kMemoryBytes}, file{fileBytes, fileBytes};
         setrlimit(RLIMIT_CPU, &cpu);
         setrlimit(RLIMIT_AS, &memory);
         setrlimit(RLIMIT_FSIZE, &file);
+        if (!raylab::grader::detail::restrictSelf(landlock)) _exit(126);
         if (filter && !raylab::grader::detail::installSeccomp(*filter)) _exit(126);
         execvp(args[0], args.data());
         std::fprintf(stderr, "error: raylab-build-guard cannot run %s: %s\n", args[0], std::strerror(errno));
@@ -191,8 +201,8 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds,
     }
     alarm(0);
     kill(-pid, SIGKILL); // whatever the driver left in its group
-    if (g_timedOut) return -1;
-    if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL)) return -1;
+    if (g_timedOut || (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU)) return kPastTimeLimit;
+    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) return kKilled;
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
@@ -221,9 +231,18 @@ int main(int argc, char** argv) {
         mode == SandboxMode::unprivileged ? &*raylab::grader::detail::unprivilegedUser() : nullptr;
     std::optional<raylab::grader::ConfinedCompile> confined;
     if (!bwrap.empty() || user) confined.emplace(bwrap, command->compiler, command->allowed, user);
+    // The fallback's Landlock: the compiler opens the system, the allowed folders and its own, nothing else.
+    std::optional<raylab::grader::detail::LandlockRuleset> landlock;
     if (user) { // ccache, when it is the launcher, without its cache (root's, other builds' objects)
         setenv("CCACHE_DISABLE", "1", 1);
         setenv("CCACHE_DIR", "/nonexistent", 1); // its configuration is root's too
+        setenv("TMPDIR", confined->privateFolder().c_str(), 1); // the compiler's temporary files, not the shared /tmp
+        try {
+            landlock.emplace(confined->landlockRules());
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "error: raylab-build-guard: %s\n", e.what());
+            return 1;
+        }
     }
     // The build's deadline, when it comes before this file's own limit.
     unsigned wallSeconds = command->wallSeconds;
@@ -234,12 +253,18 @@ int main(int argc, char** argv) {
         deadlineFirst = left < static_cast<long long>(wallSeconds);
         if (deadlineFirst) wallSeconds = unsigned(left);
     }
-    int status = compile(confined ? confined->command() : command->compiler, wallSeconds, user);
+    int status = compile(confined ? confined->command() : command->compiler, wallSeconds, user, landlock ? landlock->fd() : -1);
     // bwrap passes a signal on as 128 + its number
-    if (!bwrap.empty() && (status == 128 + SIGXCPU || status == 128 + SIGKILL)) status = -1;
-    if (status < 0)
-        return refuse(deadlineFirst && g_timedOut ? "build-time" : "stopped", source, command->object);
-    if (status != 0) return status;
+    if (!bwrap.empty() && status == 128 + SIGXCPU) status = kPastTimeLimit;
+    if (!bwrap.empty() && status == 128 + SIGKILL) status = g_timedOut ? kPastTimeLimit : kKilled;
+    if (status == kPastTimeLimit)
+        return refuse(deadlineFirst && g_timedOut ? "build-time" : "time", source, command->object);
+    if (status == kKilled) return refuse("killed", source, command->object);
+    if (status != 0) {
+        std::error_code ignored;
+        if (!command->object.empty()) fs::remove(command->object, ignored);
+        return status;
+    }
     if (confined && !confined->deliver()) return refuse("no-depfile", source, command->object);
     if (command->depfile.empty()) return refuse("no-depfile", source, command->object);
     // Read as any file an untrusted build wrote: not through a link, not past a cap.

@@ -1,6 +1,8 @@
 // The child's side of a run, between fork and exec: its session, user, channels, limits, filter and environment.
 #include "grader/sandbox/sandbox_internal.h"
 
+#include "grader/sandbox/landlock.h"
+
 #ifdef RAYLAB_POSIX_SANDBOX
 
 #include "grader/sandbox/cgroup.h"
@@ -44,6 +46,8 @@ void limit(int resource, unsigned long long value) {
     const int report = fcntl(plan.reportFd, F_DUPFD_CLOEXEC, 10);
     const int request = plan.requestFd >= 0 ? fcntl(plan.requestFd, F_DUPFD_CLOEXEC, 10) : -1;
     if (out < 0 || err < 0 || null < 0 || report < 0 || (plan.requestFd >= 0 && request < 0)) _exit(126);
+    // Its files opened: from here it opens only what the fallback's Landlock rules allow.
+    if (!restrictSelf(plan.landlock)) _exit(126);
     if (dup2(null, 0) < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0 || dup2(report, kReportFd) < 0) _exit(126);
     if (request >= 0 && dup2(request, kRequestFd) < 0) _exit(126);
     // Nothing else of the grader's stays open in the child (a class's lock, another student's file).

@@ -45,6 +45,20 @@ ConfinedCompile::ConfinedCompile(const fs::path& bwrap, const std::vector<std::s
     }
     // Not handed over: the compiler cannot write there, and the compile fails.
     if (user && !m_private.empty()) m_handedOver = detail::handOver(m_private, *user);
+    std::vector<fs::path> folders, programs;
+    for (const fs::path& folder : readable) folders.push_back(fs::absolute(folder));
+    // The programs of the command (a launcher, the compiler) when they live outside /usr.
+    for (const std::string& word : compiler) {
+        std::error_code error;
+        const fs::path program(word);
+        if (program.is_absolute() && !isWithinAny(program, {"/usr"}) && fs::is_regular_file(program, error) &&
+            access(program.c_str(), X_OK) == 0)
+            programs.push_back(program);
+    }
+    m_rules = detail::systemRules();
+    m_rules.read.insert(m_rules.read.end(), folders.begin(), folders.end());
+    m_rules.execute.insert(m_rules.execute.end(), programs.begin(), programs.end());
+    if (!m_private.empty()) m_rules.readWrite.push_back(m_private);
     if (bwrap.empty()) {
         m_command = command;
         return;
@@ -54,15 +68,8 @@ ConfinedCompile::ConfinedCompile(const fs::path& bwrap, const std::vector<std::s
         m_command.insert(m_command.end(), {how, path.string(), path.string()});
         bound.push_back(path);
     };
-    for (const fs::path& folder : readable) bind("--ro-bind-try", fs::absolute(folder));
-    // The programs of the command (a launcher, the compiler) when they live outside /usr.
-    for (const std::string& word : compiler) {
-        std::error_code error;
-        const fs::path program(word);
-        if (program.is_absolute() && !isWithinAny(program, {"/usr"}) && fs::is_regular_file(program, error) &&
-            access(program.c_str(), X_OK) == 0)
-            bind("--ro-bind", program);
-    }
+    for (const fs::path& folder : folders) bind("--ro-bind-try", folder);
+    for (const fs::path& program : programs) bind("--ro-bind", program);
     if (!m_private.empty()) bind("--bind", m_private);
     // The compile's own folder: its relative paths (a -MT target) are read from there; empty inside.
     const fs::path cwd = fs::current_path();

@@ -6,6 +6,8 @@
 // for it, so `#include`, `#embed` and the assembler's `.incbin` of any other file fail, whatever the
 // path; and the other objects of the build folder (a classmate's, in a class run) are not there.
 
+#include "grader/sandbox/landlock.h"
+
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -18,8 +20,10 @@ struct UnprivilegedUser;
 }
 
 // Without bubblewrap, as root (the fallback, unprivileged.h), the compiler runs as an unprivileged
-// user instead: it sees every world-readable file, and writes only its private folder (handed to that
-// user), from where the guard moves the outputs, back in root's hands.
+// user instead, and writes only its private folder (handed to that user, its temporary folder too),
+// from where the guard moves the outputs, back in root's hands; where the kernel has Landlock
+// (landlock.h) it may open only the system, the folders it was allowed and its private folder, so
+// that `.incbin` of another file fails there too. Without Landlock it reads every world-readable file.
 class ConfinedCompile {
 public:
     // `compiler`: the command (a launcher, the compiler and its arguments); `readable`: the folders it
@@ -37,11 +41,17 @@ public:
     // After a compile that succeeded: each output moved to its place. False when one is missing.
     bool deliver() const;
 
+    // What the compiler may open under the fallback's Landlock: the system, the folders it may read,
+    // the programs of the command outside /usr, its private folder.
+    const detail::LandlockRules& landlockRules() const { return m_rules; }
+    const std::filesystem::path& privateFolder() const { return m_private; }
+
 private:
     std::vector<std::string> m_command;
     std::filesystem::path m_private; // empty when the command names no output
     bool m_handedOver = false;       // the private folder belongs to the fallback's user
     std::vector<std::pair<std::filesystem::path, std::filesystem::path>> m_outputs; // private file, its place
+    detail::LandlockRules m_rules;
 };
 
 } // namespace raylab::grader

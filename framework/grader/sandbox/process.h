@@ -3,6 +3,7 @@
 // holds $( ), quotes, spaces or a newline reaches the program as one argument, and nothing in it
 // is executed.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -17,10 +18,21 @@ inline const char* const kNullDevice = "/dev/null";
 #endif
 
 struct ProcessOptions {
-    std::filesystem::path workingDirectory; // empty: ours
-    std::filesystem::path output;           // stdout and stderr are appended here; empty: ours
-    double timeLimit = 0.;                  // seconds; past it the program is killed (0: none)
-    std::vector<std::string> environment = {}; // NAME=value, added to ours (POSIX; Windows: ours only)
+    std::filesystem::path workingDirectory = {}; // empty: ours
+    std::filesystem::path output = {};           // stdout and stderr are appended here; empty: ours
+    double timeLimit = 0.;                       // seconds; past it the program is killed (0: none)
+    std::vector<std::string> environment = {};   // NAME=value, added to ours (POSIX; Windows: ours only)
+    // > 0: stdout and stderr are read through a pipe instead, and only their first and last
+    // `keepOutput` bytes kept (ProcessResult::kept; `output` unused): a build's output is the
+    // submission's to make as long as it likes (a template error of a gigabyte), so it is streamed
+    // through, never held in memory nor written to a disk whole.
+    std::size_t keepOutput = 0;
+};
+
+// A program's output as ProcessOptions::keepOutput keeps it.
+struct KeptOutput {
+    std::string head, tail;  // the first and the last bytes
+    std::uint64_t cut = 0;   // how many bytes between them were left out
 };
 
 struct ProcessResult {
@@ -28,6 +40,7 @@ struct ProcessResult {
     int exitCode = -1;    // when it exited
     int signal = 0;       // when a signal ended it (POSIX)
     std::string error;    // why it could not be started
+    KeptOutput kept;      // with ProcessOptions::keepOutput
     bool succeeded() const { return started && signal == 0 && exitCode == 0; }
 };
 

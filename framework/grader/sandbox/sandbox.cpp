@@ -3,6 +3,7 @@
 #include "grader/sandbox/cgroup.h"
 #include "grader/sandbox/install_command.h"
 #include "grader/sandbox/job_object.h"
+#include "grader/sandbox/landlock.h"
 #include "grader/sandbox/process.h"
 #include "grader/sandbox/sandbox_internal.h"
 #include "grader/sandbox/scratch_file.h"
@@ -132,7 +133,8 @@ void sayOnceWithoutBubblewrap(const SandboxLimits& limits, const UnprivilegedUse
         const std::string said =
             user ? tr("sandbox.fallback", {{"why", why},
                                           {"user", user->name},
-                                          {"filter", tr(haveSeccomp() ? "sandbox.with_seccomp" : "sandbox.no_seccomp")}})
+                                          {"filter", tr(haveSeccomp() ? "sandbox.with_seccomp" : "sandbox.no_seccomp")},
+                                          {"files", tr(landlockAbi() > 0 ? "sandbox.with_landlock" : "sandbox.no_landlock")}})
                  : tr("sandbox.without_bubblewrap", {{"why", why}});
         std::fprintf(stderr, "%s\n", said.c_str());
 #else
@@ -179,9 +181,10 @@ void setNonBlocking(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK
 
 // Starts the child (bwrap or the agent itself) with the channels' child ends; returns its pid.
 pid_t startChild(const AgentCommand& c, const SandboxLimits& limits, const fs::path& bwrap, const UnprivilegedUser* user,
-                 const RunCgroup& cgroup, int reportFd, int requestFd) {
+                 const RunCgroup& cgroup, int landlock, int reportFd, int requestFd) {
     ChildPlan plan;
     plan.user = user;
+    plan.landlock = landlock;
     if (cgroup.active()) plan.cgroup = &cgroup.joinFiles();
     if (user) plan.seccomp = &seccompProgram(); // compiled here, before the fork
     if (!bwrap.empty()) plan.argv = bubblewrapArgs(bwrap, c);
@@ -363,12 +366,27 @@ AgentRun runPosix(const AgentCommand& c, const SandboxLimits& limits) {
     const UnprivilegedUser* user = mode == SandboxMode::unprivileged ? &*unprivilegedUser() : nullptr;
     if (bwrap.empty()) sayOnceWithoutBubblewrap(limits, user);
     // The fallback: the agent's folders are its own, and nothing else of the grader's is writable by it.
+    // It runs from copies of its program and inputs that its user can read (a tree under /root is
+    // not), and, with Landlock, opens nothing else but the system and its own folders.
+    std::optional<AgentStage> stage;
+    std::optional<LandlockRuleset> landlock;
+    AgentCommand staged = c;
     if (user) {
         std::vector<fs::path> own = c.writable;
         own.push_back(c.scratch);
         for (const fs::path& folder : own)
             if (!handOver(folder, *user))
                 throw std::runtime_error("grader: cannot give " + folder.string() + " to the user " + user->name);
+        stage.emplace(c.program, c.readable);
+        staged.program = stage->program();
+        staged.readable = stage->readable();
+        staged.requests = stage->renamed(c.requests);
+        LandlockRules rules = systemRules();
+        rules.execute.push_back(staged.program);
+        rules.read.insert(rules.read.end(), staged.readable.begin(), staged.readable.end());
+        rules.read.emplace_back("/proc"); // as bubblewrap's --proc: another user's processes keep their secrets
+        rules.readWrite.insert(rules.readWrite.end(), own.begin(), own.end());
+        landlock.emplace(rules);
     }
     // Bubblewrap's /tmp is a folder of its scratch, on disk, where its disk limit counts it.
     if (!bwrap.empty()) fs::create_directories(agentTmp(c.scratch));
@@ -379,11 +397,11 @@ AgentRun runPosix(const AgentCommand& c, const SandboxLimits& limits) {
         throw std::runtime_error("grader: cannot open a pipe to the agent");
     // Without a PID namespace the child could reach the grader: its signals are guarded too.
     std::optional<ChildGuard> guard(std::in_place, bwrap.empty());
-    const pid_t pid = startChild(c, limits, bwrap, user, cgroup, report[1], request[0]);
+    const pid_t pid = startChild(staged, limits, bwrap, user, cgroup, landlock ? landlock->fd() : -1, report[1], request[0]);
     guard->started(pid);
     close(report[1]);
     close(request[0]);
-    AgentWatch watch(pid, report[0], request[1], limits, c.requests);
+    AgentWatch watch(pid, report[0], request[1], limits, staged.requests);
     AgentRun run;
     int status = 0;
     const WatchEnd end = watch.wait(status, RunMeter{c.scratch, tmp, cgroup, limits}, run);
@@ -419,7 +437,9 @@ std::string sandboxKind(const SandboxLimits& limits) {
 #ifdef RAYLAB_POSIX_SANDBOX
     switch (sandboxMode(limits.bubblewrap)) {
     case SandboxMode::bubblewrap: return "bubblewrap";
-    case SandboxMode::unprivileged: return haveSeccomp() ? "unprivileged user" : "unprivileged user, no seccomp filter";
+    case SandboxMode::unprivileged:
+        return std::string("unprivileged user") + (haveSeccomp() ? "" : ", no seccomp filter") +
+               (landlockAbi() > 0 ? "" : ", no Landlock");
     case SandboxMode::processGroup: break;
     }
     return "process group";

@@ -34,6 +34,15 @@ namespace raylab::grader::detail {
 constexpr int kReportFd = 3;
 constexpr int kRequestFd = 4;
 
+// The system's folders beside /usr, which a confined program reads and runs: links into /usr on merged
+// systems, folders elsewhere.
+inline constexpr const char* kSystemTopFolders[] = {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"};
+
+// What a confined program sees of /etc (bubblewrap binds them, Landlock allows them): the dynamic
+// loader's files, the time zone, and Debian's alternatives (c++ and cc are links through them).
+inline constexpr const char* kSystemEtcFiles[] = {"/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d",
+                                                  "/etc/localtime", "/etc/alternatives"};
+
 // ---- bubblewrap.cpp ----
 
 // bwrap in PATH, and whether it can make its namespaces here (a container may forbid them).
@@ -72,6 +81,7 @@ struct ChildPlan {
     const UnprivilegedUser* user = nullptr;        // the fallback: the child becomes this user
     const std::vector<sock_filter>* seccomp = nullptr; // and installs this filter before exec
     const std::vector<std::string>* cgroup = nullptr;  // the run's cgroup it joins first (cgroup.h)
+    int landlock = -1;                                 // and puts this Landlock ruleset in force (landlock.h)
 
     void seal() {
         for (std::string& a : argv) cargv.push_back(a.data());

@@ -7,10 +7,96 @@
 
 #include <grp.h>
 #include <pwd.h>
+#include <stdexcept>
 #include <sys/stat.h>
 #include <unistd.h>
 
 namespace raylab::grader::detail {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A folder of root's that others may enter but not list: mkdtemp's 0700, then 0711.
+fs::path makeEnterableFolder(const fs::path& pattern) {
+    std::string name = pattern.string();
+    if (mkdtemp(name.data()) == nullptr || chmod(name.c_str(), 0711) != 0)
+        throw std::runtime_error("grader: cannot make the agents' folder " + name);
+    return name;
+}
+
+// Where every agent's copies go, made once: /tmp, which every user may enter, whatever the tree's folders.
+const fs::path& stageRoot() {
+    static const struct Root {
+        fs::path path = makeEnterableFolder("/tmp/raylab-agents-XXXXXX");
+        ~Root() {
+            std::error_code ignored;
+            fs::remove_all(path, ignored);
+        }
+    } root;
+    return root.path;
+}
+
+// Readable and, for a program, runnable by anyone; never writable (root keeps them).
+void makeReadOnly(const fs::path& path, bool program) {
+    const mode_t mode = fs::is_directory(path) || program ? 0555 : 0444;
+    if (chown(path.c_str(), 0, 0) != 0 || chmod(path.c_str(), mode) != 0)
+        throw std::runtime_error("grader: cannot hand the agent its copy " + path.string());
+}
+
+// A path as a JSON string writes it (quotes and backslashes escaped).
+std::string jsonText(const fs::path& path) {
+    std::string text;
+    for (const char ch : path.string()) {
+        if (ch == '"' || ch == '\\') text += '\\';
+        text += ch;
+    }
+    return text;
+}
+
+} // namespace
+
+AgentStage::AgentStage(const fs::path& program, const std::vector<fs::path>& readable) : m_given(readable) {
+    m_folder = makeEnterableFolder(stageRoot() / "run-XXXXXX");
+    m_program = m_folder / program.filename();
+    fs::copy_file(program, m_program);
+    makeReadOnly(m_program, true);
+    for (std::size_t k = 0; k < readable.size(); ++k) {
+        const fs::path place = m_folder / ("input" + std::to_string(k));
+        fs::create_directory(place);
+        makeReadOnly(place, false);
+        const fs::path copy = place / readable[k].filename();
+        std::error_code missing;
+        if (fs::exists(readable[k], missing)) {
+            fs::copy(readable[k], copy, fs::copy_options::recursive | fs::copy_options::skip_symlinks);
+            makeReadOnly(copy, false);
+            if (fs::is_directory(copy))
+                for (const fs::directory_entry& entry : fs::recursive_directory_iterator(copy)) makeReadOnly(entry.path(), false);
+        }
+        m_readable.push_back(copy);
+    }
+}
+
+AgentStage::~AgentStage() {
+    std::error_code ignored;
+    fs::remove_all(m_folder, ignored);
+}
+
+std::string AgentStage::renamed(std::string requests) const {
+    for (std::size_t k = 0; k < m_given.size(); ++k) {
+        const std::string from = '"' + jsonText(m_given[k]), to = '"' + jsonText(m_readable[k]);
+        for (std::size_t at = requests.find(from); at != std::string::npos; at = requests.find(from, at)) {
+            const char next = at + from.size() < requests.size() ? requests[at + from.size()] : '\0';
+            if (next == '"' || next == '/') {
+                requests.replace(at, from.size(), to);
+                at += to.size();
+            } else {
+                at += from.size();
+            }
+        }
+    }
+    return requests;
+}
 
 const std::optional<UnprivilegedUser>& unprivilegedUser() {
     static const std::optional<UnprivilegedUser> found = []() -> std::optional<UnprivilegedUser> {

@@ -1,9 +1,11 @@
 #pragma once
 // The sandbox where bubblewrap cannot start (not installed, or a container such as Gradescope's that
 // forbids namespaces) and the grader runs as root: the compiler and the agents run as an unprivileged
-// user, in a folder only that user can write, under a seccomp filter. They share the machine's kernel
-// and see every world-readable file (no mount namespace): docs/instructors.md says what that promises.
-// POSIX only; the build guard uses it too (no message catalogue here).
+// user, in a folder only that user can write, under a seccomp filter and, where the kernel has it,
+// Landlock (landlock.h). An agent runs from a copy of its program, beside copies of its inputs, in a
+// folder of the grader's that user may read (AgentStage): no other program of the build, wherever the
+// tree is (under /root, read-only). docs/grading.md says what that promises. POSIX only; the build
+// guard uses it too (no message catalogue here).
 
 #include <filesystem>
 #include <optional>
@@ -38,6 +40,28 @@ const std::optional<UnprivilegedUser>& unprivilegedUser();
 // `folder` belongs to `user`, mode 0700: only it writes there, and no other unprivileged program
 // reads it. False when it cannot be done.
 bool handOver(const std::filesystem::path& folder, const UnprivilegedUser& user);
+
+// An agent's program and inputs copied where the fallback's user can read them and nothing beside:
+// <root>/run-XXXXXX/, root's, mode 0711 (entered, never listed), in a root made once a run in /tmp
+// (root's, 0711); the program 0555, the inputs 0444 (their folders 0555), links left out. Removed
+// when it goes.
+class AgentStage {
+public:
+    AgentStage(const std::filesystem::path& program, const std::vector<std::filesystem::path>& readable);
+    ~AgentStage();
+    AgentStage(const AgentStage&) = delete;
+    AgentStage& operator=(const AgentStage&) = delete;
+
+    const std::filesystem::path& program() const { return m_program; }
+    const std::vector<std::filesystem::path>& readable() const { return m_readable; } // the copies, in order
+
+    // `requests` with each input's path, where a JSON string names it or a file in it, renamed to its copy's.
+    std::string renamed(std::string requests) const;
+
+private:
+    std::filesystem::path m_folder, m_program;
+    std::vector<std::filesystem::path> m_given, m_readable;
+};
 
 // In the forked child (async-signal-safe): no supplementary groups, the user's group, then the user;
 // true only once root cannot be taken back (setuid(0) fails).

@@ -3,6 +3,7 @@
 // on them and answers each with what came out: numbers, pixels, "not done yet" or an exception's
 // message. It judges nothing: the parent drew the inputs and compares the outputs itself.
 
+#include "grader/protocol/agent/agent_lab.h"
 #include "grader/protocol/agent/probes.h"
 #include "grader/sandbox/channel.h"
 #include "grader/protocol/protocol.h"
@@ -53,9 +54,13 @@ Options parse(int argc, char** argv) {
     return o;
 }
 
-// Runs `work` and turns what the student's code throws into the answer for `item`.
+// Runs `work` and turns what the student's code throws into the answer for `item`, of lab `lab`; an
+// agent built for another lab does not run it.
 template <typename Work>
-protocol::Answer answering(std::uint64_t item, Work work) {
+protocol::Answer answering(std::uint64_t item, int lab, Work work) {
+    if (raylab::agent::kAgentLab != 0 && lab != raylab::agent::kAgentLab)
+        return protocol::Failure{item, "raylab-agent-lab" + std::to_string(raylab::agent::kAgentLab) + " answers lab " +
+                                           std::to_string(raylab::agent::kAgentLab) + " only, not lab " + std::to_string(lab)};
     try {
         return work();
     } catch (const raylab::NotDoneYet& e) {
@@ -66,7 +71,7 @@ protocol::Answer answering(std::uint64_t item, Work work) {
 }
 
 protocol::Answer answer(const protocol::CheckRequest& request) {
-    return answering(request.item, [&]() -> protocol::Answer {
+    return answering(request.item, request.lab, [&]() -> protocol::Answer {
         protocol::Values values{request.item, {}};
         for (const protocol::Call& call : request.calls)
             values.outputs.push_back(raylab::agent::callProbe(call));
@@ -75,7 +80,7 @@ protocol::Answer answer(const protocol::CheckRequest& request) {
 }
 
 protocol::Answer answer(const protocol::RenderRequest& request) {
-    return answering(request.item, [&]() -> protocol::Answer {
+    return answering(request.item, request.lab, [&]() -> protocol::Answer {
         raylab::SceneDescription d = raylab::loadSceneFile(request.sceneFile);
         if (request.seed >= 0) d.seed = std::uint64_t(request.seed);
         const raylab::FigureResult r = renderScene(d, raylab::RenderOptions{request.threads, false});
