@@ -457,6 +457,43 @@ std::string safeStudentName(const std::string& folderName) {
     return cut;
 }
 
+namespace {
+
+// The ledger's records made with other settings than this run's, taken out of it: those students are
+// graded again, and out of the CSV until then.
+std::map<std::string, StudentRecord> takeMadeOtherwise(std::map<std::string, StudentRecord>& ledger,
+                                                       const Settings& madeBy) {
+    std::map<std::string, StudentRecord> madeOtherwise;
+    for (auto it = ledger.begin(); it != ledger.end();)
+        if (it->second.madeBy != madeBy) {
+            madeOtherwise.insert(*it);
+            it = ledger.erase(it);
+        } else {
+            ++it;
+        }
+    return madeOtherwise;
+}
+
+// The run's last lines, and its status: stopped by a signal, students left to grade, or done.
+int endOfRun(const fs::path& out, const std::vector<std::string>& unfinished) {
+    std::fflush(stdout);
+    if (g_stopSignal != 0) {
+        std::printf("stopped by %s; %s holds every student graded so far: run the same command again to resume\n",
+                    signalName(g_stopSignal), printablePath(out / "grades.csv").c_str());
+        std::fflush(stdout);
+        return 128 + g_stopSignal;
+    }
+    std::printf("grades: %s, reports: %s/<student>/report/index.html\n", printablePath(out / "grades.csv").c_str(),
+                printablePath(studentsFolder(out)).c_str());
+    if (unfinished.empty()) return 0;
+    std::string names;
+    for (const std::string& n : unfinished) names += (names.empty() ? "" : ", ") + n;
+    std::printf("not graded (run again to retry): %s\n", names.c_str());
+    return 1;
+}
+
+} // namespace
+
 int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
     const fs::path& out = options.out;
     fs::create_directories(studentsFolder(out));
@@ -470,14 +507,8 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
     }
     // A full disk (here, or in a student's process) stops the run: every student after would fail alike.
     try {
-        std::map<std::string, StudentRecord> ledger = readLedger(out), madeOtherwise;
-        for (auto it = ledger.begin(); it != ledger.end();) // not this run's: graded again, out of the CSV until then
-            if (it->second.madeBy != options.madeBy) {
-                madeOtherwise.insert(*it);
-                it = ledger.erase(it);
-            } else {
-                ++it;
-            }
+        std::map<std::string, StudentRecord> ledger = readLedger(out);
+        const std::map<std::string, StudentRecord> madeOtherwise = takeMadeOtherwise(ledger, options.madeBy);
         writeGrades(out, ledger); // the CSV of every finished student, even if a last run stopped before it
         const ClassEntries entries = listClass(options.classFolder, out);
         for (const std::string& line : entries.skipped) std::printf("%s\n", line.c_str());
@@ -524,22 +555,7 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
             writeGrades(out, ledger);
             std::fflush(stdout);
         }
-        std::fflush(stdout);
-        if (g_stopSignal != 0) {
-            std::printf("stopped by %s; %s holds every student graded so far: run the same command again to resume\n",
-                        signalName(g_stopSignal), printablePath(out / "grades.csv").c_str());
-            std::fflush(stdout);
-            return 128 + g_stopSignal;
-        }
-        std::printf("grades: %s, reports: %s/<student>/report/index.html\n", printablePath(out / "grades.csv").c_str(),
-                    printablePath(studentsFolder(out)).c_str());
-        if (!unfinished.empty()) {
-            std::string names;
-            for (const std::string& n : unfinished) names += (names.empty() ? "" : ", ") + n;
-            std::printf("not graded (run again to retry): %s\n", names.c_str());
-            return 1;
-        }
-        return 0;
+        return endOfRun(out, unfinished);
     } catch (const std::exception& e) {
         if (!isDiskFull(e)) throw;
         std::printf("raylab: %s\n", printableText(e.what()).c_str());

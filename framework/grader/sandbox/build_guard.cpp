@@ -206,6 +206,47 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds,
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
+// The file a refusal names: the source compiled (after -c), else the object, else the compiler.
+std::string sourceOf(const Command& command) {
+    std::string source = command.object.empty() ? command.compiler.front() : command.object;
+    for (std::size_t i = 0; i + 1 < command.compiler.size(); ++i)
+        if (command.compiler[i] == "-c") source = command.compiler[i + 1];
+    return source;
+}
+
+// This file's wall-clock limit: its own, or what is left of the build's deadline (RAYLAB_BUILD_DEADLINE)
+// when that comes first. Nothing when the deadline has passed.
+struct WallLimit {
+    unsigned seconds = 0;
+    bool deadlineFirst = false;
+};
+std::optional<WallLimit> wallLimit(unsigned own) {
+    WallLimit limit{own, false};
+    if (const char* deadline = std::getenv("RAYLAB_BUILD_DEADLINE")) {
+        const long long left = std::atoll(deadline) - static_cast<long long>(std::time(nullptr));
+        if (left <= 0) return std::nullopt;
+        limit.deadlineFirst = left < static_cast<long long>(own);
+        if (limit.deadlineFirst) limit.seconds = unsigned(left);
+    }
+    return limit;
+}
+
+// The compiler's dependency file, read as any file an untrusted build wrote (not through a link, not
+// past a cap): every file it names must be inside an allowed folder. 0, or the refusal's status.
+int checkDependencies(const Command& command, const std::string& source) {
+    if (command.depfile.empty()) return refuse("no-depfile", source, command.object);
+    const raylab::grader::ScratchFile depfile = raylab::grader::readScratchFile(command.depfile, kDepfileBytes);
+    if (!depfile.found || depfile.refused || depfile.cut) return refuse("no-depfile", source, command.object);
+    std::vector<fs::path> allowed;
+    for (const fs::path& folder : command.allowed) allowed.push_back(resolved(folder));
+    for (const std::string& file : dependencies(depfile.text)) {
+        const fs::path real = resolved(file);
+        const bool inside = std::any_of(allowed.begin(), allowed.end(), [&](const fs::path& f) { return isWithin(real, f); });
+        if (!inside) return refuse("outside", source, command.object, real.string());
+    }
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -219,9 +260,7 @@ int main(int argc, char** argv) {
     sigaction(SIGALRM, &alarmAction, nullptr);
     for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, onStop);
 
-    std::string source = command->object.empty() ? command->compiler.front() : command->object;
-    for (std::size_t i = 0; i + 1 < command->compiler.size(); ++i)
-        if (command->compiler[i] == "-c") source = command->compiler[i + 1];
+    const std::string source = sourceOf(*command);
     // Confined as the grader's agents are (RAYLAB_SANDBOX=none: not at all, `--no-sandbox`); the dependency
     // file is checked in every case, a second wall.
     using raylab::grader::detail::SandboxMode;
@@ -244,21 +283,14 @@ int main(int argc, char** argv) {
             return 1;
         }
     }
-    // The build's deadline, when it comes before this file's own limit.
-    unsigned wallSeconds = command->wallSeconds;
-    bool deadlineFirst = false;
-    if (const char* deadline = std::getenv("RAYLAB_BUILD_DEADLINE")) {
-        const long long left = std::atoll(deadline) - static_cast<long long>(std::time(nullptr));
-        if (left <= 0) return refuse("build-time", source, command->object);
-        deadlineFirst = left < static_cast<long long>(wallSeconds);
-        if (deadlineFirst) wallSeconds = unsigned(left);
-    }
-    int status = compile(confined ? confined->command() : command->compiler, wallSeconds, user, landlock ? landlock->fd() : -1);
+    const std::optional<WallLimit> limit = wallLimit(command->wallSeconds);
+    if (!limit) return refuse("build-time", source, command->object);
+    int status = compile(confined ? confined->command() : command->compiler, limit->seconds, user, landlock ? landlock->fd() : -1);
     // bwrap passes a signal on as 128 + its number
     if (!bwrap.empty() && status == 128 + SIGXCPU) status = kPastTimeLimit;
     if (!bwrap.empty() && status == 128 + SIGKILL) status = g_timedOut ? kPastTimeLimit : kKilled;
     if (status == kPastTimeLimit)
-        return refuse(deadlineFirst && g_timedOut ? "build-time" : "time", source, command->object);
+        return refuse(limit->deadlineFirst && g_timedOut ? "build-time" : "time", source, command->object);
     if (status == kKilled) return refuse("killed", source, command->object);
     if (status != 0) {
         std::error_code ignored;
@@ -266,17 +298,5 @@ int main(int argc, char** argv) {
         return status;
     }
     if (confined && !confined->deliver()) return refuse("no-depfile", source, command->object);
-    if (command->depfile.empty()) return refuse("no-depfile", source, command->object);
-    // Read as any file an untrusted build wrote: not through a link, not past a cap.
-    const raylab::grader::ScratchFile depfile = raylab::grader::readScratchFile(command->depfile, kDepfileBytes);
-    if (!depfile.found || depfile.refused || depfile.cut) return refuse("no-depfile", source, command->object);
-
-    std::vector<fs::path> allowed;
-    for (const fs::path& folder : command->allowed) allowed.push_back(resolved(folder));
-    for (const std::string& file : dependencies(depfile.text)) {
-        const fs::path real = resolved(file);
-        const bool inside = std::any_of(allowed.begin(), allowed.end(), [&](const fs::path& f) { return isWithin(real, f); });
-        if (!inside) return refuse("outside", source, command->object, real.string());
-    }
-    return 0;
+    return checkDependencies(*command, source);
 }
