@@ -92,7 +92,12 @@ TEST_CASE("kept output: a gigabyte streamed through, never held: 128 KB kept, me
     CHECK(r.kept.tail == std::string(1 << 16, '\0'));
     CHECK(r.kept.cut == (std::uint64_t(1) << 30) - 2 * (1 << 16));
     MESSAGE("peak memory " << before / 1048576 << " MB before, " << peakMemory() / 1048576 << " MB after");
+#if defined(__SANITIZE_ADDRESS__)
+    // ASan's allocator keeps freed memory in quarantine (256 MB by default): the peak says nothing here.
+    MESSAGE("the peak is not checked under ASan");
+#else
     CHECK(peakMemory() - before < 64L << 20); // far below the gigabyte
+#endif
 }
 
 TEST_CASE("kept output: a process left holding the pipe does not hold the wait, nor does a time limit fail to stop") {
