@@ -41,6 +41,13 @@ using namespace raylab::test;
 
 namespace {
 
+// How many times `part` stands in `text`.
+int count(const std::string& text, const std::string& part) {
+    int found = 0;
+    for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++found;
+    return found;
+}
+
 using raylab::test::readFile;
 
 ProgramProcess startRaylab(const std::vector<std::string>& args, const fs::path& output) {
@@ -438,11 +445,6 @@ TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap (o
         const int status = process.finish();
         return std::pair(status, process.text());
     };
-    const auto count = [](const std::string& text, const std::string& part) {
-        int found = 0;
-        for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++found;
-        return found;
-    };
 
     const auto [missingStatus, missing] = runWith(withoutBwrap, classArgs(classDir, root / "out"));
     CHECK(missingStatus == 1);
@@ -524,11 +526,6 @@ TEST_CASE("grade-class on a results disk that fills: said once, the student conc
             ProgramProcess process = startProgram(binDir() / "raylab", classArgs(classDir, root / "out"), root / name, 0, environment);
             const int status = process.finish();
             return std::pair(status, process.text());
-        };
-        const auto count = [](const std::string& text, const std::string& part) {
-            int found = 0;
-            for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++found;
-            return found;
         };
 
         const auto [status, output] = run("full.txt");
