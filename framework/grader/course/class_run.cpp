@@ -563,6 +563,10 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
     }
 }
 
+std::optional<StudentRecord> readStudentResult(const fs::path& studentFolder) {
+    return readRecord(studentFolder / kResultFile);
+}
+
 bool isDiskFull(const std::exception& e) {
     std::error_code code;
     if (const auto* write = dynamic_cast<const WriteError*>(&e)) code = write->code();

@@ -10,6 +10,7 @@
 #include <exception>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,6 +59,10 @@ struct ClassRunOptions {
 // by another run, a student's grading did not finish, or a disk was full (the run stopped there);
 // 128 + the signal when interrupted (130 for SIGINT, 143 for SIGTERM).
 int runClass(const ClassRunOptions& options, const GradeStudent& grade);
+
+// The result in a student's folder (OUT/students/<safe name>/result.json); nothing while their
+// grading has not finished.
+std::optional<StudentRecord> readStudentResult(const std::filesystem::path& studentFolder);
 
 // Whether `e` says a disk is full (ENOSPC, or EDQUOT: a quota): a WriteError or a file system error.
 // A class run stops on it, saying so once; the student being graded is left for the next run. So
