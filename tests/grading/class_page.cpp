@@ -154,7 +154,8 @@ TEST_CASE("the class page opens in headless chromium, offline, with its plots") 
     CHECK(run.output.find("<title>The class: 5 students graded</title>") != std::string::npos);
     CHECK(run.output.find("<svg") != std::string::npos);
     CHECK(run.output.find("data-item=\"lab1_gradient\"") != std::string::npos);
-    CHECK(run.output.find("http") == std::string::npos); // nothing fetched from anywhere
+    CHECK(run.output.find("src=\"http") == std::string::npos); // nothing fetched from anywhere
+    CHECK(run.output.find("href=\"http") == std::string::npos);
 }
 
 } // TEST_SUITE
