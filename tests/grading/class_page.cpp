@@ -305,3 +305,44 @@ TEST_CASE("without sim_c++: a note that says so and how to install it, no pairs"
 }
 
 } // TEST_SUITE
+
+// A benchmark, no timed assertion: `raylab class-page` on a class of 100, the page and the similar
+// submissions of every lab (docs/grading.md quotes its figure).
+TEST_SUITE("class page benchmark") {
+
+TEST_CASE("class-page on a class of 100 students: the time it takes") {
+    const fs::path out = freshFolder("raylab-class-page-100"), submissions = fs::path(RAYLAB_BUILD_DIR) / "submissions";
+    std::vector<fs::path> versions{{}}; // the solution, each mistake and variant: whichever labs they change
+    for (const char* kind : {"mistake", "variant"})
+        for (const auto& entry : fs::directory_iterator(submissions / kind)) versions.push_back(entry.path());
+    const auto catalog = raylab::grader::loadLabCatalog(sourceDir() / "labs", RAYLAB_SCENES_DIR);
+    for (int s = 0; s < 100; ++s) {
+        const std::string name = "student" + std::to_string(s);
+        const fs::path copy = out / "students" / name / "submission";
+        std::vector<raylab::grader::LabScore> labs;
+        raylab::grader::StudentOutcome outcome;
+        for (const auto& lab : catalog.labs) {
+            const fs::path& version = versions[std::size_t(s * 7 + lab.number) % versions.size()];
+            fs::create_directories(copy / lab.id);
+            for (const std::string& file : lab.files()) {
+                const fs::path own = version / lab.id / file;
+                const std::string text = readFile(!version.empty() && fs::exists(own) ? own : sourceDir() / "solutions" / lab.id / file);
+                std::ofstream(copy / lab.id / file) << "// " << name << "\n" << text; // a line of their own, at least
+            }
+            outcome.labs.push_back({lab.number, double(s % 9), 8., false});
+            for (const auto& check : lab.checks) outcome.items.push_back({false, lab.number, check.name, (s + lab.number) % 3 != 0, false, {}});
+        }
+        raylab::grader::writeStudentOutcome(outcome, out / "students" / name / "outcome.json");
+        raylab::writeFileAtomically(out / "students" / name / "result.json",
+                                    nlohmann::json{{"student", name}, {"cells", nlohmann::json::array()}}.dump());
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const ProgramRun run = runProgram({(binDir() / "raylab").string(), "class-page", out.string()}, out.parent_path() / "bench.txt");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    REQUIRE_MESSAGE(run.status == 0, run.output);
+    std::printf("class-page, 100 students, %zu labs, sim_c++ %s: %.2f s\n", catalog.labs.size(),
+                raylab::grader::findProgram("sim_c++").empty() ? "absent" : "present", seconds);
+    CHECK(fs::exists(out / "index.html"));
+}
+
+} // TEST_SUITE
