@@ -253,11 +253,12 @@ TEST_CASE("a copied lab 3, renamed and laid out otherwise, tops the list; studen
         return;
     }
     const fs::path out = freshFolder("raylab-similarity"), submissions = fs::path(RAYLAB_BUILD_DIR) / "submissions";
-    // Their own lab 3: the solution, and catalogued mistakes (each a change of a line or more).
+    // Their own lab 3: the solution, and catalogued mistakes (each a change of a line or more to it).
     addLab3(out, "ref");
     addLab3(out, "textbook", submissions / "mistake/textbook_quadratic");
     addLab3(out, "cos", submissions / "mistake/cos_of_dot");
     addLab3(out, "gamma", submissions / "mistake/gamma_applied");
+    addLab3(out, "far", submissions / "mistake/far_root_first"); // the solution's tokens in another order
     // The copied pair: another correct lab 3 (computed in double), and its copy renamed and laid out otherwise.
     addLab3(out, "copier_a", submissions / "variant/double_precision");
     addLab3(out, "copier_b", submissions / "variant/double_precision");
@@ -280,8 +281,13 @@ TEST_CASE("a copied lab 3, renamed and laid out otherwise, tops the list; studen
           std::set<std::string>{"copier_a", "copier_b"});
     CHECK(top.overlap == 100);
     CHECK(lab3->pairs[1].overlap < top.overlap);
+    CHECK(top.unusual);
     CHECK(!top.runs.empty());
-    CHECK(lab3->comparedPairs == 15);
+    // The solution, written alike by most of this class, is nobody's own: its student has no pair.
+    CHECK(std::find(lab3->students.begin(), lab3->students.end(), "ref") == lab3->students.end());
+    CHECK(std::find(lab3->students.begin(), lab3->students.end(), "textbook") != lab3->students.end());
+    const std::size_t n = lab3->students.size();
+    CHECK(lab3->comparedPairs == n * (n - 1) / 2);
     CHECK(lab3->median < top.overlap);
     // The other labs: nobody wrote code there.
     for (const auto& lab : report.labs)

@@ -177,7 +177,7 @@ std::string codeColumn(const LabSimilarity& lab, std::size_t student, const Simi
             const MatchedRun& m = pair.runs[r];
             if (first ? (number >= m.firstFrom && number <= m.firstTo) : (number >= m.secondFrom && number <= m.secondTo)) run = int(r);
         }
-        const bool stub = std::size_t(number - 1) < lab.stubLines[student].size() && lab.stubLines[student][std::size_t(number - 1)];
+        const bool stub = std::size_t(number - 1) < lab.leftOut[student].size() && lab.leftOut[student][std::size_t(number - 1)];
         std::string style = stub ? " class=\"stub\"" : "";
         if (run >= 0 && !stub)
             style = " style=\"background:" + std::string(kRunColours[std::size_t(run) % std::size(kRunColours)]) + "\"";
@@ -208,8 +208,10 @@ void writeSimilarity(std::ostream& page, const ClassPageInput& input, const fs::
     if (!input.similarity.note.empty()) page << "<p class=\"note\">" << html(input.similarity.note) << "</p>\n";
     for (const LabSimilarity& lab : input.similarity.labs) {
         page << "<h3>" << labName(lab.lab) << "</h3>\n<p>"
-             << tr("class_page.usual_overlap", {{"median", number(lab.median)}, {"fence", number(lab.fence)},
-                                                {"pairs", std::to_string(lab.comparedPairs)}})
+             << tr("class_page.usual_overlap",
+                   {{"students", std::to_string(lab.students.size())}, {"median", number(lab.median)},
+                    {"pairs", std::to_string(lab.comparedPairs)},
+                    {"fence", tr(lab.fence < 100. ? "class_page.fence" : "class_page.no_fence", {{"fence", number(lab.fence)}})}})
              << "</p>\n";
         if (lab.pairs.empty()) continue;
         page << "<table class=\"similar\" data-lab=\"" << lab.lab << "\"><tr><th>" << tr("class_page.student") << "</th><th>"

@@ -48,33 +48,47 @@ std::set<std::string> stubLinesOf(const LabDescription& lab, const fs::path& lab
     return lines;
 }
 
-// A student's lab files joined (a comment line naming each), the lines that are the stub's marked;
-// nothing when they wrote no line of their own.
+// A student's lab files joined, a comment line naming each; a line is given when it is blank or the
+// stub's.
 struct JoinedCode {
-    std::string shown, compared; // compared: the stub's lines left empty, so both keep their line numbers
-    std::vector<bool> stub;
+    std::string student;
+    std::vector<std::string> lines;
+    std::vector<bool> given;
 };
 
 std::optional<JoinedCode> joinedCode(const LabDescription& lab, const fs::path& copy, const std::set<std::string>& stubLines) {
     JoinedCode code;
-    bool own = false;
     for (const std::string& name : lab.files()) {
         const std::optional<std::string> text = readText(copy / lab.id / name);
         if (!text) continue;
-        code.shown += "// " + name + "\n";
-        code.compared += "\n";
-        code.stub.push_back(true);
+        code.lines.push_back("// " + name);
+        code.given.push_back(true);
         std::istringstream in(printableText(*text));
         for (std::string line; std::getline(in, line);) {
-            const bool given = trimmed(line).empty() || stubLines.count(trimmed(line)) > 0;
-            own = own || !given;
-            code.shown += line + "\n";
-            code.compared += (given ? "" : line) + "\n";
-            code.stub.push_back(given);
+            code.lines.push_back(line);
+            code.given.push_back(trimmed(line).empty() || stubLines.count(trimmed(line)) > 0);
         }
     }
-    if (!own) return std::nullopt;
+    if (code.lines.empty()) return std::nullopt;
     return code;
+}
+
+// The lines more than a quarter of the class wrote alike (and at least three students), as MOSS
+// ignores a passage found in many programs: the handout's formula, the way everyone writes a loop.
+// Two students who share them share what the class shares; what is left is their own.
+std::set<std::string> commonLines(const std::vector<JoinedCode>& codes) {
+    std::map<std::string, std::size_t> writers;
+    for (const JoinedCode& code : codes) {
+        std::set<std::string> own;
+        for (std::size_t k = 0; k < code.lines.size(); ++k)
+            if (!code.given[k]) own.insert(trimmed(code.lines[k]));
+        for (const std::string& line : own) ++writers[line];
+    }
+    const std::size_t most = std::max<std::size_t>(2, codes.size() / 4);
+    std::set<std::string> common;
+    for (const auto& [line, count] : writers)
+        if (count > most) common.insert(line);
+    return common;
 }
 
 // sim_c++ with `arguments` in `folder` (the files named relative to it); its output, or nothing
@@ -135,16 +149,34 @@ std::optional<LabSimilarity> compareLab(const fs::path& sim, const ClassResults&
     fs::remove_all(folder);
     fs::create_directories(folder);
     const std::set<std::string> stubLines = stubLinesOf(lab, labsFolder);
-    std::vector<std::string> files;
+    std::vector<JoinedCode> codes;
     for (const ClassMember& m : results.students)
         if (std::optional<JoinedCode> code = joinedCode(lab, m.place / "submission", stubLines)) {
-            const std::size_t k = similarity.students.size();
-            std::ofstream(folder / fileName(k), std::ios::binary) << code->compared;
-            files.push_back(fileName(k));
-            similarity.students.push_back(m.student);
-            similarity.texts.push_back(std::move(code->shown));
-            similarity.stubLines.push_back(std::move(code->stub));
+            code->student = m.student;
+            codes.push_back(std::move(*code));
         }
+    const std::set<std::string> common = commonLines(codes);
+    std::vector<std::string> files;
+    for (const JoinedCode& code : codes) {
+        // Compared: the student's own lines; the others left empty, so that line numbers stay the shown ones.
+        std::string shown, compared;
+        std::vector<bool> grey;
+        bool own = false;
+        for (std::size_t k = 0; k < code.lines.size(); ++k) {
+            const bool theirs = !code.given[k] && !common.count(trimmed(code.lines[k]));
+            own = own || theirs;
+            shown += code.lines[k] + "\n";
+            compared += (theirs ? code.lines[k] : "") + "\n";
+            grey.push_back(!theirs);
+        }
+        if (!own) continue; // nothing but the stub and what most of the class wrote
+        const std::size_t k = similarity.students.size();
+        std::ofstream(folder / fileName(k), std::ios::binary) << compared;
+        files.push_back(fileName(k));
+        similarity.students.push_back(code.student);
+        similarity.texts.push_back(std::move(shown));
+        similarity.leftOut.push_back(std::move(grey));
+    }
     const std::size_t n = similarity.students.size();
     if (n < 2) return similarity;
     std::vector<std::string> arguments{"-p", "-e", "-a", "-t", "1"};

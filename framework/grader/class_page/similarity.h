@@ -1,8 +1,9 @@
 #pragma once
 // Similar submissions, for a person to look at, never a penalty: per lab, the pairs of students whose
-// lab files share the most code once the stub's own lines are removed (what MOSS calls base code),
-// measured by Debian's similarity-tester (`sim_c++`: token runs that survive renaming and layout),
-// and each pair's overlap set against the class's usual overlap for that lab.
+// lab files share the most code once the stub's own lines are removed (what MOSS calls base code), and
+// the lines most of the class wrote alike (as MOSS ignores passages found in many programs), measured
+// by Debian's similarity-tester (`sim_c++`: token runs that survive renaming and layout); each pair's
+// overlap set against the class's usual overlap for that lab.
 
 #include "grader/class_page/class_results.h"
 #include "grader/lab_catalog.h"
@@ -21,7 +22,7 @@ struct MatchedRun {
 
 struct SimilarPair {
     std::size_t first = 0, second = 0; // in LabSimilarity::students
-    int overlap = 0;                    // percent of either side's stub-free code found in the other (the larger)
+    int overlap = 0;                    // percent of either side's own code found in the other (the larger)
     bool unusual = false;               // above the class's upper fence for this lab
     std::vector<MatchedRun> runs;
 };
@@ -29,8 +30,8 @@ struct SimilarPair {
 struct LabSimilarity {
     int lab = 0;
     std::vector<std::string> students;  // those with code of their own in this lab
-    std::vector<std::string> texts;     // each one's lab files, joined, as compared (stub lines kept, marked)
-    std::vector<std::vector<bool>> stubLines; // per text: whether a line (from 0) is the stub's
+    std::vector<std::string> texts;     // each one's lab files, joined, as shown
+    std::vector<std::vector<bool>> leftOut;   // per text: whether a line (from 0) was left out (the stub's, or common)
     std::vector<SimilarPair> pairs;     // the most similar first, at most kShownPairs
     double median = 0.;                 // the usual overlap of two students of the class, percent
     double fence = 0.;                  // Tukey's upper fence of the overlaps (Q3 + 1.5 IQR): above it, unusual
