@@ -29,13 +29,13 @@ using namespace raylab::test;
 
 namespace {
 
-// Three runs of grade-class into one OUT, each class folder graded by one agent: two students with
-// the reference, two with lab 1's i and j swapped, one with lab 3's cos(dot). `extra` is added to
-// every run's arguments.
+// Four runs of grade-class into one OUT, each class folder graded by one agent: two students with
+// the reference, two with lab 1's i and j swapped, one with lab 3's cos(dot), one whose lab 2 crashes.
 fs::path gradedClass(const std::string& name) {
     const fs::path root = freshFolder(name), out = root / "out";
     const std::vector<std::pair<std::string, std::vector<std::string>>> runs{
-        {"raylab-agent-reference", {"ada", "ben"}}, {"raylab-mistake-i_j_swapped", {"cleo", "dan"}}, {"raylab-mistake-cos_of_dot", {"eve"}}};
+        {"raylab-agent-reference", {"ada", "ben"}}, {"raylab-mistake-i_j_swapped", {"cleo", "dan"}},
+        {"raylab-mistake-cos_of_dot", {"eve"}}, {"raylab-bad-crash", {"fay"}}};
     for (const auto& [agent, students] : runs) {
         const fs::path classDir = root / ("class-" + agent);
         for (const std::string& s : students) {
@@ -81,12 +81,12 @@ TEST_CASE("pass rates and mistake counts agree with each student's report; class
     const fs::path out = gradedClass("raylab-class-page");
     const std::string page = readFile(out / "index.html");
     REQUIRE(!page.empty());
-    CHECK(page.find("The class: 5 students graded") != std::string::npos);
+    CHECK(page.find("The class: 6 students graded") != std::string::npos);
     CHECK(page.find("<svg") != std::string::npos);
 
     // Figures: a test named after the figure's id in every report; checks: the sums over every item.
     const std::vector<nlohmann::json> reports = studentReports(out);
-    REQUIRE(reports.size() == 5);
+    REQUIRE(reports.size() == 6);
     const auto items = rowsWith(page, "data-item");
     int passedOnPage = 0, gradedOnPage = 0, passedInReports = 0, gradedInReports = 0;
     for (const auto& [name, row] : items) {
@@ -110,7 +110,7 @@ TEST_CASE("pass rates and mistake counts agree with each student's report; class
         }
     CHECK(passedOnPage == passedInReports);
     CHECK(gradedOnPage == gradedInReports);
-    CHECK(items.at("lab1_gradient").at("data-passed") == "3"); // the two with i and j swapped fail it
+    CHECK(items.at("lab1_gradient").at("data-passed") == "4"); // the two with i and j swapped fail it
     // The least passed first.
     CHECK(page.find("data-item=\"lab1_gradient\"") < page.find("data-item=\"lab4_a\""));
 
@@ -124,6 +124,10 @@ TEST_CASE("pass rates and mistake counts agree with each student's report; class
         CHECK(named == 2);
     }
     CHECK(page.find("students/cleo/report/index.html") != std::string::npos);
+    // The crash: fay alone among the code that stopped.
+    const auto trouble = rowsWith(page, "data-student");
+    CHECK(trouble.size() == 1);
+    CHECK(trouble.count("fay") == 1);
 
     // Remade alone, from the results, in French: the same counts.
     fs::remove(out / "index.html");
@@ -131,9 +135,20 @@ TEST_CASE("pass rates and mistake counts agree with each student's report; class
                                          out.parent_path() / "class-page.txt");
     REQUIRE_MESSAGE(remade.status == 0, remade.output);
     const std::string french = readFile(out / "index.html");
-    CHECK(french.find("La classe\u00A0: 5 étudiants notés") != std::string::npos);
+    CHECK(french.find("La classe\u00A0: 6 étudiants notés") != std::string::npos);
     CHECK(rowsWith(french, "data-item") == items);
     CHECK(rowsWith(french, "data-mistake").at("i_j_swapped").at("data-students") == "2");
+}
+
+TEST_CASE("code that did not build: every lab of the outcome says so, every item failed") {
+    const raylab::grader::GradeSetup setup = courseSetup();
+    const raylab::grader::StudentOutcome outcome = raylab::grader::outcomeOf(raylab::grader::gradeBuildFailure(setup, "error: x"));
+    fs::remove_all(setup.scratch);
+    REQUIRE(!outcome.labs.empty());
+    for (const auto& lab : outcome.labs) CHECK(lab.unbuilt);
+    for (const auto& item : outcome.items) CHECK(!item.passed);
+    REQUIRE(!outcome.problems.empty());
+    CHECK(outcome.problems[0].find("error: x") != std::string::npos);
 }
 
 } // TEST_SUITE
@@ -151,7 +166,7 @@ TEST_CASE("the class page opens in headless chromium, offline, with its plots") 
                                        "--dump-dom", "file://" + fs::absolute(out / "index.html").string()},
                                       out.parent_path() / "dom.txt");
     REQUIRE_MESSAGE(run.status == 0, run.output);
-    CHECK(run.output.find("<title>The class: 5 students graded</title>") != std::string::npos);
+    CHECK(run.output.find("<title>The class: 6 students graded</title>") != std::string::npos);
     CHECK(run.output.find("<svg") != std::string::npos);
     CHECK(run.output.find("data-item=\"lab1_gradient\"") != std::string::npos);
     CHECK(run.output.find("src=\"http") == std::string::npos); // nothing fetched from anywhere

@@ -95,7 +95,7 @@ void writePassRates(std::ostream& page, const ClassResults& results) {
         const int percent = int(std::lround(100. * r.rate()));
         page << "<tr data-item=\"" << html(r.name) << "\" data-passed=\"" << r.passed << "\" data-graded=\"" << r.graded
              << "\"><td>" << labName(r.lab) << "</td><td>" << html(item) << "</td><td>" << r.passed << " / " << r.graded << " ("
-             << percent << " %)</td><td><span class=\"bar\" style=\"width:" << percent << "px\"></span></td></tr>\n";
+             << tr("class_page.percent", {{"value", std::to_string(percent)}}) << ")</td><td><span class=\"bar\" style=\"width:" << percent << "px\"></span></td></tr>\n";
     }
     page << "</table>\n";
 }
@@ -221,8 +221,7 @@ void writeSimilarity(std::ostream& page, const ClassPageInput& input, const fs::
             writePairPage(lab, pair, out / pairPageName(lab.lab, k));
             page << "<tr data-first=\"" << html(lab.students[pair.first]) << "\" data-second=\"" << html(lab.students[pair.second])
                  << "\" data-overlap=\"" << pair.overlap << "\"" << (pair.unusual ? " class=\"unusual\"" : "") << "><td>"
-                 << html(lab.students[pair.first]) << "</td><td>" << html(lab.students[pair.second]) << "</td><td>" << pair.overlap
-                 << " %" << (pair.unusual ? " — " + tr("class_page.unusual") : "") << "</td><td><a href=\""
+                 << html(lab.students[pair.first]) << "</td><td>" << html(lab.students[pair.second]) << "</td><td>" << tr("class_page.percent", {{"value", std::to_string(pair.overlap)}}) << (pair.unusual ? " — " + tr("class_page.unusual") : "") << "</td><td><a href=\""
                  << link(pairPageName(lab.lab, k)) << "\">" << tr("class_page.side_by_side") << "</a></td></tr>\n";
         }
         page << "</table>\n";
