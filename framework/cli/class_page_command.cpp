@@ -27,7 +27,7 @@ std::vector<RosterEntry> classRoster(const std::string& roster) {
     }
 }
 
-int remakeClassPage(const fs::path& out, const std::vector<RosterEntry>& roster) {
+void remakeClassPage(const fs::path& out, const std::vector<RosterEntry>& roster) {
     const ClassResults results = loadClassResults(out);
     const LabCatalog labs = courseLabs();
     const std::vector<Mistake> mistakes = loadMistakes(referencesFolder());
@@ -43,16 +43,15 @@ int remakeClassPage(const fs::path& out, const std::vector<RosterEntry>& roster)
             std::printf("%s%s\n", tr(id, {{"count", std::to_string(names->size())}}).c_str(), joined.c_str());
         }
     std::printf("%s\n", tr("class_page.written", {{"page", printablePath(out / "index.html")}}).c_str());
-    return 0;
 }
 
-void addClassPageCommand(CLI::App& app, Context& context) {
+void addClassPageCommand(CLI::App& app, Context&) {
     auto out = std::make_shared<std::string>("out/class");
     auto roster = std::make_shared<std::string>();
     CLI::App* command = app.add_subcommand("class-page", tr("cli.class_page"));
     command->add_option(tr("cli.type.DIR"), *out, tr("cli.class_page_out"))->check(CLI::ExistingDirectory);
     command->add_option("--roster", *roster, tr("cli.grade_class_roster"))->check(CLI::ExistingFile);
-    command->callback([&context, out, roster] { context.exitStatus = remakeClassPage(*out, classRoster(*roster)); });
+    command->callback([out, roster] { remakeClassPage(*out, classRoster(*roster)); });
 }
 
 } // namespace raylab::cli

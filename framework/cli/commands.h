@@ -104,9 +104,8 @@ void addAutograderCommand(CLI::App& app, Context& context); // autograder grades
 void addClassPageCommand(CLI::App& app, Context& context);  // class-page
 
 // A class run's page, similar submissions and gradebook files in `out` (class_page_command.cpp),
-// remade from its results; `roster` names the students' ids (empty: their folders' names). Returns
-// the exit status.
-int remakeClassPage(const std::filesystem::path& out, const std::vector<grader::RosterEntry>& roster);
+// remade from its results; `roster` names the students' ids (empty: their folders' names).
+void remakeClassPage(const std::filesystem::path& out, const std::vector<grader::RosterEntry>& roster);
 // --roster's file read, or an error naming it and the problem; nothing when `roster` is empty.
 std::vector<grader::RosterEntry> classRoster(const std::string& roster);
 

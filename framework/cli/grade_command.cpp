@@ -241,6 +241,7 @@ int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& contex
             if (!buildGradingKit(toolchain(true), build::kSourceDir, classBuild, log))
                 std::printf("%s\n", tr("grade.class_kit_failed", {{"log", printablePath(log)}}).c_str());
         };
+    run.afterLastStudent = [&] { remakeClassPage(run.out, roster); };
     const int status = runClass(run, [&](const StudentWork& work) {
         GradeOptions student = o;
         student.labs = work.submission.string();
@@ -259,9 +260,7 @@ int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& contex
         std::printf("%-20s %g / %g\n", printableName(work.name).c_str(), result.score(), result.maxScore());
         return classRecord(work.name, result);
     });
-    if (status >= 128) return status; // stopped by a signal: the next run makes the page
-    const int pageStatus = remakeClassPage(run.out, roster);
-    return status != 0 ? status : pageStatus;
+    return status;
 }
 
 void addCommonOptions(CLI::App* command, GradeOptions& o) {

@@ -290,12 +290,12 @@ TEST_CASE("a copied lab 3, renamed and laid out otherwise, tops the list; studen
     CHECK(report.note.empty());
     const auto lab3 = std::find_if(report.labs.begin(), report.labs.end(), [](const auto& l) { return l.lab == 3; });
     REQUIRE(lab3 != report.labs.end());
-    REQUIRE(lab3->pairs.size() >= 2);
+    REQUIRE(!lab3->pairs.empty());
     const auto& top = lab3->pairs[0];
     CHECK(std::set<std::string>{lab3->students[top.first], lab3->students[top.second]} ==
           std::set<std::string>{"copier_a", "copier_b"});
     CHECK(top.overlap == 100);
-    CHECK(lab3->pairs[1].overlap < top.overlap);
+    for (std::size_t k = 1; k < lab3->pairs.size(); ++k) CHECK(lab3->pairs[k].overlap < top.overlap);
     CHECK(top.unusual);
     CHECK(!top.runs.empty());
     // The solution, written alike by most of this class, is nobody's own: its student has no pair.

@@ -141,13 +141,10 @@ double quantile(std::vector<int> values, double q) {
     return values[below] + (at - double(below)) * (above - values[below]);
 }
 
-// One lab: every pair's overlap, the class's usual overlap, the pairs most alike with their runs.
-std::optional<LabSimilarity> compareLab(const fs::path& sim, const ClassResults& results, const LabDescription& lab,
-                                        const fs::path& labsFolder, const fs::path& folder, std::string& why) {
-    LabSimilarity similarity;
-    similarity.lab = lab.number;
-    fs::remove_all(folder);
-    fs::create_directories(folder);
+// The students of the class with code of their own in `lab`, into `similarity` (their names and
+// texts) and `folder` (the files sim_c++ compares, <k>.cpp); returns those files' names.
+std::vector<std::string> writeOwnCode(const ClassResults& results, const LabDescription& lab, const fs::path& labsFolder,
+                                      const fs::path& folder, LabSimilarity& similarity) {
     const std::set<std::string> stubLines = stubLinesOf(lab, labsFolder);
     std::vector<JoinedCode> codes;
     for (const ClassMember& m : results.students)
@@ -177,6 +174,17 @@ std::optional<LabSimilarity> compareLab(const fs::path& sim, const ClassResults&
         similarity.texts.push_back(std::move(shown));
         similarity.leftOut.push_back(std::move(grey));
     }
+    return files;
+}
+
+// One lab: every pair's overlap, the class's usual overlap, the pairs most alike with their runs.
+std::optional<LabSimilarity> compareLab(const fs::path& sim, const ClassResults& results, const LabDescription& lab,
+                                        const fs::path& labsFolder, const fs::path& folder, std::string& why) {
+    LabSimilarity similarity;
+    similarity.lab = lab.number;
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const std::vector<std::string> files = writeOwnCode(results, lab, labsFolder, folder, similarity);
     const std::size_t n = similarity.students.size();
     if (n < 2) return similarity;
     std::vector<std::string> arguments{"-p", "-e", "-a", "-t", "1"};
@@ -200,6 +208,7 @@ std::optional<LabSimilarity> compareLab(const fs::path& sim, const ClassResults&
     const double q1 = quantile(overlaps, 0.25), q3 = quantile(overlaps, 0.75);
     similarity.fence = q3 + 1.5 * (q3 - q1);
     std::stable_sort(pairs.begin(), pairs.end(), [](const SimilarPair& x, const SimilarPair& y) { return x.overlap > y.overlap; });
+    std::erase_if(pairs, [](const SimilarPair& pair) { return pair.overlap == 0; }); // nothing alike to show
     pairs.resize(std::min(pairs.size(), kShownPairs));
     for (SimilarPair& pair : pairs) {
         pair.unusual = pair.overlap > similarity.fence;

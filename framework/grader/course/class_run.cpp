@@ -555,6 +555,7 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
             writeGrades(out, ledger);
             std::fflush(stdout);
         }
+        if (g_stopSignal == 0 && options.afterLastStudent) options.afterLastStudent();
         return endOfRun(out, unfinished);
     } catch (const std::exception& e) {
         if (!isDiskFull(e)) throw;

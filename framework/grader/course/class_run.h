@@ -53,6 +53,9 @@ struct ClassRunOptions {
     // process of its own that a stop ends as it ends a student's: what the students share, such as
     // the framework's build.
     std::function<void()> beforeFirstStudent;
+    // Run once every student was tried, holding the lock, unless the run stopped (a signal, a full
+    // disk): what is made from every result, such as the class page.
+    std::function<void()> afterLastStudent;
 };
 
 // Grades every student of the class not graded yet. Returns the exit status: 0; 1 when OUT is held
