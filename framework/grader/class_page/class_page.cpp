@@ -119,7 +119,8 @@ void writeMistakes(std::ostream& page, const ClassPageInput& input) {
     page << "<table><tr><th>" << tr("class_page.students") << "</th><th>" << tr("class_page.mistake") << "</th><th>"
          << tr("class_page.hint") << "</th><th>" << tr("class_page.who") << "</th></tr>\n";
     for (const auto& [id, students] : sorted) {
-        const auto it = std::find_if(input.mistakes.begin(), input.mistakes.end(), [&](const Mistake& m) { return m.id == id; });
+        const auto it = std::find_if(input.mistakes.begin(), input.mistakes.end(),
+                                     [&mistake = id](const Mistake& m) { return m.id == mistake; }); // Clang 14: no binding captured
         std::string name = html(id), hint;
         if (it != input.mistakes.end()) {
             name = html(it->name()) + "<br><small>" + labName(it->lab) + ", " + html(it->function) + "</small>";
