@@ -138,6 +138,22 @@ TEST_CASE("pass rates and mistake counts agree with each student's report; class
     CHECK(french.find("La classe\u00A0: 6 étudiants notés") != std::string::npos);
     CHECK(rowsWith(french, "data-item") == items);
     CHECK(rowsWith(french, "data-mistake").at("i_j_swapped").at("data-students") == "2");
+
+    // With a roster: a Moodle row per roster student, the one graded but not listed and the one listed but
+    // not graded named on the console and the page.
+    std::ofstream(out / "roster.csv") << "folder,id,name,email\nada,1,Ada,a@x.org\nben,2,Ben,b@x.org\ncleo,3,Cleo,c@x.org\n"
+                                         "dan,4,Dan,d@x.org\neve,5,Eve,e@x.org\nzed,6,Zed,z@x.org\n";
+    const ProgramRun rostered = runProgram({(binDir() / "raylab").string(), "class-page", out.string(), "--roster",
+                                            (out / "roster.csv").string()},
+                                           out.parent_path() / "class-page-roster.txt");
+    REQUIRE_MESSAGE(rostered.status == 0, rostered.output);
+    CHECK_MESSAGE(rostered.output.find("Graded but not in the roster (1), so in neither gradebook file: fay") != std::string::npos,
+                  rostered.output);
+    CHECK_MESSAGE(rostered.output.find("In the roster but not graded (1), their grades left empty: zed") != std::string::npos,
+                  rostered.output);
+    const auto moodle = readCsv(readFile(out / "gradebook-moodle.csv"));
+    CHECK(moodle.size() == 7); // the header and the roster's six
+    CHECK(readFile(out / "index.html").find("id=\"roster_missing\"") != std::string::npos);
 }
 
 TEST_CASE("code that did not build: every lab of the outcome says so, every item failed") {
