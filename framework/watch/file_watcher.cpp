@@ -50,13 +50,18 @@ struct FileWatcher::Impl {
     int inotify = -1;
     std::map<int, fs::path> watched; // watch descriptor -> folder
 
-    void watchTree(const fs::path& folder) {
+    // Watches `folder` and the folders under it; the files already there are added to `found` (a
+    // folder made after the watcher started may be filled before its watch is added).
+    void watchTree(const fs::path& folder, std::vector<fs::path>& found) {
         constexpr std::uint32_t kEvents = IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE | IN_DELETE;
         const int wd = inotify_add_watch(inotify, folder.c_str(), kEvents);
         if (wd >= 0) watched[wd] = folder;
         std::error_code error;
-        for (const fs::directory_entry& entry : fs::directory_iterator(folder, error))
-            if (!isHidden(entry.path()) && entry.is_directory(error) && !entry.is_symlink(error)) watchTree(entry.path());
+        for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
+            if (isHidden(entry.path()) || entry.is_symlink(error)) continue;
+            if (entry.is_directory(error)) watchTree(entry.path(), found);
+            else if (isWatchedFile(entry.path())) found.push_back(entry.path());
+        }
     }
 
     std::vector<fs::path> inotifyChanges(std::chrono::milliseconds timeout) {
@@ -72,12 +77,14 @@ struct FileWatcher::Impl {
             if (folder == watched.end() || event->len == 0) continue;
             const fs::path file = folder->second / event->name;
             if (event->mask & IN_ISDIR) {
-                if (event->mask & (IN_CREATE | IN_MOVED_TO) && !isHidden(file)) watchTree(file);
+                if (event->mask & (IN_CREATE | IN_MOVED_TO) && !isHidden(file)) watchTree(file, changed);
                 continue;
             }
             if (event->mask & IN_CREATE) continue; // its IN_CLOSE_WRITE follows
-            if (isWatchedFile(file) && std::find(changed.begin(), changed.end(), file) == changed.end()) changed.push_back(file);
+            if (isWatchedFile(file)) changed.push_back(file);
         }
+        std::sort(changed.begin(), changed.end());
+        changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
         return changed;
     }
 #endif
@@ -103,7 +110,8 @@ FileWatcher::FileWatcher(std::vector<fs::path> folders) : m_impl(std::make_uniqu
 #ifdef __linux__
     if (std::getenv("RAYLAB_WATCH_POLL") == nullptr) m_impl->inotify = inotify_init1(IN_CLOEXEC | IN_NONBLOCK);
     if (m_impl->inotify >= 0) {
-        for (const fs::path& folder : m_impl->folders) m_impl->watchTree(folder);
+        std::vector<fs::path> present;
+        for (const fs::path& folder : m_impl->folders) m_impl->watchTree(folder, present);
         return;
     }
 #endif
