@@ -81,7 +81,10 @@ struct FileWatcher::Impl {
                 continue;
             }
             if (event->mask & IN_CREATE) continue; // its IN_CLOSE_WRITE follows
-            if (isWatchedFile(file)) changed.push_back(file);
+            // A file written and then renamed over a lab file (sed -i, many editors) is gone: the
+            // rename is the save; a file deleted is a change.
+            std::error_code error;
+            if (isWatchedFile(file) && (event->mask & IN_DELETE || fs::exists(file, error))) changed.push_back(file);
         }
         std::sort(changed.begin(), changed.end());
         changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
