@@ -98,6 +98,8 @@ struct WatchServer::Impl {
 
 WatchServer::WatchServer(PageState& page, fs::path root, std::string token, Inspector inspector)
     : m_impl(new Impl{page, std::move(root), std::move(token), std::move(inspector), {}, 0}) {
+    // A browser keeps its connection open between requests: stop() waits for it, at most this long.
+    m_impl->server.set_keep_alive_timeout(1);
     // Every method and path reaches route(): the rules hold for all of them, and only GET answers.
     m_impl->server.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
         if (request.method != "GET") {

@@ -83,10 +83,12 @@ public:
         return r["result"].value("value", nlohmann::json());
     }
 
-    // Evaluates `expression` until it is true, every 50 ms for at most `seconds`; false when it never was.
+    // Evaluates `expression` until it is true, every 50 ms for at most `seconds`; false when it never
+    // was. An expression that throws (the page still loading: no body yet) is not true yet.
     bool waitFor(const std::string& expression, double seconds = 120.) {
         for (double waited = 0.; waited < seconds; waited += 0.05) {
-            if (evaluate("Boolean(" + expression + ")") == true) return true;
+            if (evaluate("(() => { try { return Boolean(" + expression + "); } catch (e) { return false; } })()") == true)
+                return true;
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
         }
         return false;
@@ -104,9 +106,9 @@ public:
         call("Input.dispatchKeyEvent", {{"type", "keyUp"}, {"key", key}});
     }
 
-    // The whole page as a PNG's bytes.
+    // The window's view of the page as a PNG's bytes.
     std::vector<std::uint8_t> screenshot() {
-        const nlohmann::json shot = call("Page.captureScreenshot", {{"format", "png"}, {"captureBeyondViewport", true}});
+        const nlohmann::json shot = call("Page.captureScreenshot", {{"format", "png"}});
         return grader::protocol::base64Decode(shot["data"].get<std::string>()).value();
     }
 

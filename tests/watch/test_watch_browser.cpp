@@ -122,7 +122,7 @@ TEST_CASE("a broken computeNormal: the page refreshes by itself, the inspector s
     Watch watch(out / ("watch-output-" + sandbox + ".txt"));
     const std::string address = watch.address();
     REQUIRE_MESSAGE(!address.empty(), readFile(out / ("watch-output-" + sandbox + ".txt")));
-    HeadlessChromium browser(chromium, out / ("watch-chromium-" + sandbox), 1400, 1000);
+    HeadlessChromium browser(chromium, out / ("watch-chromium-" + sandbox), 1600, 1000);
     browser.open(address);
 
     // Lab 3 as written: its three figures pass.
@@ -147,12 +147,16 @@ TEST_CASE("a broken computeNormal: the page refreshes by itself, the inspector s
           true);
     CHECK(browser.evaluate("document.getElementById('changed').textContent.includes('sphere_geometry.cpp')") == true);
 
-    // A click on the sphere's upper half in the student's picture (pixel 300, 150 of 600 x 400).
+    // Zoomed in (+ twice: each pixel of the picture two pixels of the screen), a click on the
+    // sphere's upper half in the student's picture (pixel 300, 150 of 600 x 400).
     const std::string picture = "document.querySelector('#figure-lab3_cosine img[data-kind=yours]')";
     REQUIRE(browser.waitFor(picture + ".complete && " + picture + ".naturalWidth === 600"));
-    browser.evaluate(picture + ".scrollIntoView({block: 'center'})");
-    const nlohmann::json box = browser.evaluate("(() => { const r = " + picture +
-                                                ".getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; })()");
+    browser.press("+");
+    browser.press("+");
+    CHECK(browser.evaluate(picture + ".clientWidth") == 1200);
+    browser.evaluate(picture + ".scrollIntoView({block: 'center', inline: 'center'})"); // the sphere in sight
+    const nlohmann::json box = browser.evaluate("(() => { const p = " + picture + ", r = p.getBoundingClientRect(); " +
+                                                "return [r.left + p.clientLeft, r.top + p.clientTop, p.clientWidth, p.clientHeight]; })()");
     const auto asked = std::chrono::steady_clock::now();
     browser.click(box[0].get<double>() + 300.5 / 600. * box[2].get<double>(), box[1].get<double>() + 150.5 / 400. * box[3].get<double>());
     REQUIRE(browser.waitFor("document.getElementById('inspector').dataset.state === 'answered'"));
@@ -171,7 +175,7 @@ TEST_CASE("a broken computeNormal: the page refreshes by itself, the inspector s
     REQUIRE(first < rows.size());
     CHECK(rows[first]["name"] == "normal");
     CHECK(rows[first]["formula"] == "n = (p - c) / r");
-    CHECK(rows[first]["handout"] == "labs/lab3_sphere/README.md#the-normal");
+    CHECK(rows[first]["handout"] == "handout: labs/lab3_sphere/README.md#the-normal");
     CHECK(rows[first]["student"] != rows[first]["reference"]);
     for (std::size_t k = 0; k < first; ++k) CHECK_MESSAGE(rows[k]["differs"] == false, rows[k]["name"]);
     CHECK(rows[7]["name"] == "colour");
@@ -180,8 +184,11 @@ TEST_CASE("a broken computeNormal: the page refreshes by itself, the inspector s
     // F flips the student's picture to the reference.
     browser.press("f");
     CHECK(browser.evaluate(picture + ".getAttribute('src').includes('reference')") == true);
-    if (sandbox == "bubblewrap") {
+    if (sandbox == "bubblewrap") { // the handouts' screenshot: the page as the click left it, from its top
         browser.press("f");
+        browser.press("-");
+        browser.press("-");
+        browser.evaluate("window.scrollTo(0, 0)");
         raylab::writeFileAtomically(RAYLAB_WATCH_SCREENSHOT, [&] {
             const std::vector<std::uint8_t> png = browser.screenshot();
             return std::string(png.begin(), png.end());

@@ -4,7 +4,7 @@
 "use strict";
 
 let state = { version: 0, words: {} };
-let zoom = 1;       // screen pixels per picture pixel
+let zoom = 0;        // screen pixels per picture pixel; 0: each picture a third of the page's width
 let flipped = false; // "yours" shows the reference (key F)
 
 const $ = (id) => document.getElementById(id);
@@ -71,11 +71,11 @@ function figurePicture(f, kind, path, caption) {
   const figure = element("figure");
   if (path) {
     const img = element("img", { src: picture(path), alt: f.id + " " + kind, "data-kind": kind, "data-figure": f.id });
-    img.style.width = f.width * zoom + "px";
+    if (zoom > 0) img.style.width = f.width * zoom + "px";
     img.addEventListener("click", (event) => {
-      const box = img.getBoundingClientRect();
-      const x = Math.floor((event.clientX - box.left) / box.width * f.width);
-      const y = Math.floor((event.clientY - box.top) / box.height * f.height);
+      const box = img.getBoundingClientRect(); // its border around the picture's own pixels
+      const x = Math.floor((event.clientX - box.left - img.clientLeft) / img.clientWidth * f.width);
+      const y = Math.floor((event.clientY - box.top - img.clientTop) / img.clientHeight * f.height);
       inspect(f.id, x, y);
     });
     figure.appendChild(img);
@@ -89,7 +89,7 @@ function figurePicture(f, kind, path, caption) {
 function showFigures() {
   const main = $("figures");
   main.replaceChildren();
-  main.className = flipped ? "flipped" : "";
+  main.className = (flipped ? "flipped" : "") + (zoom > 0 ? " zoomed" : "");
   for (const f of state.figures || []) {
     const block = element("section", { class: "figure", id: "figure-" + f.id });
     const verdict = element("b", { class: f.passed ? "pass" : "fail" }, word(f.passed ? "pass" : "fail"));
@@ -133,8 +133,8 @@ function show() {
 
 function value(v) {
   if (v === null || v === undefined) return "-";
-  if (Array.isArray(v)) return "(" + v.map(value).join(", ") + ")";
-  if (typeof v === "number") return Number(v.toPrecision(7)).toString();
+  if (Array.isArray(v)) return v.map(value).join("\n");
+  if (typeof v === "number") return Number(v.toPrecision(6)).toString();
   return String(v);
 }
 
@@ -147,18 +147,21 @@ async function inspect(figure, x, y) {
   const table = $("inspector-rows");
   table.replaceChildren();
   const head = element("tr");
-  for (const key of ["quantity", "function", "your_value", "reference_value", "formula", "handout"])
-    head.appendChild(element("th", {}, word(key)));
+  for (const key of ["quantity", "your_value", "reference_value"]) head.appendChild(element("th", {}, word(key)));
   table.appendChild(head);
+  // Each quantity: its name, the function that computes it, the handout's formula and section; the
+  // two values beside them.
   answer.rows.forEach((r, k) => {
     const row = element("tr", { class: (r.differs ? "differs" : "") + (k === answer.first ? " first" : ""), "data-name": r.name });
     if (k === answer.first) row.title = word("first_difference");
-    cell(row, r.name);
-    cell(row, r.function || word("framework"));
+    const what = element("td");
+    what.appendChild(element("div", { class: "name" }, r.name));
+    what.appendChild(element("div", { class: "function" }, word("function") + " " + (r.function || word("framework"))));
+    what.appendChild(element("div", { class: "formula" }, r.formula));
+    what.appendChild(element("div", { class: "handout" }, word("handout") + ": " + r.handout));
+    row.appendChild(what);
     cell(row, value(r.student), { class: "student" });
     cell(row, value(r.reference), { class: "reference" });
-    cell(row, r.formula, { class: "formula" });
-    cell(row, r.handout, { class: "handout" });
     table.appendChild(row);
   });
   $("inspector").dataset.state = "answered";
@@ -168,8 +171,8 @@ async function inspect(figure, x, y) {
 document.addEventListener("keydown", (event) => {
   if (event.target.tagName === "INPUT") return;
   if (event.key === "f" || event.key === "F") flipped = !flipped;
-  else if (event.key === "+" || event.key === "=") zoom = Math.min(zoom * 2, 32);
-  else if (event.key === "-") zoom = Math.max(zoom / 2, 0.25);
+  else if (event.key === "+" || event.key === "=") zoom = zoom === 0 ? 1 : Math.min(zoom * 2, 32);
+  else if (event.key === "-") zoom = zoom <= 1 ? 0 : zoom / 2;
   else return;
   showFigures();
 });
