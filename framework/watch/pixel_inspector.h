@@ -7,8 +7,10 @@
 // inputs (the intersection on the reference ray, the normal at the reference hit), so that the first
 // value that differs names the function that is wrong.
 //
-// Figures of lab 2 and lab 3 with the default camera and one sample a pixel; the other figures
-// (lab 4's lookAt cameras, lab 5's samples) are answered with a note saying so.
+// The figures of one sphere (or lab 2's directions): the default camera's ray (lab 2) or the lookAt
+// camera's frame (lab 4), the hit, the normal and the colour (lab 3); with lab 5's random samples, the
+// pixel's screen points, their average and the pixel's colour in both pictures. Another figure is
+// answered with a note saying so.
 
 #include "watch/watch_session.h"
 
