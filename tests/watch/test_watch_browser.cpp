@@ -14,6 +14,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <regex>
@@ -198,9 +199,29 @@ TEST_CASE("a broken computeNormal: the page refreshes by itself, the inspector s
                 inspectorSeconds * 1000.);
     std::fflush(stdout);
 
+    // A compile error: the page names its file and line.
+    const std::string inward = code;
+    const std::size_t line = std::size_t(std::count(code.begin(), code.begin() + std::ptrdiff_t(code.find("(m_center - p)")), '\n')) + 1;
+    code.replace(code.find("(m_center - p)"), 14, "(m_center - nowhere)");
+    const auto version = [&] { return browser.evaluate("document.body.dataset.version").get<std::string>(); };
+    std::string seen = version();
+    raylab::writeFileAtomically(kSphereFile, code);
+    REQUIRE(browser.waitFor("document.body.dataset.version !== '" + seen + "' && document.body.dataset.phase === 'build_failed'"));
+    const std::string where = "labs/lab3_sphere/sphere_geometry.cpp:" + std::to_string(line) + ":";
+    CHECK(browser.evaluate("document.querySelector('#build-errors code.where').textContent.startsWith('" + where + "')") == true);
+    CHECK(browser.evaluate("document.getElementById('build-errors').textContent.includes('nowhere')") == true);
+
+    // A save during a build is not lost: the inward normal saved, then, while it builds, the outward
+    // one; the page ends with the outward normal's grade.
+    seen = version();
+    raylab::writeFileAtomically(kSphereFile, inward);
+    REQUIRE(browser.waitFor("document.body.dataset.version !== '" + seen + "' && document.body.dataset.phase === 'building'"));
+    writeLabsOneToThree();
+    CHECK(browser.waitFor("document.body.dataset.phase === 'ready' && " + cosine + ".className === 'pass'"));
+    CHECK(browser.evaluate("document.querySelectorAll('#checks tr.failed').length") == 0);
+
     CHECK(watch.stop() == 0); // Ctrl-C stops it cleanly
     CHECK(readFile(out / ("watch-output-" + sandbox + ".txt")).find("raylab watch: stopped") != std::string::npos);
-    writeLabsOneToThree();
 }
 
 } // TEST_SUITE
