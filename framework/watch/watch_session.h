@@ -2,8 +2,8 @@
 // One run of `raylab watch N`: at each save, lab N's grading agent is rebuilt, the lab is graded
 // through it as `raylab grade --lab N` grades it (the same sandbox, checks, pictures and hints), and
 // what the page shows is published: the pictures (student, reference, difference) in the watch's
-// folder, the checks, the compiler's errors with their file and line, the problems (a crash names
-// its lab and function as the grader does).
+// folder, the checks, the compiler's errors with their file and line, the problems (a crash as the
+// grader says it: the figure that crashed, the checks that crashed, named after their function).
 
 #include "watch/page_state.h"
 

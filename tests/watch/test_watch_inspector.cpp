@@ -5,10 +5,14 @@
 #include "watch/pixel_inspector.h"
 
 #include "grader/lab_catalog.h"
+#include "src/messages.h"
 #include "support/files.h"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
+
+#include <cctype>
+#include <sstream>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -27,6 +31,27 @@ json inspect(const std::string& program, const std::string& figure, int x, int y
     std::mutex agents;
     const raylab::watch::PixelInspector inspector(settings, labs, agents);
     return json::parse(inspector.inspect(figure, x, y));
+}
+
+// The anchor GitHub gives a Markdown heading: lower case, spaces as '-', punctuation dropped (the
+// letters beyond ASCII kept as they are).
+std::string anchorOf(const std::string& heading) {
+    std::string anchor;
+    for (const char c : heading) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (std::isalnum(byte) || c == '-' || c == '_' || byte >= 0x80) anchor += char(std::tolower(byte));
+        else if (c == ' ') anchor += '-';
+    }
+    return anchor;
+}
+
+// Whether "labs/<lab>/README.md#anchor" names a heading of that handout.
+bool handoutSectionExists(const std::string& link) {
+    const std::size_t hash = link.find('#');
+    std::istringstream text(raylab::test::readFile(fs::path(RAYLAB_SOURCE_DIR) / link.substr(0, hash)));
+    for (std::string line; std::getline(text, line);)
+        if (line.starts_with("#") && anchorOf(line.substr(line.find_first_not_of('#') + 1)) == link.substr(hash + 1)) return true;
+    return false;
 }
 
 std::vector<std::string> names(const json& answer) {
@@ -72,6 +97,18 @@ TEST_CASE("one offset for every sample differs first at the second sample") {
     CHECK(answer["rows"][0]["differs"] == false);
     REQUIRE(answer["first"] == 2);
     CHECK(answer["rows"][2]["name"] == "sample 2 (sx, sy)");
+}
+
+TEST_CASE("every row links a section of its handout, in English and in French") {
+    for (const raylab::Language language : {raylab::Language::En, raylab::Language::Fr}) {
+        raylab::setLanguage(language);
+        for (const auto& [figure, x, y] : {std::tuple{"lab3_cosine", 300, 150}, std::tuple{"lab4_d", 150, 100},
+                                           std::tuple{"lab5_antialiased", 300, 100}})
+            for (const json& row : inspect("raylab-agent-reference", figure, x, y)["rows"])
+                CHECK_MESSAGE(handoutSectionExists(row["handout"]), row["handout"]);
+    }
+    CHECK(inspect("raylab-agent-reference", "lab3_cosine", 300, 150)["rows"][6]["name"] == "normale");
+    raylab::setLanguage(raylab::Language::En);
 }
 
 TEST_CASE("a pixel outside the picture, a figure of no lab: said, nothing run") {
