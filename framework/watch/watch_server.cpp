@@ -7,7 +7,10 @@
 
 #include <httplib.h>
 
+#include <atomic>
 #include <fstream>
+#include <mutex>
+#include <thread>
 #include <sstream>
 #include <stdexcept>
 
@@ -46,12 +49,19 @@ int integerParam(const httplib::Request& request, const char* name) {
 } // namespace
 
 struct WatchServer::Impl {
+    Impl(PageState& p, fs::path r, std::string t, Inspector i)
+        : page(p), root(std::move(r)), token(std::move(t)), inspector(std::move(i)) {}
     PageState& page;
     fs::path root;
     std::string token;
     Inspector inspector;
     httplib::Server server;
     int port = 0;
+    // httplib's stop() does nothing to a server that is not listening yet: stop() waits for serve()
+    // to have started listening, or keeps it from starting.
+    std::mutex starting;
+    bool stopped = false, serving = false;
+    std::atomic<bool> finished{false};
 
     // What the page asks under its token; false when there is no such thing.
     bool answer(const std::string& asked, const httplib::Request& request, httplib::Response& response) {
@@ -97,7 +107,18 @@ struct WatchServer::Impl {
 };
 
 WatchServer::WatchServer(PageState& page, fs::path root, std::string token, Inspector inspector)
-    : m_impl(new Impl{page, std::move(root), std::move(token), std::move(inspector), {}, 0}) {
+    : m_impl(std::make_unique<Impl>(page, std::move(root), std::move(token), std::move(inspector))) {
+    // httplib's default on Linux is SO_REUSEPORT, with which a second server on the same port (another
+    // raylab watch given the same --port) would share it and answer half the requests: SO_REUSEADDR
+    // alone (a port left in TIME_WAIT by a Ctrl-C can be taken again), and on Windows exclusive use.
+    m_impl->server.set_socket_options([](socket_t sock) { // httplib.h's, at global scope
+        int yes = 1;
+#ifdef _WIN32
+        setsockopt(sock, SOL_SOCKET, SO_EXCLUSIVEADDRUSE, reinterpret_cast<char*>(&yes), sizeof yes);
+#else
+        setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+#endif
+    });
     // A browser keeps its connection open between requests: stop() waits for it, at most this long.
     m_impl->server.set_keep_alive_timeout(1);
     // Every method and path reaches route(): the rules hold for all of them, and only GET answers.
@@ -120,10 +141,26 @@ int WatchServer::bind(int port) {
     return m_impl->port;
 }
 
-void WatchServer::serve() { m_impl->server.listen_after_bind(); }
+void WatchServer::serve() {
+    {
+        const std::lock_guard lock(m_impl->starting);
+        if (m_impl->stopped) return;
+        m_impl->serving = true;
+    }
+    m_impl->server.listen_after_bind();
+    m_impl->finished = true;
+}
 
 void WatchServer::stop() {
     m_impl->page.stop();
+    bool serving = false;
+    {
+        const std::lock_guard lock(m_impl->starting);
+        m_impl->stopped = true;
+        serving = m_impl->serving;
+    }
+    if (!serving) return;
+    while (!m_impl->finished && !m_impl->server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     m_impl->server.stop();
 }
 

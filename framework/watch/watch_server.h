@@ -25,7 +25,7 @@ public:
     // Binds 127.0.0.1:`port` (0: a free port the system chooses) and returns the port; throws
     // std::runtime_error naming the address when it cannot.
     int bind(int port);
-    // Serves until stop(), from another thread.
+    // Serves until stop() (called from another thread, before or after this starts).
     void serve();
     void stop();
 

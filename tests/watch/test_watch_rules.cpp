@@ -4,11 +4,13 @@
 #include "watch/file_watcher.h"
 #include "watch/http_rules.h"
 #include "watch/page_state.h"
+#include "watch/watch_server.h"
 
 #include "src/atomic_file.h"
 #include "support/files.h"
 
 #include <doctest/doctest.h>
+#include <httplib.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -166,5 +168,86 @@ void seesSaves(bool polling) {
 TEST_CASE("inotify sees a save, not a handout's") { seesSaves(false); }
 #endif
 TEST_CASE("polling sees a save, not a handout's") { seesSaves(true); }
+
+} // TEST_SUITE
+
+TEST_SUITE("watch server") {
+
+// The server on a free port of 127.0.0.1, serving `root`, asked over HTTP as a browser asks it.
+struct Served {
+    raylab::watch::PageState page;
+    raylab::watch::WatchServer server;
+    int port;
+    std::thread serving;
+    explicit Served(const fs::path& root)
+        : server(page, root, "0123456789abcdef0123456789abcdef",
+                 [](const std::string& figure, int x, int y) { return figure + " " + std::to_string(x) + " " + std::to_string(y); }),
+          port(server.bind(0)), serving([this] { server.serve(); }) {}
+    ~Served() {
+        server.stop();
+        serving.join();
+    }
+    // GET `path` with the Host header `host` (this server's own when empty): the status and the body.
+    std::pair<int, std::string> get(const std::string& path, std::string host = "") {
+        httplib::Client client("127.0.0.1", port);
+        if (host.empty()) host = "127.0.0.1:" + std::to_string(port);
+        const auto answer = client.Get(path.c_str(), httplib::Headers{{"Host", host}});
+        return answer ? std::pair{answer->status, answer->body} : std::pair{-1, std::string()};
+    }
+};
+
+TEST_CASE("the page, its files and the inspector under the token, with the right Host header only") {
+    const fs::path root = freshFolder("watch-served");
+    raylab::writeFileAtomically(root / "report" / "images" / "a.png", "not really a png");
+    raylab::writeFileAtomically(fs::path(root).concat("-secret.txt"), "secret");
+    Served served(root);
+    const std::string at = "/0123456789abcdef0123456789abcdef/";
+    CHECK(served.server.address() == "http://127.0.0.1:" + std::to_string(served.port) + at);
+    const auto page = served.get(at);
+    CHECK(page.first == 200);
+    CHECK(page.second.find("<script src=\"watch.js\"") != std::string::npos);
+    CHECK(served.get(at + "watch.js").first == 200);
+    CHECK(served.get(at + "files/report/images/a.png") == std::pair{200, std::string("not really a png")});
+    CHECK(served.get(at + "inspect?figure=lab3_cosine&x=3&y=4") == std::pair{200, std::string("lab3_cosine 3 4")});
+    CHECK(served.get(at, "localhost:" + std::to_string(served.port)).first == 200);
+    // Another name in Host (DNS rebinding), another port, no token, another token, outside the folder.
+    CHECK(served.get(at, "evil.example:" + std::to_string(served.port)).first == 403);
+    CHECK(served.get(at + "files/report/images/a.png", "evil.example").first == 403);
+    CHECK(served.get("/").first == 404);
+    CHECK(served.get("/0123456789abcdef0123456789abcdee/").first == 404);
+    CHECK(served.get(at + "files/../" + root.filename().string() + "-secret.txt").first == 404);
+    CHECK(served.get(at + "files/%2e%2e/" + root.filename().string() + "-secret.txt").first == 404);
+    CHECK(served.get(at + "nothing").first == 404);
+    httplib::Client client("127.0.0.1", served.port);
+    const auto posted = client.Post(at.c_str(), "x", "text/plain");
+    REQUIRE(posted);
+    CHECK(posted->status == 405);
+}
+
+TEST_CASE("the state: at once without a version, when a newer one is published with one") {
+    Served served(freshFolder("watch-state"));
+    const std::string at = "/0123456789abcdef0123456789abcdef/";
+    CHECK(served.get(at + "state") == std::pair{200, std::string("{}")});
+    served.page.publish(R"({"phase":"ready"})");
+    CHECK(served.get(at + "state?since=0") == std::pair{200, std::string(R"({"version":1,"phase":"ready"})")});
+    std::pair<int, std::string> waited;
+    std::thread poll([&] { waited = served.get(at + "state?since=1"); });
+    served.page.publish(R"({"phase":"building"})");
+    poll.join();
+    CHECK(waited == std::pair{200, std::string(R"({"version":2,"phase":"building"})")});
+}
+
+TEST_CASE("a port already taken is said, naming it") {
+    Served first(freshFolder("watch-port"));
+    raylab::watch::PageState page;
+    raylab::watch::WatchServer second(page, freshFolder("watch-port2"), "t", nullptr);
+    std::string said;
+    try {
+        second.bind(first.port);
+    } catch (const std::runtime_error& e) {
+        said = e.what();
+    }
+    CHECK(said.find("cannot listen on 127.0.0.1:" + std::to_string(first.port)) != std::string::npos);
+}
 
 } // TEST_SUITE
