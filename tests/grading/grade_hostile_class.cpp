@@ -2,8 +2,8 @@
 // (bad_submissions/stops_itself: lab 1 stops itself with SIGSTOP), a forker (bad_submissions/forks: lab 3
 // forks 100,000 children a call) and a flood (bad_builds/huge_error: lab 5's compile error is about
 // 1 GB), graded end to end by `raylab grade-class` at its default limits, under bubblewrap and under
-// the fallback. The honest students get every point; each hostile one loses its lab, with the limit
-// it hit named in its row; the results stay small. scripts/measure_hostile_class.sh times a class of 30.
+// the fallback. The honest students get every point; each hostile one loses its lab (the forker, the
+// points of the function that forks), with the limit it hit named; the results stay small. scripts/measure_hostile_class.sh times a class of 30.
 #include "grading_support.h"
 #include "grader/sandbox/cgroup.h"
 #include "support/files.h"
@@ -57,6 +57,7 @@ TEST_CASE("a staller, a forker and a 1 GB compile error in a class: each loses i
     else MESSAGE("not root: the fallback is not tested");
     const fs::path root = freshFolder("raylab-hostile-class");
     const fs::path classDir = root / "class";
+    fs::create_directories(classDir);
     addStudent(classDir, "alice");
     addStudent(classDir, "bob");
     addStudent(classDir, "staller", "bad_submissions/stops_itself.patch");
@@ -81,12 +82,16 @@ TEST_CASE("a staller, a forker and a 1 GB compile error in a class: each loses i
             CAPTURE(honest);
             CHECK_MESSAGE(rows[honest]["total"] == rows[honest]["max"], rows[honest]["problems"]);
         }
-        // Each hostile student loses its lab, and keeps the others' points.
-        const auto lost = [&](const std::string& student, const std::string& lab, const std::string& named) {
+        // Each hostile student loses points in its lab (all of them, or those of the function that broke
+        // the rules), keeps the other labs' points, and the limit it hit is named: in its row of
+        // grades.csv for a lab, in its report for a check.
+        const auto lost = [&](const std::string& student, const std::string& lab, const std::string& named, bool wholeLab) {
             CAPTURE(student);
             std::map<std::string, std::string>& row = rows[student];
-            CHECK(row[lab] == "0");
-            CHECK_MESSAGE(row["problems"].find(named) != std::string::npos, row["problems"]);
+            if (wholeLab) CHECK(row[lab] == "0");
+            else CHECK(std::stod(row[lab]) < std::stod(rows["alice"][lab]));
+            const std::string said = wholeLab ? row["problems"] : readFile(out / "students" / student / "report" / "results.json");
+            CHECK_MESSAGE(said.find(named) != std::string::npos, said);
             double others = 0., full = 0.;
             for (const auto& [column, value] : rows["alice"])
                 if (column.rfind("lab", 0) == 0 && column != lab) {
@@ -95,9 +100,9 @@ TEST_CASE("a staller, a forker and a 1 GB compile error in a class: each loses i
                 }
             CHECK_MESSAGE(others == full, row["problems"]);
         };
-        lost("staller", "lab1", "lab 1 used its");
-        if (cgroup) lost("forker", "lab3", "too many processes (more than 256");
-        lost("flood", "lab5", "the compiler's output was cut to 128 KB");
+        lost("staller", "lab1", "lab 1 used its", true);
+        if (cgroup) lost("forker", "lab3", "too many processes (more than 256", false);
+        lost("flood", "lab5", "the compiler's output was cut to 128 KB", true);
         // A gigabyte of compiler output costs its build log 128 KB; every student's results together a few MB.
         CHECK(fs::file_size(out / "students" / "flood" / "build.log") < (std::uintmax_t(256) << 10));
         CHECK(folderBytes(out) < (std::uintmax_t(16) << 20));
