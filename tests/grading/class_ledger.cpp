@@ -399,13 +399,15 @@ TEST_CASE("hostile folder names each get their own row with their printable name
 
         std::vector<std::string> args = classArgs(classDir, root / "out");
         if (!sandbox.empty()) std::erase(args, std::string("--no-sandbox"));
-        ProgramProcess run = startRaylab(args, root / "output.txt", sandbox.empty() ? std::vector<std::string>{}
-                                                                                    : std::vector<std::string>{"RAYLAB_SANDBOX=" + sandbox});
+        std::vector<std::string> environment;
+        if (!sandbox.empty()) environment.push_back("RAYLAB_SANDBOX=" + sandbox);
+        ProgramProcess run = startRaylab(args, root / "output.txt", environment);
         const int status = run.finish();
         const std::string output = run.text();
         REQUIRE_MESSAGE(status == 0, output);
         CHECK_MESSAGE(controlCharacter(output).empty(), controlCharacter(output));
-        CHECK_MESSAGE(controlCharacter(readFile(root / "out" / "grades.csv")).empty(), controlCharacter(readFile(root / "out" / "grades.csv")));
+        const std::string csv = readFile(root / "out" / "grades.csv");
+        CHECK_MESSAGE(controlCharacter(csv).empty(), controlCharacter(csv));
         for (const auto& entry : fs::recursive_directory_iterator(root / "out" / "students")) {
             if (entry.path().extension() != ".html" && entry.path().extension() != ".json") continue;
             CAPTURE(entry.path());
@@ -422,7 +424,7 @@ TEST_CASE("hostile folder names each get their own row with their printable name
         CHECK_MESSAGE(output.find("esc\\x1B[2J") != std::string::npos, output);
         CHECK_MESSAGE(output.find('\x1B') == std::string::npos, output);
 
-        const auto rows = readCsv(readFile(root / "out" / "grades.csv"));
+        const auto rows = readCsv(csv);
         REQUIRE(!rows.empty());
         const std::vector<std::string>& header = rows[0];
         REQUIRE(header.size() >= 4);

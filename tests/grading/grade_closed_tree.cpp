@@ -59,7 +59,8 @@ TEST_CASE("a read-only tree under a folder of mode 0700 grades the same under bu
     if (readOnly) CHECK_FALSE(std::ofstream(tree / "written").is_open()); // root too
     else MESSAGE("no mount namespace here: the tree is not read-only in this test");
 
-    const raylab::grader::Toolchain tools{RAYLAB_CMAKE_COMMAND, RAYLAB_CMAKE_GENERATOR, raylab::grader::findProgram("ccache")};
+    const raylab::grader::Toolchain tools{RAYLAB_CMAKE_COMMAND, RAYLAB_CMAKE_GENERATOR,
+                                          raylab::grader::findProgram("ccache")};
     for (const std::string& sandbox : sandboxes) {
         CAPTURE(sandbox);
         setenv("RAYLAB_SANDBOX", sandbox.c_str(), 1); // the grader's and the build guard's (CMake starts it)
@@ -71,12 +72,13 @@ TEST_CASE("a read-only tree under a folder of mode 0700 grades the same under bu
         const std::string code = readFile(lookAt);
         std::ofstream(lookAt) << "this line is not C++\n" << code;
 
-        GradeSetup setup = loadGradeSetup(tree / "framework/grader/data/references", tree / "labs", tree / "scenes/figures",
-                                          home / ("scratch-" + sandbox));
+        GradeSetup setup = loadGradeSetup(tree / "framework/grader/data/references", tree / "labs",
+                                          tree / "scenes/figures", home / ("scratch-" + sandbox));
         setup.limits.wallSeconds = 60.;
         setup.threads = 2;
         CHECK(sandboxKind(setup.limits).rfind(sandbox == "fallback" ? "unprivileged user" : "bubblewrap", 0) == 0);
-        const raylab::grader::SubmissionBuild b = raylab::grader::buildSubmission(tools, tree, submission, build, setup.labs);
+        const raylab::grader::SubmissionBuild b =
+            raylab::grader::buildSubmission(tools, tree, submission, build, setup.labs);
         CHECK_MESSAGE(b.brokenLabs == std::vector<int>{4}, b.compilerMessage);
         CHECK_MESSAGE(b.compilerMessage.find(lookAt.string() + ":1") != std::string::npos, b.compilerMessage);
         CHECK(b.compilerMessage.find("raylab-compile") == std::string::npos);

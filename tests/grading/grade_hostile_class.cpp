@@ -3,7 +3,8 @@
 // forks 100,000 children a call) and a flood (bad_builds/huge_error: lab 5's compile error is about
 // 1 GB), graded end to end by `raylab grade-class` at its default limits, under bubblewrap and under
 // the fallback. The honest students get every point; each hostile one loses its lab (the forker, the
-// points of the function that forks), with the limit it hit named; the results stay small. scripts/measure_hostile_class.sh times a class of 30.
+// points of the function that forks), with the limit it hit named; the results stay small.
+// scripts/measure_hostile_class.sh times a class of 30.
 #include "grading_support.h"
 #include "grader/sandbox/cgroup.h"
 #include "support/files.h"
@@ -33,7 +34,8 @@ std::map<std::string, std::map<std::string, std::string>> rowsOf(const fs::path&
     REQUIRE(!rows.empty());
     std::map<std::string, std::map<std::string, std::string>> byStudent;
     for (std::size_t r = 1; r < rows.size(); ++r)
-        for (std::size_t c = 0; c < rows[r].size() && c < rows[0].size(); ++c) byStudent[rows[r][0]][rows[0][c]] = rows[r][c];
+        for (std::size_t c = 0; c < rows[r].size() && c < rows[0].size(); ++c)
+            byStudent[rows[r][0]][rows[0][c]] = rows[r][c];
     return byStudent;
 }
 
@@ -85,12 +87,14 @@ TEST_CASE("a staller, a forker and a 1 GB compile error in a class: each loses i
         // Each hostile student loses points in its lab (all of them, or those of the function that broke
         // the rules), keeps the other labs' points, and the limit it hit is named: in its row of
         // grades.csv for a lab, in its report for a check.
-        const auto lost = [&](const std::string& student, const std::string& lab, const std::string& named, bool wholeLab) {
+        const auto lost = [&](const std::string& student, const std::string& lab, const std::string& named,
+                              bool wholeLab) {
             CAPTURE(student);
             std::map<std::string, std::string>& row = rows[student];
             if (wholeLab) CHECK(row[lab] == "0");
             else CHECK(std::stod(row[lab]) < std::stod(rows["alice"][lab]));
-            const std::string said = wholeLab ? row["problems"] : readFile(out / "students" / student / "report" / "results.json");
+            const std::string said =
+                wholeLab ? row["problems"] : readFile(out / "students" / student / "report" / "results.json");
             CHECK_MESSAGE(said.find(named) != std::string::npos, said);
             double others = 0., full = 0.;
             for (const auto& [column, value] : rows["alice"])

@@ -163,7 +163,8 @@ TEST_CASE("the fallback compiles a tree under a folder of mode 0700 (as /root): 
     const Folders f;
     // home/ is closed to every other user, as /root is; what the tree holds inside is world-readable.
     const fs::path home = f.root / "home", tree = home / "tree", build = home / "build";
-    for (const fs::path& folder : {tree / "submission", tree / "include", tree / "solutions", build}) fs::create_directories(folder);
+    for (const fs::path& folder : {tree / "submission", tree / "include", tree / "solutions", build})
+        fs::create_directories(folder);
     fs::permissions(home, fs::perms::owner_all);
     std::ofstream(tree / "include" / "kit.h") << "inline int kit() { return 2; }\n";
     std::ofstream(tree / "submission" / "own.h") << "inline int own() { return 1; }\n";

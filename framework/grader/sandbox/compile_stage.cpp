@@ -44,7 +44,8 @@ CompileStage::CompileStage(const std::vector<fs::path>& folders, const Unprivile
     m_view = m_root / "view";
     m_output = m_root / "out";
     fs::create_directory(m_output);
-    if (!handOver(m_output, user)) throw std::runtime_error("grader: cannot hand the compiler its folder " + m_output.string());
+    if (!handOver(m_output, user))
+        throw std::runtime_error("grader: cannot hand the compiler its folder " + m_output.string());
     std::vector<fs::path> copied;
     for (const fs::path& folder : folders) {
         std::error_code missing;
@@ -53,8 +54,8 @@ CompileStage::CompileStage(const std::vector<fs::path>& folders, const Unprivile
     }
     std::sort(copied.begin(), copied.end()); // a folder before the folders inside it
     for (const fs::path& folder : copied) {
-        if (std::any_of(m_copied.begin(), m_copied.end(), [&](const fs::path& outer) { return isWithin(folder, outer); }))
-            continue;
+        const auto inside = [&](const fs::path& outer) { return isWithin(folder, outer); };
+        if (std::any_of(m_copied.begin(), m_copied.end(), inside)) continue; // copied with its parent
         // The copy's parents, entered and not listed, as the stage's own folder.
         fs::path parent = m_view;
         makeEnterable(parent);

@@ -130,8 +130,8 @@ bool ConfinedCompile::deliver() const {
         }
         if (error) return false;
         // Written by the fallback's user: root's again, so that a process it left cannot rewrite it.
-        if (m_handedOver && (chown(output.place.c_str(), getuid(), getgid()) != 0 || chmod(output.place.c_str(), 0644) != 0))
-            return false;
+        const char* place = output.place.c_str();
+        if (m_handedOver && (chown(place, getuid(), getgid()) != 0 || chmod(place, 0644) != 0)) return false;
     }
     return true;
 }
