@@ -171,6 +171,21 @@ TEST_CASE("a tree in a folder only root may enter (as /root): the agent runs, re
     fs::remove_all(home);
 }
 
+TEST_CASE("an agent's stage is a folder of /tmp of its own, and nothing of it stays once it goes") {
+    if (!detail::unprivilegedUser()) {
+        MESSAGE("SKIPPED: only root has the fallback's user");
+        return;
+    }
+    fs::path folder;
+    {
+        const detail::AgentStage stage(kProbe, {});
+        folder = stage.program().parent_path();
+        CHECK(folder.parent_path() == "/tmp");
+        CHECK(fs::exists(stage.program()));
+    }
+    CHECK_FALSE(fs::exists(folder)); // the stage's own: nothing left for a process ending with _exit to leave
+}
+
 TEST_CASE("the compiler's stage: copies of the allowed folders alone, their paths put back in its words even cut "
           "between two reads") {
     if (!detail::unprivilegedUser()) {

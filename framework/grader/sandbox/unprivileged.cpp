@@ -17,18 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Where every agent's copies go, made once: /tmp, which every user may enter, whatever the tree's folders.
-const fs::path& stageRoot() {
-    static const struct Root {
-        fs::path path = makeEnterableFolder("/tmp/raylab-agents-XXXXXX");
-        ~Root() {
-            std::error_code ignored;
-            fs::remove_all(path, ignored);
-        }
-    } root;
-    return root.path;
-}
-
 // Readable and, for a program, runnable by anyone; never writable (root keeps them).
 void makeReadOnly(const fs::path& path, bool program) {
     const mode_t mode = fs::is_directory(path) || program ? 0555 : 0444;
@@ -77,7 +65,10 @@ void copyReadOnly(const fs::path& from, const fs::path& to) {
 }
 
 AgentStage::AgentStage(const fs::path& program, const std::vector<fs::path>& readable) : m_given(readable) {
-    m_folder = makeEnterableFolder(stageRoot() / "run-XXXXXX");
+    // /tmp, which every user may enter, whatever the tree's folders; a folder of each run's own, removed
+    // with it (a folder shared by a process's runs would stay behind one that ends with _exit, as each
+    // student of a class run does).
+    m_folder = makeEnterableFolder("/tmp/raylab-agent-XXXXXX");
     m_program = m_folder / program.filename();
     fs::copy_file(program, m_program);
     makeReadOnly(m_program, true);

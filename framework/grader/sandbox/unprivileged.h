@@ -51,9 +51,8 @@ std::filesystem::path makeEnterableFolder(const std::filesystem::path& pattern);
 void copyReadOnly(const std::filesystem::path& from, const std::filesystem::path& to);
 
 // An agent's program and inputs copied where the fallback's user can read them and nothing beside:
-// <root>/run-XXXXXX/, root's, mode 0711 (entered, never listed), in a root made once a run in /tmp
-// (root's, 0711); the program 0555, the inputs 0444 (their folders 0555), links left out. Removed
-// when it goes.
+// /tmp/raylab-agent-XXXXXX/, root's, mode 0711 (entered, never listed); the program 0555, the inputs
+// 0444 (their folders 0555), links left out. Removed when it goes.
 class AgentStage {
 public:
     AgentStage(const std::filesystem::path& program, const std::vector<std::filesystem::path>& readable);
