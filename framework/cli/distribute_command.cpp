@@ -26,6 +26,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+grader::LabCatalog courseCatalog(const fs::path& source) {
+    return grader::loadLabCatalog(source / "labs", source / "scenes" / "figures");
+}
+
 // Paths relative to the source tree that are not handed out.
 const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/variants", "tests/grading/bad_submissions",
                                       ".git", "out", "compile_commands.json", ".cache",
@@ -43,9 +47,22 @@ const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/vari
                                       "tests/study/counting_sphere.cpp", "tests/study/counting_sphere.h",
                                       "tests/study/test_render_work.cpp"};
 
-bool withheld(const fs::path& relative) {
+// The labs' folders that are not handed out: every lab's in solutions/, and in labs/ and the grading
+// folders those of the labs the course's list (course.toml) leaves out: absent, not a zero.
+std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::LabCatalog& course) {
+    std::set<std::string> folders;
+    for (const auto& entry : fs::directory_iterator(source / "labs")) {
+        const std::string id = entry.path().filename().string();
+        if (!entry.is_directory() || course.labOfId(id) != nullptr) continue;
+        folders.insert("labs/" + id);
+        folders.insert("framework/grader/labs/" + id);
+    }
+    return folders;
+}
+
+bool withheld(const fs::path& relative, const std::set<std::string>& labFolders) {
     const std::string text = relative.generic_string();
-    if (kWithheld.count(text)) return true;
+    if (kWithheld.count(text) || labFolders.count(text)) return true;
     const std::string top = relative.begin()->string();
     return top.rfind("build", 0) == 0; // build folders
 }
@@ -54,10 +71,11 @@ bool withheld(const fs::path& relative) {
 
 std::vector<fs::path> studentTreeFiles(const fs::path& source) {
     const fs::path sourceAbs = fs::canonical(source);
+    const std::set<std::string> labFolders = labFoldersWithheld(sourceAbs, courseCatalog(sourceAbs));
     std::vector<fs::path> files;
     for (auto it = fs::recursive_directory_iterator(sourceAbs); it != fs::recursive_directory_iterator(); ++it) {
         const fs::path relative = it->path().lexically_relative(sourceAbs); // fs::relative would follow links
-        if (withheld(relative) || it->is_symlink()) {
+        if (withheld(relative, labFolders) || it->is_symlink()) {
             if (it->is_directory()) it.disable_recursion_pending();
             continue;
         }
@@ -76,7 +94,7 @@ int writeStudentTree(const fs::path& source, const fs::path& out) {
         fs::create_directories((out / relative).parent_path());
         fs::copy_file(sourceAbs / relative, out / relative, fs::copy_options::overwrite_existing);
     }
-    writeStudentsReadme(out, grader::loadLabCatalog(sourceAbs / "labs", sourceAbs / "scenes" / "figures"));
+    writeStudentsReadme(out, courseCatalog(sourceAbs));
     const bool hadReadme = std::find(files.begin(), files.end(), fs::path("README.md")) != files.end();
     return int(files.size()) + (hadReadme ? 1 : 2); // LISEZMOI.md, and README.md where there was none
 }

@@ -1,5 +1,7 @@
 #include "grader/lab_catalog.h"
 
+#include "grader/course_list.h"
+
 #include "src/messages.h"
 #include "src/toml_reader.h"
 
@@ -193,6 +195,12 @@ const LabDescription* LabCatalog::lab(int number) const {
     return nullptr;
 }
 
+const LabDescription* LabCatalog::labOfId(const std::string& id) const {
+    for (const LabDescription& l : labs)
+        if (l.id == id) return &l;
+    return nullptr;
+}
+
 const LabFigure* LabCatalog::figure(const std::string& id) const {
     const LabDescription* l = labOfFigure(id);
     return l != nullptr ? l->figure(id) : nullptr;
@@ -263,6 +271,8 @@ LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {
     if (catalog.labs.empty()) throw std::runtime_error("no lab description (lab*/lab.toml) in " + labs.string());
     std::sort(catalog.labs.begin(), catalog.labs.end(),
               [](const auto& a, const auto& b) { return a.number < b.number; });
+    if (const std::optional<std::vector<int>> course = loadCourseList(courseFile(labs), catalog.numbers()))
+        std::erase_if(catalog.labs, [&](const LabDescription& l) { return !contains(*course, l.number); });
     std::map<std::string, const LabDescription*> figureOwner, fileOwner;
     for (std::size_t k = 0; k < catalog.labs.size(); ++k) {
         const LabDescription& lab = catalog.labs[k];

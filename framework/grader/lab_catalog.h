@@ -57,6 +57,7 @@ struct LabCatalog {
     std::vector<LabDescription> labs; // by number
 
     const LabDescription* lab(int number) const;
+    const LabDescription* labOfId(const std::string& id) const; // by its folder's name
     const LabFigure* figure(const std::string& id) const;
     const LabDescription* labOfFigure(const std::string& id) const;
     // The number of the lab that lists the figure; 0 when none does.
@@ -82,7 +83,8 @@ LabDescription loadLabDescription(const std::filesystem::path& file, const std::
 std::vector<SceneDescription> loadFiguresInLabOrder(const std::filesystem::path& folder, const LabCatalog& labs);
 
 // Every <labs>/lab*/lab.toml, checked together (numbers and figure ids unique, `uses` names labs
-// that exist); throws std::runtime_error naming the file, line and key.
+// that exist), those of the course's list (course.toml beside <labs>, course_list.h) kept; throws
+// std::runtime_error naming the file, line and key.
 LabCatalog loadLabCatalog(const std::filesystem::path& labs, const std::filesystem::path& scenes);
 
 } // namespace raylab::grader
