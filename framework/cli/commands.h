@@ -2,6 +2,8 @@
 // The raylab subcommands. Each file adds its own subcommands to the program's CLI11 app; their
 // callbacks set the exit status in the shared context.
 
+#include "src/scene_file.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
@@ -20,7 +22,7 @@ struct Context {
     char** argv = nullptr;
     std::string impl;   // whose lab code: "student" or "reference" (--impl)
     int threads = 0;    // --threads; 0: one per core
-    std::string scenes; // --scenes: the folder of figure scene files
+    std::string scenes; // --scenes: a folder of figure scene files; empty: each lab's, labs/<lab>/scenes/
     int exitStatus = 0;
 
     // Adds --threads and --scenes to a subcommand.
@@ -36,9 +38,12 @@ struct Context {
 // (labs/<lab>/lab.toml) and the grader's references (made by `raylab references`).
 std::filesystem::path labsFolder();
 std::filesystem::path referencesFolder();
-// The lab descriptions of labsFolder(), their figures' scene files in the tree's scenes/figures: what
-// says which lab a figure is, whichever folder --scenes names.
+// The lab descriptions of labsFolder() (the course's), their figures' scene files in each lab's
+// scenes/: what says which lab a figure is, whichever folder --scenes names.
 grader::LabCatalog courseLabs();
+// The figure scene with that role (bench, aliased...): of the --scenes folder when given, else of
+// the course's labs (courseLabs); throws SceneError when none has it, or two.
+SceneDescription figureWithRole(const std::filesystem::path& scenes, std::string_view role);
 // "the labs are 1 2 3 4 5", in the reader's language.
 std::string labList(const grader::LabCatalog& labs);
 

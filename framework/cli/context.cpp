@@ -82,7 +82,11 @@ std::filesystem::path referencesFolder() {
     return std::filesystem::path(build::kSourceDir) / "framework/grader/data/references";
 }
 
-grader::LabCatalog courseLabs() { return grader::loadLabCatalog(labsFolder(), build::kScenesDir); }
+grader::LabCatalog courseLabs() { return grader::loadLabCatalog(labsFolder()); }
+
+SceneDescription figureWithRole(const std::filesystem::path& scenes, std::string_view role) {
+    return sceneWithRole(grader::loadFiguresInLabOrder(scenes, courseLabs()), role, scenes.empty() ? labsFolder() : scenes);
+}
 
 std::string labList(const grader::LabCatalog& labs) {
     std::string list;

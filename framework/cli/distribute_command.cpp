@@ -1,6 +1,6 @@
 // raylab distribute: writes the tree students receive: everything but the reference solutions and
-// what would give them away (the mistakes, valid variants and bad submissions of tests/ are patches
-// against the solutions, which show their lines; the studies and tests that hold a lab's answer are
+// what would give them away (the mistakes in each lab's grading folder, the valid variants and bad
+// submissions of tests/ are patches against the solutions, which show their lines; the studies and tests that hold a lab's answer are
 // built only where solutions/ is). It builds, runs and self-grades on its own: the
 // labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's references
 // (framework/grader/data/references/) go with it. tests/grading/distribute_ships_no_solution.cpp
@@ -27,11 +27,11 @@ namespace {
 namespace fs = std::filesystem;
 
 grader::LabCatalog courseCatalog(const fs::path& source) {
-    return grader::loadLabCatalog(source / "labs", source / "scenes" / "figures");
+    return grader::loadLabCatalog(source / "labs");
 }
 
 // Paths relative to the source tree that are not handed out.
-const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/variants", "tests/grading/bad_submissions",
+const std::set<std::string> kWithheld{"solutions", "tests/variants", "tests/grading/bad_submissions",
                                       ".git", "out", "compile_commands.json", ".cache",
                                       // raylab bench's yardstick writes the solutions' formulas out
                                       "framework/study/yardstick.cpp",
@@ -47,12 +47,14 @@ const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/vari
                                       "tests/study/counting_sphere.cpp", "tests/study/counting_sphere.h",
                                       "tests/study/test_render_work.cpp"};
 
-// The labs' folders that are not handed out: every lab's in solutions/, and in labs/ and the grading
-// folders those of the labs the course's list (course.toml) leaves out: absent, not a zero.
+// The labs' folders that are not handed out: every lab's in solutions/ (kWithheld), its mistakes'
+// patches (against the solutions, they show their lines), and in labs/ and the grading folders those
+// of the labs the course's list (course.toml) leaves out: absent, not a zero.
 std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::LabCatalog& course) {
     std::set<std::string> folders;
     for (const auto& entry : fs::directory_iterator(source / "labs")) {
         const std::string id = entry.path().filename().string();
+        folders.insert("framework/grader/labs/" + id + "/mistakes");
         if (!entry.is_directory() || course.labOfId(id) != nullptr) continue;
         folders.insert("labs/" + id);
         folders.insert("framework/grader/labs/" + id);

@@ -25,7 +25,7 @@ using namespace raylab::grader;
 // Each mistake's agent renders the figures of `scenes`; those that fail their check are its signatures,
 // kept small. Only the figures rendered are touched: a signature of a figure not in `scenes` stays, one
 // whose figure now passes is removed, and an unchanged picture is left byte for byte.
-void makeSignatures(const fs::path& folder, const fs::path& bin, const fs::path& scenes) {
+void makeSignatures(const fs::path& folder, const fs::path& bin, const fs::path& scenes, const LabCatalog& labs) {
     const ReferenceSet references = loadReferences(folder);
     const std::vector<Mistake> mistakes = loadMistakes(folder);
     for (const Mistake& m : mistakes) {
@@ -36,6 +36,7 @@ void makeSignatures(const fs::path& folder, const fs::path& bin, const fs::path&
         }
         GradeSetup setup;
         setup.references = references;
+        setup.labs = labs;
         setup.scenes = scenes;
         setup.scratch = fs::temp_directory_path() / ("raylab-signature-" + m.id);
         fs::remove_all(setup.scratch);
@@ -85,7 +86,7 @@ int makeReferences(const fs::path& folder, const fs::path& scenes, const std::st
         printReference(d, rendered);
         writeReference(folder, rendered.reference);
     }
-    if (!mistakesBin.empty()) makeSignatures(folder, mistakesBin, scenes);
+    if (!mistakesBin.empty()) makeSignatures(folder, mistakesBin, scenes, labs);
     return 0;
 }
 

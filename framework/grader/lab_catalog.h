@@ -19,7 +19,7 @@ struct LabFunction {
 
 struct LabFigure {
     std::string id;              // the scene file's name without .toml
-    std::filesystem::path scene; // scenes/figures/<id>.toml
+    std::filesystem::path scene; // labs/<lab>/scenes/<id>.toml (or the --scenes folder's)
     std::string handout;         // the handout's figure number, e.g. "3(a)"
     std::string captionEn, captionFr;
     double points = 0.;
@@ -75,16 +75,20 @@ struct LabCatalog {
 std::string waitingMessage(const LabCatalog& labs, const std::string& figureId, const NotDoneYet& todo);
 
 // One lab.toml, checked on its own; throws std::runtime_error "FILE:LINE: key: problem".
-// `scenes`: the folder its figures' scene files must be in.
-LabDescription loadLabDescription(const std::filesystem::path& file, const std::filesystem::path& scenes);
+// `scenes`: the folder its figures' scene files must be in; empty: the lab's own, <lab>/scenes/.
+LabDescription loadLabDescription(const std::filesystem::path& file, const std::filesystem::path& scenes = {});
 
-// The scene files of `folder` (loadSceneFolder) in the order of their lab, then of their id (a
-// scene no lab lists first).
+// The figures' scenes in the order of their lab, then of their id: the catalogue's (each lab's
+// scenes/) when `folder` is empty, else the scene files of `folder` (loadSceneFolder; a scene no lab
+// lists first).
 std::vector<SceneDescription> loadFiguresInLabOrder(const std::filesystem::path& folder, const LabCatalog& labs);
+
+// The folders the figures' scene files are in (an agent may read them), each once.
+std::vector<std::filesystem::path> sceneFolders(const LabCatalog& labs);
 
 // Every <labs>/lab*/lab.toml, checked together (numbers and figure ids unique, `uses` names labs
 // that exist), those of the course's list (course.toml beside <labs>, course_list.h) kept; throws
 // std::runtime_error naming the file, line and key.
-LabCatalog loadLabCatalog(const std::filesystem::path& labs, const std::filesystem::path& scenes);
+LabCatalog loadLabCatalog(const std::filesystem::path& labs, const std::filesystem::path& scenes = {});
 
 } // namespace raylab::grader

@@ -1,6 +1,7 @@
 // The command line speaks the reader's language: `raylab --help`, every command's help, the student
 // commands' output and the argument errors, CLI11's own included, are French with --lang fr and hold
 // none of the English sentences.
+#include "support/scene_files.h"
 #include "src/messages.h"
 #include "support/run_program.h"
 
@@ -283,7 +284,7 @@ TEST_CASE("argument errors in French keep the option's name and the value") {
 TEST_CASE("raylab render says what it renders in French") {
     const auto out = scratchFile("render.png");
     // Its first line, whether the student's lab 1 is written (the render succeeds) or not (it fails).
-    const std::string output = run({"render", std::string(RAYLAB_SCENES_DIR) + "/lab1_gradient.toml", "--out", out.string(), "--lang", "fr"}, std::nullopt);
+    const std::string output = run({"render", raylab::test::figureSceneFile("lab1_gradient").string(), "--out", out.string(), "--lang", "fr"}, std::nullopt);
     std::filesystem::remove(out);
     CHECK_MESSAGE(has(output, "lab1_gradient.toml\u00A0: 600 x 400, "), output);
     CHECK_MESSAGE(has(output, ", 1 échantillon par pixel (échantillonneur "), output);

@@ -58,7 +58,7 @@ std::multimap<std::string, std::string> figureMentions(const std::string& text) 
 
 TEST_SUITE("figure tables") {
     TEST_CASE("each handout numbers its lab's figures and names its files as its lab.toml does") {
-        const auto catalog = raylab::grader::loadLabCatalog(kRoot / "labs", kRoot / "scenes/figures");
+        const auto catalog = raylab::grader::loadLabCatalog(kRoot / "labs");
         for (const auto& lab : catalog.labs)
             for (const char* handout : {"README.md", "README.fr.md"}) {
                 const fs::path file = kRoot / "labs" / lab.id / handout;
@@ -80,7 +80,7 @@ TEST_SUITE("figure tables") {
     }
 
     TEST_CASE("docs/figures/README.md has a row per figure: its lab, handout number and caption") {
-        const auto catalog = raylab::grader::loadLabCatalog(kRoot / "labs", kRoot / "scenes/figures");
+        const auto catalog = raylab::grader::loadLabCatalog(kRoot / "labs");
         const std::string text = readFile(kRoot / "docs/figures/README.md");
         static const std::regex row(R"(\| \[`([a-z0-9_]+)`\]\(([a-z0-9_]+)\.png\) \| ([0-9]+) \| Figure ([^|]+) \| ([^|\n]+) \|)");
         std::set<std::string> listed;

@@ -1,5 +1,6 @@
 // The commands as a user mistypes them and as a full disk answers them: a clear error that names
 // what is wrong, a non-zero exit status, never a hang, an abort or an old file destroyed.
+#include "support/scene_files.h"
 #include "support/files.h"
 #include "grading_support.h"
 
@@ -39,7 +40,7 @@ using raylab::test::readFile;
 
 bool has(const Finished& f, const std::string& text) { return f.output.find(text) != std::string::npos; }
 
-const std::string kGradientScene = std::string(RAYLAB_SCENES_DIR) + "/lab1_gradient.toml";
+const std::string kGradientScene = raylab::test::figureSceneFile("lab1_gradient").string();
 
 } // namespace
 

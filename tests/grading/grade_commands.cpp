@@ -129,7 +129,8 @@ TEST_CASE("distribute writes a tree without the solutions, with the references")
     const ProgramRun run = runRaylab({"distribute", out.string()});
     CHECK_MESSAGE(run.status == 0, run.output);
     CHECK_FALSE(fs::exists(out / "solutions"));
-    CHECK_FALSE(fs::exists(out / "tests/mistakes"));
+    for (const auto& lab : fs::directory_iterator(out / "framework/grader/labs"))
+        CHECK_MESSAGE(!fs::exists(lab.path() / "mistakes"), lab.path()); // patches against the solutions
     CHECK_FALSE(fs::exists(out / "tests/variants"));
     // The instructors' code that holds a lab's answer (issue 21), built only where solutions/ is.
     CHECK_FALSE(fs::exists(out / "tests/study/counting_sphere.cpp"));
@@ -153,7 +154,7 @@ TEST_CASE("references for one figure's scene touch that figure alone: every othe
                    scenes = root / "scenes";
     fs::copy(referencesDir(), references, fs::copy_options::recursive);
     fs::create_directories(scenes);
-    fs::copy_file(sourceDir() / "scenes/figures/lab2_directions.toml", scenes / "lab2_directions.toml");
+    fs::copy_file(sourceDir() / "labs/lab2_primary_rays/scenes/lab2_directions.toml", scenes / "lab2_directions.toml");
     std::map<std::string, std::string> before;
     for (const auto& entry : fs::recursive_directory_iterator(references))
         if (entry.is_regular_file()) before[fs::relative(entry.path(), references).generic_string()] = readFile(entry.path());

@@ -22,7 +22,7 @@ inline fs::path referencesDir() { return sourceDir() / "framework/grader/data/re
 // A setup with a scratch folder of its own (tests run in parallel).
 inline GradeSetup courseSetup(const fs::path& references = referencesDir()) {
     std::random_device random;
-    GradeSetup setup = loadGradeSetup(references, sourceDir() / "labs", RAYLAB_SCENES_DIR,
+    GradeSetup setup = loadGradeSetup(references, sourceDir() / "labs", {},
                                       fs::temp_directory_path() / ("raylab-grading-test-" + std::to_string(random())));
     setup.limits.wallSeconds = 60.;
     setup.threads = 2;

@@ -168,12 +168,12 @@ TEST_CASE("a lab's files: each declared once, in order, and no two labs share a 
     const LabCatalog catalog = course.load();
     CHECK(catalog.lab(2)->files() == std::vector<std::string>{"code.cpp"});
     CHECK(catalog.lab(1)->files().empty());
-    const LabCatalog real = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
+    const LabCatalog real = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs");
     CHECK(real.lab(3)->files() == std::vector<std::string>{"sphere_geometry.cpp", "ray_cast_integrator.cpp"});
 }
 
 TEST_CASE("the course's descriptions agree with the references and the scene files") {
-    const LabCatalog catalog = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
+    const LabCatalog catalog = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs");
     const ReferenceSet references = loadReferences(fs::path(RAYLAB_SOURCE_DIR) / "framework/grader/data/references");
     REQUIRE_FALSE(catalog.labs.empty());
     std::size_t figures = 0;
@@ -196,7 +196,7 @@ TEST_CASE("the course's descriptions agree with the references and the scene fil
 
 TEST_CASE(
     "a check of the code lab.toml does not name, or one of lab.toml with no code, is an error naming both places") {
-    const LabCatalog real = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
+    const LabCatalog real = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs");
     LabDescription lab = *real.lab(3);
     CaseRandom random(1);
     const std::vector<FunctionCheck> checks = labChecks(lab, random);

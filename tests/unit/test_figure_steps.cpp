@@ -1,5 +1,6 @@
 // The figure steps the labs register for the crash finder (src/figure_steps.h): each is a function
 // its lab's lab.toml declares, and they run in the order a ray needs them, labs in order.
+#include "support/scene_files.h"
 #include "grader/lab_catalog.h"
 #include "src/figure_steps.h"
 #include "src/scene_file.h"
@@ -15,10 +16,7 @@ namespace {
 
 using namespace raylab;
 
-grader::LabCatalog labCatalog() {
-    const std::filesystem::path scenes = RAYLAB_SCENES_DIR;
-    return grader::loadLabCatalog(scenes.parent_path().parent_path() / "labs", scenes);
-}
+grader::LabCatalog labCatalog() { return grader::loadLabCatalog(test::kLabsDir); }
 
 std::vector<std::string> labIds(const grader::LabCatalog& labs) {
     std::vector<std::string> ids;
@@ -48,7 +46,7 @@ TEST_SUITE("figure steps") {
     }
 
     TEST_CASE("the steps run in the order a ray needs them: setup, then each pixel's, labs in order") {
-        SceneDescription d = loadSceneFile(std::filesystem::path(RAYLAB_SCENES_DIR) / "lab5_antialiased.toml");
+        SceneDescription d = loadSceneFile(test::figureSceneFile("lab5_antialiased"));
         d.width = 2;
         d.height = 1;
         d.samples = 2;
@@ -66,7 +64,7 @@ TEST_SUITE("figure steps") {
     }
 
     TEST_CASE("a whole image has no pixel steps") {
-        const SceneDescription d = loadSceneFile(std::filesystem::path(RAYLAB_SCENES_DIR) / "lab1_gradient.toml");
+        const SceneDescription d = loadSceneFile(test::figureSceneFile("lab1_gradient"));
         g_entered.clear();
         runFigureSteps(d, {}, labIds(labCatalog()), [](const std::string& function) { g_entered.push_back(function); });
         CHECK(g_entered.size() == 3); // the setup steps, the gradient drawn by the first

@@ -18,7 +18,7 @@ namespace raylab::grader {
 inline constexpr int kSignatureScale = 4; // signatures are averaged over 4 x 4 pixel blocks
 
 struct Mistake {
-    std::string id;    // its patch tests/mistakes/<id>.patch, its folder in framework/grader/data/references/mistakes/
+    std::string id;    // its patch framework/grader/labs/<lab>/mistakes/<id>.patch, its folder in framework/grader/data/references/mistakes/
     std::string nameEn, nameFr; // "fovy not halved", "fovy non divisé par deux"
     std::string hintEn, hintFr; // "use tan(fovy / 2): fovy is the full angle"
     std::string label; // its number in the handouts, "2.1": M2.1 in English, E2.1 in French; may be empty

@@ -222,6 +222,18 @@ bool GradeResult::allPassed() const {
            std::all_of(figures.begin(), figures.end(), [](const auto& f) { return f.passed || !f.found; });
 }
 
+fs::path sceneFile(const GradeSetup& setup, const std::string& figure) {
+    if (!setup.scenes.empty()) return setup.scenes / (figure + ".toml");
+    const LabFigure* f = setup.labs.figure(figure);
+    if (f == nullptr) throw std::logic_error("no lab lists the figure " + figure);
+    return f->scene;
+}
+
+std::vector<fs::path> sceneFolders(const GradeSetup& setup) {
+    if (!setup.scenes.empty()) return {setup.scenes};
+    return sceneFolders(setup.labs);
+}
+
 GradeSetup loadGradeSetup(const fs::path& references, const fs::path& labs, const fs::path& scenes,
                           const fs::path& scratch) {
     GradeSetup setup;
