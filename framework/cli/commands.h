@@ -13,6 +13,7 @@
 
 namespace raylab::grader {
 struct LabCatalog;
+struct LabDescription;
 }
 
 namespace raylab::cli {
@@ -37,7 +38,12 @@ struct Context {
 // The course's data in the source tree this program was built from: the lab descriptions
 // (labs/<lab>/lab.toml) and the grader's references (made by `raylab references`).
 std::filesystem::path labsFolder();
-std::filesystem::path referencesFolder();
+// A lab's grading folder, framework/grader/labs/<lab>/, and its references/ in it.
+std::filesystem::path gradingFolder(const grader::LabDescription& lab);
+std::filesystem::path referencesFolder(const grader::LabDescription& lab);
+// The reference folders grading reads: `given` alone (--references) when it is not empty, else each
+// course lab's.
+std::vector<std::filesystem::path> referenceFolders(const std::string& given);
 // The lab descriptions of labsFolder() (the course's), their figures' scene files in each lab's
 // scenes/: what says which lab a figure is, whichever folder --scenes names.
 grader::LabCatalog courseLabs();

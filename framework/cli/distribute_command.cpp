@@ -2,8 +2,8 @@
 // what would give them away (the mistakes in each lab's grading folder, the valid variants and bad
 // submissions of tests/ are patches against the solutions, which show their lines; the studies and tests that hold a lab's answer are
 // built only where solutions/ is). It builds, runs and self-grades on its own: the
-// labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's references
-// (framework/grader/data/references/) go with it. tests/grading/distribute_ships_no_solution.cpp
+// labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's references (each
+// lab's framework/grader/labs/<lab>/references/) go with it. tests/grading/distribute_ships_no_solution.cpp
 // checks what it writes.
 #include "build_info.h"
 #include "commands.h"

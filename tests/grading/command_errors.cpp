@@ -79,7 +79,7 @@ TEST_CASE("grade --images reads regular files only: a pipe or a device is refuse
     const fs::path dir = freshFolder("raylab-images-special");
     REQUIRE(mkfifo((dir / "lab4_d.png").c_str(), 0600) == 0);
     fs::create_symlink("/dev/zero", dir / "lab4_b.png");
-    fs::copy_file(sourceDir() / "framework/grader/data/references/lab1_gradient.png", dir / "lab1_gradient.png");
+    fs::copy_file(referencePicture("lab1_gradient"), dir / "lab1_gradient.png");
     const Finished f = run("raylab", {"grade", "--images", dir.string(), "--report", (dir / "report").string()});
     REQUIRE_MESSAGE(f.status != -1, "still running after a minute: it blocked on the pipe");
     CHECK(f.status == 1);

@@ -144,7 +144,7 @@ TEST_SUITE("protocol") {
     }
 
     TEST_CASE("a picture rewritten after the render (atexit) changes nothing") {
-        const fs::path reference = referencesDir() / "lab1_gradient.png";
+        const fs::path reference = referencePicture("lab1_gradient");
 #ifdef _WIN32
         _putenv_s("RAYLAB_HOSTILE_PNG", reference.string().c_str());
 #else

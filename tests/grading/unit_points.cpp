@@ -174,7 +174,9 @@ TEST_CASE("a lab's files: each declared once, in order, and no two labs share a 
 
 TEST_CASE("the course's descriptions agree with the references and the scene files") {
     const LabCatalog catalog = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs");
-    const ReferenceSet references = loadReferences(fs::path(RAYLAB_SOURCE_DIR) / "framework/grader/data/references");
+    std::vector<fs::path> folders;
+    for (const LabDescription& lab : catalog.labs) folders.push_back(fs::path(RAYLAB_SOURCE_DIR) / "framework/grader/labs" / lab.id / "references");
+    const ReferenceSet references = loadReferences(folders);
     REQUIRE_FALSE(catalog.labs.empty());
     std::size_t figures = 0;
     for (const LabDescription& lab : catalog.labs) {

@@ -234,7 +234,7 @@ std::vector<fs::path> sceneFolders(const GradeSetup& setup) {
     return sceneFolders(setup.labs);
 }
 
-GradeSetup loadGradeSetup(const fs::path& references, const fs::path& labs, const fs::path& scenes,
+GradeSetup loadGradeSetup(const std::vector<fs::path>& references, const fs::path& labs, const fs::path& scenes,
                           const fs::path& scratch) {
     GradeSetup setup;
     setup.references = loadReferences(references);
@@ -243,7 +243,7 @@ GradeSetup loadGradeSetup(const fs::path& references, const fs::path& labs, cons
     functionChecks(setup.labs, 0); // the checks of the code are those of lab.toml, or it throws naming both places
     for (const Mistake& m : setup.mistakes) // any number of labs: a mistake's lab is one that lab.toml describes
         if (setup.labs.lab(m.lab) == nullptr)
-            throw std::runtime_error((references / "mistakes.toml").string() + ": mistake '" + m.id + "' is of lab " +
+            throw std::runtime_error((m.folder / "mistakes.toml").string() + ": mistake '" + m.id + "' is of lab " +
                                      std::to_string(m.lab) + ", which no labs/*/lab.toml describes");
     setup.scenes = scenes;
     setup.scratch = scratch;

@@ -37,9 +37,9 @@ struct GradeSetup {
 std::filesystem::path sceneFile(const GradeSetup& setup, const std::string& figure);
 std::vector<std::filesystem::path> sceneFolders(const GradeSetup& setup);
 
-// `labs`: the folder of the lab descriptions (labs/<lab>/lab.toml); `scenes`: a folder of the figures'
-// scene files, or empty for each lab's own.
-GradeSetup loadGradeSetup(const std::filesystem::path& references, const std::filesystem::path& labs,
+// `references`: the reference folders (each lab's, gradingFolders); `labs`: the folder of the lab
+// descriptions (labs/<lab>/lab.toml); `scenes`: a folder of the figures' scene files, or empty for each lab's own.
+GradeSetup loadGradeSetup(const std::vector<std::filesystem::path>& references, const std::filesystem::path& labs,
                           const std::filesystem::path& scenes, const std::filesystem::path& scratch);
 
 struct AgentPlan {
