@@ -38,7 +38,7 @@ struct LabCheck {
 struct LabDescription {
     std::filesystem::path file; // its lab.toml
     int number = 0;
-    std::string id; // its folder's name, e.g. "lab3_sphere"
+    std::string id; // its folder's name, lab<number>_<name>
     std::string titleEn, titleFr;
     std::vector<LabFunction> functions;
     std::vector<int> uses; // every lab a figure or a check of this one uses

@@ -151,7 +151,7 @@ TEST_CASE("a lab's number and id are those of its folder's name, lab<N>_<name>, 
         const fs::path file = course.lab(folder, text);
         CHECK_THROWS_WITH_AS(course.load(),
                              (file.string() + ":2: id: the folder " + folder +
-                              " is not named lab<number>_<name>, such as lab3_sphere").c_str(),
+                              " is not named lab<number>_<name>, the number without a leading zero").c_str(),
                              std::runtime_error);
         fs::remove_all(file.parent_path());
     }

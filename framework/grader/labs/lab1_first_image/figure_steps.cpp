@@ -14,6 +14,6 @@ void gradient(FigureStepContext& c) {
 
 } // namespace
 
-RAYLAB_REGISTER_FIGURE_STEP("lab1_first_image", "fillGradient", FigureStage::Setup, gradient);
+RAYLAB_REGISTER_FIGURE_STEP("fillGradient", FigureStage::Setup, gradient);
 
 } // namespace raylab
