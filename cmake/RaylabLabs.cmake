@@ -101,6 +101,7 @@ function(raylab_lab_shadings target n)
   if(NOT TARGET ${shadings})
     add_library(${shadings} OBJECT ${sources})
     target_link_libraries(${shadings} PRIVATE raylab_framework raylab_internals raylab_warnings)
+    target_include_directories(${shadings} PRIVATE ${CMAKE_SOURCE_DIR}/labs/${RAYLAB_LAB_FOLDER_${n}}) # the lab's header
     # Its lab, for RAYLAB_REGISTER_FIGURE_STEP: the grading folder's name.
     target_compile_definitions(${shadings} PRIVATE RAYLAB_LAB_ID="${RAYLAB_LAB_FOLDER_${n}}")
   endif()
@@ -126,6 +127,7 @@ function(raylab_lab_target out n origin)
       add_library(${target} OBJECT IMPORTED GLOBAL)
       set_target_properties(${target} PROPERTIES IMPORTED_OBJECTS "${objects}")
       target_link_libraries(${target} INTERFACE raylab_framework)
+      target_include_directories(${target} INTERFACE ${CMAKE_SOURCE_DIR}/labs/${folder})
       raylab_lab_shadings(${target} ${n})
       set(${out} ${target} PARENT_SCOPE)
       return()
@@ -135,6 +137,9 @@ function(raylab_lab_target out n origin)
     endif()
     add_library(${target} OBJECT ${sources})
     target_link_libraries(${target} PUBLIC raylab_framework PRIVATE raylab_warnings)
+    # The lab's own header, labs/<lab>/<name>.h, declares the functions a student writes that no
+    # framework class declares: the stub, the solution and the lab's grading folder include it.
+    target_include_directories(${target} PUBLIC ${CMAKE_SOURCE_DIR}/labs/${folder})
     raylab_lab_shadings(${target} ${n})
     if(origin STREQUAL "labs")
       # A stub's one-line body ignores its parameters on purpose. On the sources, not the target: their

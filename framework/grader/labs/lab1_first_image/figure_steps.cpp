@@ -1,5 +1,5 @@
 // Lab 1's function as the crash finder calls it (src/figure_steps.h): the gradient, the whole image at once.
-#include "raylab/gradient.h"
+#include "gradient.h"
 #include "src/figure_steps.h"
 
 namespace raylab {
