@@ -1,6 +1,7 @@
 // The docs: every relative link and image of every Markdown file resolves; the figure tables
 // agree with the labs' descriptions (labs/<lab>/lab.toml); the contact sheet.
 #include "link_check.h"
+#include "support/scene_files.h"
 
 #include "grader/lab_catalog.h"
 
@@ -89,7 +90,10 @@ TEST_SUITE("figure tables") {
             CAPTURE(id);
             listed.insert(id);
             const auto* lab = catalog.labOfFigure(id);
-            REQUIRE_MESSAGE(lab != nullptr, id << " is the figure of no lab.toml");
+            if (lab == nullptr) { // a figure of a lab the course's list leaves out, or of none
+                CHECK_MESSAGE(!raylab::test::figureSceneFile(id).empty(), id << " is the figure of no lab");
+                continue;
+            }
             const auto& figure = *lab->figure(id);
             CHECK((*it)[2] == id);
             CHECK(std::stoi((*it)[3]) == lab->number);
