@@ -212,9 +212,14 @@ TEST_CASE("the Gradescope zip unpacks into source/ and its setup.sh builds the t
     CHECK(filesNamed(tree() / "solutions", ".cpp").empty());
     CHECK_FALSE(filesNamed(tree() / "solutions", ".o").empty());
     // Without bubblewrap the code graded reads what anyone may read: not the reference objects and pictures.
-    const fs::path references = tree() / "framework" / "grader" / "data" / "references";
-    for (const fs::path& secret : {tree() / "solutions", references})
+    std::vector<fs::path> secrets{tree() / "solutions"};
+    for (const LabDescription& lab : courseSetup().labs.labs)
+        secrets.push_back(tree() / "framework" / "grader" / "labs" / lab.id / "references"); // each lab's
+    for (const fs::path& secret : secrets) {
+        CAPTURE(secret);
+        REQUIRE(fs::exists(secret));
         CHECK((fs::status(secret).permissions() & fs::perms::others_all) == fs::perms::none);
+    }
     for (const std::string& object : filesNamed(tree() / "solutions", ".o"))
         CHECK((fs::status(tree() / "solutions" / object).permissions() & fs::perms::others_all) == fs::perms::none);
 }

@@ -1,6 +1,7 @@
 // The command line speaks the reader's language: `raylab --help`, every command's help, the student
 // commands' output and the argument errors, CLI11's own included, are French with --lang fr and hold
 // none of the English sentences.
+#include "grader/lab_catalog.h"
 #include "support/scene_files.h"
 #include "src/messages.h"
 #include "support/run_program.h"
@@ -255,13 +256,18 @@ TEST_CASE("argument errors in French keep the option's name and the value") {
         std::vector<std::string> args;
         std::string french;
     };
+    // The course's labs, and a number none has (the catalogue says which: no list of our own).
+    const std::vector<int> numbers = raylab::grader::loadLabCatalog(raylab::test::kLabsDir).numbers();
+    std::string listed;
+    for (int n : numbers) listed += " " + std::to_string(n);
+    const std::string none = std::to_string(*std::max_element(numbers.begin(), numbers.end()) + 1);
     // --lang last (it may stand anywhere), but before an option left without its value.
     const std::vector<Case> cases{
         {{"grade", "--bogus", "--lang", "fr"}, "inattendu ici" + nbsp + ": --bogus"},
         {{"--lang", "fr", "grade", "--lab"}, "--lab attend une valeur"},
         {{"grade", "--lab", "two", "--lang", "fr"}, "--lab" + nbsp + ": two n'est pas un nombre positif"},
         {{"report", "--pdf=maybe", "--lang", "fr"}, "--pdf" + nbsp + ": «" + nbsp + "maybe" + nbsp + "» n'est pas une valeur valide"},
-        {{"lab", "9", "--lang", "fr"}, "TP 9" + nbsp + ": ce TP n'existe pas (les TP sont 1 2 3 4 5)"},
+        {{"lab", none, "--lang", "fr"}, "TP " + none + nbsp + ": ce TP n'existe pas (les TP sont" + listed + ")"},
         {{"render", "--lang", "fr"}, "FICHIER est obligatoire"},
         {{"report", "--out", "a", "--out", "b", "--lang", "fr"}, "--out apparaît 2 fois" + nbsp + "; le maximum est 1"},
         {{"figures", "--impl", "mine", "--lang", "fr"}, "--impl" + nbsp + ": mine n'est pas l'une des valeurs {student,reference}"},
