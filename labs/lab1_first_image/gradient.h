@@ -1,5 +1,5 @@
 #pragma once
-// Lab 1's picture.
+// Lab 1's function, declared once: the stub, the solution and the lab's grading include this header.
 
 #include "raylab/texture.h"
 
