@@ -14,7 +14,8 @@ struct CompilerError {
     std::string message;
 };
 
-// Each error once, in the output's order; `sourceDir` makes the files relative.
+// Each error once, in the output's order; `sourceDir` makes the files relative (a relative name, from
+// the compiler's folder in the build, is the tree's file it leads to).
 std::vector<CompilerError> compilerErrors(const std::string& output, const std::filesystem::path& sourceDir);
 
 } // namespace raylab::watch

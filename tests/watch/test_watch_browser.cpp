@@ -208,7 +208,8 @@ TEST_CASE("a broken computeNormal: the page refreshes by itself, the inspector s
     raylab::writeFileAtomically(kSphereFile, code);
     REQUIRE(browser.waitFor("document.body.dataset.version !== '" + seen + "' && document.body.dataset.phase === 'build_failed'"));
     const std::string where = "labs/lab3_sphere/sphere_geometry.cpp:" + std::to_string(line) + ":";
-    CHECK(browser.evaluate("document.querySelector('#build-errors code.where').textContent.startsWith('" + where + "')") == true);
+    const std::string shown = browser.evaluate("document.querySelector('#build-errors code.where').textContent").get<std::string>();
+    CHECK_MESSAGE(shown.rfind(where, 0) == 0, shown);
     CHECK(browser.evaluate("document.getElementById('build-errors').textContent.includes('nowhere')") == true);
 
     // A save during a build is not lost: the inward normal saved, then, while it builds, the outward

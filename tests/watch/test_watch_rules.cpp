@@ -109,6 +109,20 @@ TEST_CASE("compiler errors: file, line, column and message, each once, relative 
     CHECK(compilerErrors("[100%] Built target raylab\n", "/src/tree").empty());
 }
 
+TEST_CASE("compiler errors: a file named relative to the compiler's folder in the build (ccache's base_dir) is the tree's") {
+    const fs::path tree = raylab::test::freshFolder("raylab-watch-relative-errors");
+    fs::create_directories(tree / "labs/lab3_sphere");
+    std::ofstream(tree / "labs/lab3_sphere/sphere_geometry.cpp") << "// the student's file\n";
+    const std::vector<CompilerError> errors =
+        compilerErrors("../../labs/lab3_sphere/sphere_geometry.cpp:7:3: error: expected ';'\n"
+                       "../../nowhere/other.cpp:1:1: error: not in the tree\n",
+                       tree);
+    REQUIRE(errors.size() == 2);
+    CHECK(errors[0].file == "labs/lab3_sphere/sphere_geometry.cpp");
+    CHECK(errors[0].line == 7);
+    CHECK(errors[1].file == "../../nowhere/other.cpp"); // as the compiler said it: no such file in the tree
+}
+
 TEST_CASE("the long poll: a newer version at once, the same one after the wait, everything when stopping") {
     PageState page;
     CHECK(page.after(0, std::chrono::milliseconds(0)) == "{}");
