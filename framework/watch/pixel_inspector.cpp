@@ -278,6 +278,34 @@ Json picturePixel(const fs::path& file, int x, int y) {
     }
 }
 
+// The rows of the answer: each quantity's reference beside the student's, the first that differs
+// marked, with its formula and its place in the handout.
+void addRows(Json& answer, std::vector<Row>& rows, const Answers& answers, const grader::LabCatalog& labs) {
+    const std::string handout = languageCode(language()) == std::string("fr") ? "README.fr.md" : "README.md";
+    for (Row& row : rows) {
+        const bool framework = row.function.empty();
+        if (framework) row.student = row.reference;
+        if (row.call >= 0) {
+            const std::vector<double>& out = answers.outputs[std::size_t(row.call)];
+            row.student = row.count == 0 ? (out.size() > row.from ? Json(out[row.from] != 0.) : Json())
+                                         : numbers(out, row.from, row.count);
+        }
+        const bool differs = !framework && !row.student.is_null() &&
+                             (row.reference.is_boolean() ? row.student != row.reference : differ(row.student, row.reference));
+        if (differs && answer["first"] == -1) answer["first"] = answer["rows"].size();
+        const grader::LabDescription* description = labs.lab(row.lab);
+        answer["rows"].push_back({{"name", tr("watch.quantity." + row.key, {{"k", std::to_string(row.index)}})},
+                                  {"function", row.function},
+                                  {"reference", row.reference},
+                                  {"student", row.student},
+                                  {"differs", differs},
+                                  {"formula", tr("watch.formula." + row.key)},
+                                  {"handout", description == nullptr ? std::string()
+                                                                     : "labs/" + description->id + "/" + handout + "#" +
+                                                                           tr("watch.anchor." + row.key)}});
+    }
+}
+
 } // namespace
 
 std::string PixelInspector::inspect(const std::string& figure, int x, int y) const {
@@ -339,29 +367,7 @@ std::string PixelInspector::inspect(const std::string& figure, int x, int y) con
     }
     answer["note"] = printableText(answers.why);
 
-    const std::string handout = languageCode(language()) == std::string("fr") ? "README.fr.md" : "README.md";
-    for (Row& row : a.rows) {
-        const bool framework = row.function.empty();
-        if (framework) row.student = row.reference;
-        if (row.call >= 0) {
-            const std::vector<double>& out = answers.outputs[std::size_t(row.call)];
-            row.student = row.count == 0 ? (out.size() > row.from ? Json(out[row.from] != 0.) : Json())
-                                         : numbers(out, row.from, row.count);
-        }
-        const bool differs = !framework && !row.student.is_null() &&
-                             (row.reference.is_boolean() ? row.student != row.reference : differ(row.student, row.reference));
-        if (differs && answer["first"] == -1) answer["first"] = answer["rows"].size();
-        const grader::LabDescription* description = m_labs.lab(row.lab);
-        answer["rows"].push_back({{"name", tr("watch.quantity." + row.key, {{"k", std::to_string(row.index)}})},
-                                  {"function", row.function},
-                                  {"reference", row.reference},
-                                  {"student", row.student},
-                                  {"differs", differs},
-                                  {"formula", tr("watch.formula." + row.key)},
-                                  {"handout", description == nullptr ? std::string()
-                                                                     : "labs/" + description->id + "/" + handout + "#" +
-                                                                           tr("watch.anchor." + row.key)}});
-    }
+    addRows(answer, a.rows, answers, m_labs);
     return answer.dump();
 }
 
