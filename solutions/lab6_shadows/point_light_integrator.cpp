@@ -1,4 +1,4 @@
-// Lab 6: shadows. This file is yours to edit.
+// Lab 6: shadows. The reference solution; students write labs/lab6_shadows/point_light_integrator.cpp.
 #include "raylab/point_light_integrator.h"
 
 #include <glm/geometric.hpp>
