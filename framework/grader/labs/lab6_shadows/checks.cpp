@@ -207,7 +207,7 @@ void addShadowChecks(LabChecks& checks, CaseRandom& random) {
               {sphere, {}, {sphere.centre + 5. * n}},
               CaseRandom::asFloat(sphere.centre + (1. - kUnder) * n),
               false,
-              tr("hint.lab6.acne")},
+              tr("hint.lab6.acne_sphere")},
              {tr("what.lab6.under_plane",
                  {{"depth", show(kUnder)}, {"point", show(drawn.point)}, {"normal", show(drawn.normal)}}),
               {{}, drawn, light},
@@ -330,9 +330,12 @@ void addLi(LabChecks& checks, const std::string& name, Shading shading, std::vec
                         std::string hint = c.hint;
                         if (shadowAt[k] != 0) {
                             const bool theirShadow = Outputs(out[shadowAt[k]]).number() != 0.;
-                            if (theirShadow == lit && withinEach(got, shade(shading, c.scene.light, *hit, !theirShadow), 1e-4))
+                            const bool shadowedInstead = withinEach(got, shade(shading, c.scene.light, *hit, !lit), 1e-4);
+                            if (theirShadow == lit && shadowedInstead)
                                 hint = tr("hint.lab6.li_through_in_shadow",
                                           {{"got", tr(theirShadow ? "what.lab6.shadow" : "what.lab6.lit")}});
+                            else if (lit && shadowedInstead) // inShadow right at the exact point: Li's own, rounded, or no light term
+                                hint = tr("hint.lab6.li_acne");
                         }
                         judge.expectNear(c.what, got, expected, 1e-4, hint);
                     }
