@@ -5,8 +5,6 @@
 
 #include "raylab/point_light_integrator.h"
 
-#include <glm/geometric.hpp>
-
 namespace raylab::agent {
 
 namespace {
