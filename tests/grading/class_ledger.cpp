@@ -56,11 +56,13 @@ ProgramProcess startRaylab(const std::vector<std::string>& args, const fs::path&
 
 // grade-class of `classDir` into `out`, every student graded by the reference agent on lab 1 (fast);
 // without bubblewrap where this system cannot run it (grade-class refuses otherwise, as tested below).
-std::vector<std::string> classArgs(const fs::path& classDir, const fs::path& out) {
+// grade-class of lab 1 alone, with the reference's agent; `--no-sandbox` where bubblewrap cannot run
+// (a chroot, a container), unless `asGiven`.
+std::vector<std::string> classArgs(const fs::path& classDir, const fs::path& out, bool asGiven = false) {
     std::vector<std::string> args{"grade-class", classDir.string(), "--out", out.string(), "--agent",
                                   (binDir() / "raylab-agent-reference").string(), "--lab", "1", "--threads", "2",
                                   "--timeout", "60"};
-    if (!bubblewrapMissing().empty()) args.push_back("--no-sandbox");
+    if (!asGiven && !bubblewrapMissing().empty()) args.push_back("--no-sandbox");
     return args;
 }
 
@@ -446,14 +448,14 @@ TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap (o
         return std::pair(status, process.text());
     };
 
-    const auto [missingStatus, missing] = runWith(withoutBwrap, classArgs(classDir, root / "out"));
+    const auto [missingStatus, missing] = runWith(withoutBwrap, classArgs(classDir, root / "out", true));
     CHECK(missingStatus == 1);
     CHECK_MESSAGE(missing.find("grade-class needs bubblewrap on Linux") != std::string::npos, missing);
     CHECK_MESSAGE(missing.find("apt-get install -y bubblewrap") != std::string::npos, missing);
     CHECK_MESSAGE(missing.find("--no-sandbox") != std::string::npos, missing);
     CHECK_FALSE(fs::exists(root / "out")); // refused before it took the lock or graded anyone
 
-    std::vector<std::string> french = classArgs(classDir, root / "out");
+    std::vector<std::string> french = classArgs(classDir, root / "out", true);
     french.insert(french.end(), {"--lang", "fr"});
     const auto [frenchStatus, frenchText] = runWith(withoutBwrap, french);
     CHECK(frenchStatus == 1);
@@ -461,7 +463,7 @@ TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap (o
     CHECK_MESSAGE(frenchText.find("apt-get install -y bubblewrap") != std::string::npos, frenchText);
     CHECK_MESSAGE(frenchText.find("avec --no-sandbox") != std::string::npos, frenchText);
 
-    const auto [brokenStatus, broken] = runWith(brokenBwrap, classArgs(classDir, root / "out"));
+    const auto [brokenStatus, broken] = runWith(brokenBwrap, classArgs(classDir, root / "out", true));
     CHECK(brokenStatus == 1);
     CHECK_MESSAGE(broken.find((brokenBwrap / "bwrap").string() + " cannot create its namespaces here") != std::string::npos,
                   broken);
@@ -492,7 +494,7 @@ TEST_CASE("on Linux grade-class refuses to start without a working bubblewrap (o
 
     if (!asRoot) return;
     // As root, grade-class accepts the fallback: the class is graded, each agent as an unprivileged user.
-    const auto [fallbackStatus, fallback] = runWith(brokenBwrap, classArgs(classDir, root / "out-fallback"), true);
+    const auto [fallbackStatus, fallback] = runWith(brokenBwrap, classArgs(classDir, root / "out-fallback", true), true);
     CHECK_MESSAGE(fallbackStatus == 0, fallback);
     CHECK_MESSAGE(count(fallback, "cannot create its namespaces here") == 1, fallback);
     CHECK_MESSAGE(count(fallback, "the code graded runs as the unprivileged user") == 1, fallback);
