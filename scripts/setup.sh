@@ -11,9 +11,10 @@ set -euo pipefail
 packages=(g++ cmake make patch pkg-config libglm-dev libstb-dev zlib1g-dev doctest-dev libtomlplusplus-dev
           libcli11-dev nlohmann-json3-dev libzip-dev libcmark-dev libyaml-cpp-dev bubblewrap libseccomp-dev ccache)
 # The test suite: python3 (the tests parse junit.xml with its XML parser), chromium (raylab report's
-# HTML in a headless browser, and its fonts), mmdebstrap (the Gradescope zip set up in a bare Debian).
-# A test whose package is missing is skipped, saying so (tests/support/needs.h).
-test_packages=(python3 chromium fonts-dejavu-core mmdebstrap)
+# HTML in a headless browser, and its fonts), mmdebstrap (the Gradescope zip set up in a bare Debian),
+# similarity-tester (sim_c++: the class page's similar submissions, which grade-class finds with it
+# where it is installed). A test whose package is missing is skipped, saying so (tests/support/needs.h).
+test_packages=(python3 chromium fonts-dejavu-core mmdebstrap similarity-tester)
 # What some archives lack, which costs tests only (skipped): Ubuntu has no chromium package but a snap's
 # (chromium-browser, which a container cannot run).
 declare -A optional=([chromium]=1 [fonts-dejavu-core]=1)

@@ -11,6 +11,7 @@
 
 namespace raylab::grader {
 struct LabCatalog;
+struct RosterEntry;
 }
 
 namespace raylab::cli {
@@ -100,6 +101,13 @@ void addGradeCommands(CLI::App& app, Context& context);      // grade, grade-cla
 void addReferencesCommand(CLI::App& app, Context& context); // references
 void addDistributeCommand(CLI::App& app, Context& context); // distribute
 void addAutograderCommand(CLI::App& app, Context& context); // autograder gradescope, github, run
+void addClassPageCommand(CLI::App& app, Context& context);  // class-page
+
+// A class run's page, similar submissions and gradebook files in `out` (class_page_command.cpp),
+// remade from its results; `roster` names the students' ids (empty: their folders' names).
+void remakeClassPage(const std::filesystem::path& out, const std::vector<grader::RosterEntry>& roster);
+// --roster's file read, or an error naming it and the problem; nothing when `roster` is empty.
+std::vector<grader::RosterEntry> classRoster(const std::string& roster);
 
 // The files of the students' tree (relative to `source`): all but the solutions and what would give
 // them away. writeStudentTree copies them into `out` (new or empty), the students' README over the

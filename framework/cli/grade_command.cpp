@@ -2,6 +2,8 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "grader/class_page/gradebook.h"
+#include "grader/class_page/student_outcome.h"
 #include "grader/course/autograder.h"
 #include "grader/course/class_run.h"
 #include "grader/judge/grade.h"
@@ -36,6 +38,7 @@ struct GradeOptions {
     int lab = 0; // 0: every lab
     std::string item; // one check (its name) or figure (its id) alone
     bool noSandbox = false; // grade-class: grade without bubblewrap, as asked
+    std::string roster;     // grade-class: the students' ids for the gradebook files
 };
 
 // raylab grade's exit status when no graded lab has anything written yet (every item reached its
@@ -217,6 +220,7 @@ void requireBubblewrapForClass(const GradeOptions& o) {
 
 int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& context) {
     requireBubblewrapForClass(o);
+    const std::vector<RosterEntry> roster = classRoster(o.roster); // a wrong roster stops before anyone is graded
     // The compiler's guard (raylab-build-guard, started by CMake) reads it: not confined either.
 #if defined(__unix__) || defined(__APPLE__)
     if (o.noSandbox) setenv("RAYLAB_SANDBOX", "none", 1);
@@ -237,6 +241,7 @@ int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& contex
             if (!buildGradingKit(toolchain(true), build::kSourceDir, classBuild, log))
                 std::printf("%s\n", tr("grade.class_kit_failed", {{"log", printablePath(log)}}).c_str());
         };
+    run.afterLastStudent = [&] { remakeClassPage(run.out, roster); };
     const int status = runClass(run, [&](const StudentWork& work) {
         GradeOptions student = o;
         student.labs = work.submission.string();
@@ -251,6 +256,7 @@ int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& contex
             result.title = title;
         }
         writeReports(result, setup.references, work.folder / "report");
+        writeStudentOutcome(outcomeOf(result), work.folder / "outcome.json"); // before result.json: the class page's
         std::printf("%-20s %g / %g\n", printableName(work.name).c_str(), result.score(), result.maxScore());
         return classRecord(work.name, result);
     });
@@ -291,6 +297,7 @@ void addGradeCommands(CLI::App& app, Context& context) {
     gradeClassCommand->add_flag("--no-sandbox", classOptions->noSandbox,
                                 tr("cli.grade_class_no_sandbox"));
     gradeClassCommand->add_option("--lab", classOptions->lab, tr("cli.grade_lab"))->check(CLI::PositiveNumber);
+    gradeClassCommand->add_option("--roster", classOptions->roster, tr("cli.grade_class_roster"))->check(CLI::ExistingFile);
     gradeClassCommand->add_option("--agent", classOptions->agents, tr("cli.grade_class_agent"))
         ->group("");
     addCommonOptions(gradeClassCommand, *classOptions);

@@ -162,6 +162,7 @@ int main(int argc, char** argv) {
     cli::addBenchCommand(app, context);
 #endif
     cli::addGradeCommands(app, context);
+    cli::addClassPageCommand(app, context);
 #ifndef RAYLAB_GRADING_ONLY
     cli::addReferencesCommand(app, context);
     cli::addDistributeCommand(app, context);

@@ -1,6 +1,7 @@
 #include "src/csv.h"
 
 #include <regex>
+#include <stdexcept>
 
 namespace raylab {
 
@@ -35,6 +36,37 @@ std::string csvLine(const std::vector<std::string>& cells) {
     }
     line += '\n';
     return line;
+}
+
+std::vector<std::vector<std::string>> csvRows(const std::string& text) {
+    std::vector<std::vector<std::string>> rows;
+    std::vector<std::string> row(1);
+    bool quoted = false, any = false;
+    int line = 1, quoteLine = 0;
+    const std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+    for (std::size_t k = start; k < text.size(); ++k) {
+        const char c = text[k];
+        any = true;
+        if (c == '\n') ++line;
+        if (quoted && c == '"' && k + 1 < text.size() && text[k + 1] == '"') {
+            row.back() += '"';
+            ++k;
+        } else if (c == '"') {
+            quoted = !quoted;
+            quoteLine = line;
+        } else if (!quoted && c == ',') {
+            row.emplace_back();
+        } else if (!quoted && c == '\n') {
+            rows.push_back(row);
+            row.assign(1, "");
+            any = false;
+        } else if (!(c == '\r' && !quoted && k + 1 < text.size() && text[k + 1] == '\n')) {
+            row.back() += c;
+        }
+    }
+    if (quoted) throw std::runtime_error("line " + std::to_string(quoteLine) + ": a quote is opened and never closed");
+    if (any) rows.push_back(row);
+    return rows;
 }
 
 } // namespace raylab

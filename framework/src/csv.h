@@ -12,4 +12,9 @@ namespace raylab {
 // One line of cells, ending with "\n".
 std::string csvLine(const std::vector<std::string>& cells);
 
+// The rows of a CSV text (a roster): quoted cells may hold commas, doubled quotes and line breaks;
+// lines end with LF or CRLF; a UTF-8 byte order mark (as spreadsheets write it) is skipped. Throws
+// std::runtime_error at a quote left open, naming its line.
+std::vector<std::vector<std::string>> csvRows(const std::string& text);
+
 } // namespace raylab

@@ -1,7 +1,7 @@
 #include "antialiasing_study.h"
 
 #include "culled_render.h"
-#include "svg_plot.h"
+#include "src/svg_plot.h"
 
 #include "src/atomic_file.h"
 #include "src/figure.h"

@@ -108,6 +108,24 @@ TEST_CASE("including a file outside the allowed folders is refused, through .., 
     }
 }
 
+TEST_CASE("a system header reached through a link of an allowed folder is not outside (Debian 13's asm/*.h)") {
+    // Debian 13's /usr/include/<triplet>/asm/*.h are links to /usr/lib/linux/uapi/: the guard reads the
+    // link's target, in the system (readable anyway), not in an allowed folder.
+    const fs::path header = "/usr/include/linux/version.h"; // macros only: compiles under -nostdinc
+    if (!fs::exists(header)) {
+        MESSAGE("skipped: no " << header.string());
+        return;
+    }
+    for (bool confined : modes()) {
+        CAPTURE(confined);
+        const Folders f;
+        fs::create_symlink(header, f.submission / "version.h");
+        const ProgramRun run = f.compile("system.cpp", "#include \"version.h\"\nint f() { return LINUX_VERSION_CODE > 0; }\n", confined);
+        CHECK_MESSAGE(run.status == 0, run.output);
+        CHECK(f.objectExists());
+    }
+}
+
 TEST_CASE("the assembler's .incbin of a file outside: under bubblewrap it does not compile; the dependency file does not "
           "see it") {
     for (bool confined : modes()) {

@@ -555,12 +555,17 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
             writeGrades(out, ledger);
             std::fflush(stdout);
         }
+        if (g_stopSignal == 0 && options.afterLastStudent) options.afterLastStudent();
         return endOfRun(out, unfinished);
     } catch (const std::exception& e) {
         if (!isDiskFull(e)) throw;
         std::printf("raylab: %s\n", printableText(e.what()).c_str());
         return stopOnFullDisk(out);
     }
+}
+
+std::optional<StudentRecord> readStudentResult(const fs::path& studentFolder) {
+    return readRecord(studentFolder / kResultFile);
 }
 
 bool isDiskFull(const std::exception& e) {

@@ -10,6 +10,7 @@
 #include <exception>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,12 +53,19 @@ struct ClassRunOptions {
     // process of its own that a stop ends as it ends a student's: what the students share, such as
     // the framework's build.
     std::function<void()> beforeFirstStudent;
+    // Run once every student was tried, holding the lock, unless the run stopped (a signal, a full
+    // disk): what is made from every result, such as the class page.
+    std::function<void()> afterLastStudent;
 };
 
 // Grades every student of the class not graded yet. Returns the exit status: 0; 1 when OUT is held
 // by another run, a student's grading did not finish, or a disk was full (the run stopped there);
 // 128 + the signal when interrupted (130 for SIGINT, 143 for SIGTERM).
 int runClass(const ClassRunOptions& options, const GradeStudent& grade);
+
+// The result in a student's folder (OUT/students/<safe name>/result.json); nothing while their
+// grading has not finished.
+std::optional<StudentRecord> readStudentResult(const std::filesystem::path& studentFolder);
 
 // Whether `e` says a disk is full (ENOSPC, or EDQUOT: a quota): a WriteError or a file system error.
 // A class run stops on it, saying so once; the student being graded is left for the next run. So

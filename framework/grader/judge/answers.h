@@ -22,6 +22,7 @@ struct RenderedFigure {
     std::optional<Image8> image;
     std::string reason;
     int stubLab = 0; // the lab whose stub the render reached
+    bool stopped = false; // the run ended without this answer (Ledger::fail)
 };
 
 // What an agent answered, over all its runs, judged.
@@ -60,16 +61,18 @@ public:
     // pass or a picture), but one that failed keeps its first reason.
     void fail(Item& item, const std::string& reason) {
         if (!item.resolved) {
-            if (item.check)
+            if (item.check) {
                 resolveCheck(item, false, reason);
-            else
-                resolveFigure(item, RenderedFigure{std::nullopt, reason});
+                m_reported.checks[item.check->name].stopped = true;
+            } else {
+                resolveFigure(item, RenderedFigure{std::nullopt, reason, 0, true});
+            }
         } else if (item.check) {
             CheckOutcome& c = m_reported.checks[item.check->name];
-            if (c.passed) c = CheckOutcome{c.lab, c.name, false, reason, 0., 0.};
+            if (c.passed) c = CheckOutcome{c.lab, c.name, false, reason, 0., 0., 0, true};
         } else {
             RenderedFigure& f = m_reported.figures[item.figure->id];
-            if (f.image) f = RenderedFigure{std::nullopt, reason};
+            if (f.image) f = RenderedFigure{std::nullopt, reason, 0, true};
         }
     }
 

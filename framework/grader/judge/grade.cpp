@@ -156,6 +156,7 @@ void addReportedFigures(const GradeSetup& setup, GradeResult& result, const Agen
         } else if (!it->second.image) {
             result.figures.push_back(figureAtZero(setup, reference, it->second.reason));
             result.figures.back().stubLab = it->second.stubLab;
+            result.figures.back().stopped = it->second.stopped;
         } else {
             // Kept for the report in a folder of the parent's, written after the agent is gone.
             const fs::path file = setup.scratch / ("figures-" + agentName(plan)) / (reference.id + ".png");
@@ -198,8 +199,11 @@ void addDiagnoses(const GradeSetup& setup, GradeResult& result, bool isolated) {
         } catch (const std::exception&) {
             continue; // unreadable: its reason already says so
         }
-        if (image.width == reference->image.width && image.height == reference->image.height)
-            f.diagnosis = diagnose(setup.mistakes, f.id, image, reference->image, suspect).text();
+        if (image.width != reference->image.width || image.height != reference->image.height) continue;
+        const Diagnosis diagnosis = diagnose(setup.mistakes, f.id, image, reference->image, suspect);
+        f.diagnosis = diagnosis.text();
+        for (const Mistake* m : {diagnosis.mistake, diagnosis.alike})
+            if (m != nullptr) f.mistakes.push_back(m->id);
     }
 }
 
@@ -255,6 +259,8 @@ GradeResult gradeCode(const GradeSetup& setup, const std::vector<AgentPlan>& age
         }
     }
     scoreLabs(setup.labs, result);
+    for (LabOutcome& lab : result.labs)
+        lab.unbuilt = std::find(unbuilt.begin(), unbuilt.end(), lab.lab) != unbuilt.end();
     addDiagnoses(setup, result, isolated);
     if (isolated)
         for (LabOutcome& lab : result.labs) lab.notes.push_back(tr("grade.graded_alone"));

@@ -17,6 +17,7 @@ struct CheckOutcome {
     std::string message; // expected / got / hint, or why it never ran
     double points = 0., maxPoints = 0.;
     int stubLab = 0; // the lab whose stub the check reached ("not done yet"); 0 when none
+    bool stopped = false; // its run ended without its answer (a crash, a limit, an attack): the class page lists it
 };
 
 struct FigureOutcome {
@@ -27,9 +28,11 @@ struct FigureOutcome {
     std::string reason;  // the verdict's line, or why there is no image
     ImageVerdict verdict;
     std::string diagnosis;              // the closest classic mistake, when one fits
+    std::vector<std::string> mistakes;  // its id (and the one that draws the same picture): the class page counts them
     std::filesystem::path studentImage; // empty when there is none
     double points = 0., maxPoints = 0.;
     int stubLab = 0; // the lab whose stub its render reached; 0 when none
+    bool stopped = false; // its run ended without its answer (a crash, a limit, an attack)
 };
 
 struct LabOutcome {
@@ -37,6 +40,7 @@ struct LabOutcome {
     double points = 0., maxPoints = 0.;
     std::vector<std::string> notes; // "graded with the other labs from the reference", the labs to fix first
     bool notStarted = false;        // every item reached this lab's own stubs: nothing of it is written yet
+    bool unbuilt = false;           // its code did not compile: every item at zero
 };
 
 struct GradeResult {

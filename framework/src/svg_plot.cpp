@@ -1,4 +1,4 @@
-#include "svg_plot.h"
+#include "src/svg_plot.h"
 
 #include "src/markup.h"
 
@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
-namespace raylab::study {
+namespace raylab {
 
 namespace {
 
@@ -18,6 +18,13 @@ constexpr const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "
 std::string num(double v) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.1f", v);
+    return buffer;
+}
+
+// A bin edge: "2.5", "10".
+std::string formatNumberPlain(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", v);
     return buffer;
 }
 
@@ -88,23 +95,69 @@ void writeSeries(std::ostream& svg, const LogFrame& f, const Series& series, std
     svg << "<text x=\"" << lx + 28 << "\" y=\"" << ly << "\">" << escapeMarkup(series.label) << "</text>\n";
 }
 
+// The opening of a plot of `width` by `height`: the white page, the title, the frame of the plotting
+// area (plotW by plotH from the margins) and the axes' labels.
+void writeFrame(std::ostream& svg, double width, double height, double plotW, double plotH, const std::string& title,
+                const std::string& xLabel, const std::string& yLabel) {
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+        << "\" viewBox=\"0 0 " << width << ' ' << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+    svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    svg << "<text x=\"" << width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << escapeMarkup(title) << "</text>\n";
+    svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plotW << "\" height=\"" << plotH
+        << "\" fill=\"none\" stroke=\"black\"/>\n";
+    svg << "<text x=\"" << kLeft + plotW / 2 << "\" y=\"" << height - 15 << "\" text-anchor=\"middle\">" << escapeMarkup(xLabel) << "</text>\n";
+    svg << "<text transform=\"translate(18," << kTop + plotH / 2 << ") rotate(-90)\" text-anchor=\"middle\">" << escapeMarkup(yLabel) << "</text>\n";
+}
+
+// A histogram's size: smaller than a study's plot, several stand side by side on the class page.
+constexpr double kHistogramWidth = 420, kHistogramHeight = 260, kHistogramRight = 20;
+
 } // namespace
 
 std::string toSvg(const LogLogPlot& plot) {
     const LogFrame f = frameOf(plot);
     std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
-        << "\" viewBox=\"0 0 " << kWidth << ' ' << kHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
-    svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    svg << "<text x=\"" << kWidth / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << escapeMarkup(plot.title) << "</text>\n";
+    writeFrame(svg, kWidth, kHeight, f.plotW, f.plotH, plot.title, plot.xLabel, plot.yLabel);
     writeGrid(svg, f);
-    svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << f.plotW << "\" height=\"" << f.plotH
-        << "\" fill=\"none\" stroke=\"black\"/>\n";
-    svg << "<text x=\"" << kLeft + f.plotW / 2 << "\" y=\"" << kHeight - 15 << "\" text-anchor=\"middle\">" << escapeMarkup(plot.xLabel) << "</text>\n";
-    svg << "<text transform=\"translate(18," << kTop + f.plotH / 2 << ") rotate(-90)\" text-anchor=\"middle\">" << escapeMarkup(plot.yLabel) << "</text>\n";
     for (std::size_t s = 0; s < plot.series.size(); ++s) writeSeries(svg, f, plot.series[s], s);
     svg << "</svg>\n";
     return svg.str();
 }
 
-} // namespace raylab::study
+Histogram histogramOf(std::string title, std::string xLabel, std::string yLabel, const std::vector<double>& values,
+                      double low, double high, int bins) {
+    Histogram h{std::move(title), std::move(xLabel), std::move(yLabel), low, high, std::vector<int>(std::size_t(std::max(bins, 1)), 0)};
+    const double width = (high - low) / double(h.counts.size());
+    for (double v : values) {
+        if (!(v >= low && v <= high)) continue;
+        const std::size_t bin = width > 0. ? std::min(h.counts.size() - 1, std::size_t((v - low) / width)) : 0;
+        ++h.counts[bin];
+    }
+    return h;
+}
+
+std::string toSvg(const Histogram& h) {
+    const double plotW = kHistogramWidth - kLeft - kHistogramRight, plotH = kHistogramHeight - kTop - kBottom;
+    std::ostringstream svg;
+    writeFrame(svg, kHistogramWidth, kHistogramHeight, plotW, plotH, h.title, h.xLabel, h.yLabel);
+    const int highest = std::max(1, h.counts.empty() ? 1 : *std::max_element(h.counts.begin(), h.counts.end()));
+    const double barW = plotW / double(std::max<std::size_t>(h.counts.size(), 1));
+    for (int tick = 0; tick <= highest; tick += std::max(1, highest / 5)) { // counts up the side
+        const double y = kTop + plotH - plotH * tick / highest;
+        svg << "<text x=\"" << kLeft - 6 << "\" y=\"" << num(y + 4) << "\" text-anchor=\"end\">" << tick << "</text>\n";
+    }
+    for (std::size_t b = 0; b < h.counts.size(); ++b) {
+        const double barH = plotH * h.counts[b] / highest, x = kLeft + barW * double(b);
+        svg << "<rect x=\"" << num(x + 1) << "\" y=\"" << num(kTop + plotH - barH) << "\" width=\"" << num(barW - 2)
+            << "\" height=\"" << num(barH) << "\" fill=\"" << kColors[0] << "\"><title>" << h.counts[b] << "</title></rect>\n";
+    }
+    for (std::size_t b = 0; b <= h.counts.size(); b += std::max<std::size_t>(1, h.counts.size() / 5)) { // bin edges across
+        const double value = h.low + (h.high - h.low) * double(b) / double(std::max<std::size_t>(h.counts.size(), 1));
+        svg << "<text x=\"" << num(kLeft + barW * double(b)) << "\" y=\"" << kTop + plotH + 18
+            << "\" text-anchor=\"middle\">" << escapeMarkup(formatNumberPlain(value)) << "</text>\n";
+    }
+    svg << "</svg>\n";
+    return svg.str();
+}
+
+} // namespace raylab
