@@ -121,10 +121,11 @@ target_link_libraries(raylab_stb PRIVATE ZLIB::ZLIB)
 configure_file(${CMAKE_CURRENT_LIST_DIR}/third_party_sources.h.in ${CMAKE_BINARY_DIR}/generated/third_party_sources.h
                @ONLY)
 
-# The two compiled libraries of the tools, each for one command that a build may go without (where the
+# The compiled libraries of the tools, each for one command that a build may go without (where the
 # library has no package, as with MinGW on Debian: cmake/toolchains/mingw-w64.cmake).
 option(RAYLAB_REPORT "Build raylab report, the lab report kit (needs cmark)" ON)
 option(RAYLAB_GRADESCOPE_ZIP "Build raylab autograder gradescope (needs libzip)" ON)
+option(RAYLAB_WATCH "Build raylab watch, the live page (needs cpp-httplib)" ON)
 if(BUILD_TESTING AND NOT (RAYLAB_REPORT AND RAYLAB_GRADESCOPE_ZIP))
   message(FATAL_ERROR "The tests need raylab report and raylab autograder gradescope: configure with "
                       "-DBUILD_TESTING=OFF, or with RAYLAB_REPORT and RAYLAB_GRADESCOPE_ZIP ON")
@@ -157,6 +158,22 @@ if(NOT RAYLAB_GRADING_ONLY AND RAYLAB_GRADESCOPE_ZIP)
   else()
     # Homebrew, vcpkg
     raylab_require_package(libzip libzip::zip "libzip (the Gradescope autograder's zip)" libzip-dev libzip libzip)
+  endif()
+endif()
+
+if(NOT RAYLAB_GRADING_ONLY AND RAYLAB_WATCH)
+  # cpp-httplib: `raylab watch`'s server. Its CMake package (vcpkg, Homebrew, Debian 13), else pkg-config
+  # (Debian 12's libcpp-httplib-dev, a compiled library with no CMake package).
+  find_package(httplib CONFIG QUIET)
+  if(NOT TARGET httplib::httplib)
+    raylab_pkg_check(HTTPLIB IMPORTED_TARGET GLOBAL cpp-httplib)
+    if(TARGET PkgConfig::HTTPLIB)
+      add_library(httplib::httplib ALIAS PkgConfig::HTTPLIB)
+    endif()
+  endif()
+  if(NOT TARGET httplib::httplib)
+    raylab_missing("cpp-httplib (raylab watch's page; or configure with -DRAYLAB_WATCH=OFF)" libcpp-httplib-dev cpp-httplib
+                   cpp-httplib)
   endif()
 endif()
 

@@ -5,11 +5,12 @@
 # missing and the command that installs it on this machine.
 set -euo pipefail
 
-# The build: the compiler and tools, the libraries, the grader's sandbox (bubblewrap, and libseccomp
-# for its fallback where bubblewrap cannot start) and ccache (the students of a class build the
-# framework's files once).
+# The build: the compiler and tools, the libraries (cpp-httplib: raylab watch's page), the grader's
+# sandbox (bubblewrap, and libseccomp for its fallback where bubblewrap cannot start) and ccache (the
+# students of a class build the framework's files once).
 packages=(g++ cmake make patch pkg-config libglm-dev libstb-dev zlib1g-dev doctest-dev libtomlplusplus-dev
-          libcli11-dev nlohmann-json3-dev libzip-dev libcmark-dev libyaml-cpp-dev bubblewrap libseccomp-dev ccache)
+          libcli11-dev nlohmann-json3-dev libzip-dev libcmark-dev libyaml-cpp-dev libcpp-httplib-dev bubblewrap
+          libseccomp-dev ccache)
 # The test suite: python3 (the tests parse junit.xml with its XML parser), chromium (raylab report's
 # HTML in a headless browser, and its fonts), mmdebstrap (the Gradescope zip set up in a bare Debian),
 # similarity-tester (sim_c++: the class page's similar submissions, which grade-class finds with it
@@ -40,7 +41,7 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 if ! command -v dpkg-query >/dev/null 2>&1; then
   cat <<'TXT'
 setup.sh installs packages on Debian and Ubuntu only. Elsewhere, install:
-  macOS (Homebrew): xcode-select --install; brew install cmake glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip cmark yaml-cpp
+  macOS (Homebrew): xcode-select --install; brew install cmake glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip cmark yaml-cpp cpp-httplib
   Windows (vcpkg):  Visual Studio 2022 with "Desktop development with C++", then the libraries of vcpkg.json
 then run the cmake commands of README.md.
 TXT

@@ -41,8 +41,10 @@ endif()
 # pkg-config sees MinGW's packages only (not the build machine's libseccomp or cmark).
 set(ENV{PKG_CONFIG_LIBDIR} /usr/x86_64-w64-mingw32/lib/pkgconfig)
 set(ENV{PKG_CONFIG_PATH} "")
-# Debian has no MinGW package of cmark or libzip: raylab report and raylab autograder gradescope (an
-# instructor's command) are left out; the tests too (-DBUILD_TESTING=OFF), which need both.
+# Debian has no MinGW package of cmark, libzip or cpp-httplib: raylab report, raylab watch and raylab
+# autograder gradescope (an instructor's command) are left out; the tests too (-DBUILD_TESTING=OFF),
+# which need the first two.
 set(RAYLAB_REPORT OFF CACHE BOOL "Build raylab report, the lab report kit (needs cmark)")
 set(RAYLAB_GRADESCOPE_ZIP OFF CACHE BOOL "Build raylab autograder gradescope (needs libzip)")
+set(RAYLAB_WATCH OFF CACHE BOOL "Build raylab watch, the live page (needs cpp-httplib)")
 set(BUILD_TESTING OFF CACHE BOOL "Build the tests")

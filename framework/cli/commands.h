@@ -125,4 +125,5 @@ void writeStudentsReadme(const std::filesystem::path& tree, const grader::LabCat
 
 namespace raylab::cli {
 void addReportCommand(CLI::App& app, Context& context); // report: the student's lab report kit
+void addWatchCommand(CLI::App& app, Context& context);  // watch: the live page (framework/watch/)
 } // namespace raylab::cli

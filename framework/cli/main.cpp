@@ -177,6 +177,9 @@ int main(int argc, char** argv) {
 #ifndef RAYLAB_NO_REPORT // left out where cmark is missing (RAYLAB_REPORT)
     cli::addReportCommand(app, context);
 #endif
+#ifndef RAYLAB_NO_WATCH // left out where cpp-httplib is missing (RAYLAB_WATCH)
+    cli::addWatchCommand(app, context);
+#endif
 #endif
     groupHelpFlags(app);
     if (const std::string absent = instructorsOnlyCommand(argc, argv); !absent.empty()) {

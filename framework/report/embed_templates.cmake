@@ -1,6 +1,10 @@
 # Writes OUT: a header with every template of TEMPLATES (a list of files) as a string constant named
-# after the file (report.html -> kReportHtml), so that raylab never looks for them at run time.
-set(text "#pragma once\n// Generated from framework/report/templates/ by embed_templates.cmake: edit the templates.\n\nnamespace raylab::report::templates {\n\n")
+# after the file (report.html -> kReportHtml) in NAMESPACE (raylab::report::templates unless given;
+# raylab watch's page uses it too), so that raylab never looks for them at run time.
+if(NOT NAMESPACE)
+  set(NAMESPACE raylab::report::templates)
+endif()
+set(text "#pragma once\n// Generated from the templates by framework/report/embed_templates.cmake: edit the templates.\n\nnamespace ${NAMESPACE} {\n\n")
 foreach(file IN LISTS TEMPLATES)
   get_filename_component(name "${file}" NAME)
   string(REGEX REPLACE "[^A-Za-z0-9]+" ";" words "${name}")
@@ -14,7 +18,7 @@ foreach(file IN LISTS TEMPLATES)
   file(READ "${file}" content)
   string(APPEND text "inline constexpr const char* ${symbol} = R\"raylab_template(${content})raylab_template\";\n\n")
 endforeach()
-string(APPEND text "} // namespace raylab::report::templates\n")
+string(APPEND text "} // namespace ${NAMESPACE}\n")
 file(WRITE "${OUT}.tmp" "${text}")
 file(COPY_FILE "${OUT}.tmp" "${OUT}" ONLY_IF_DIFFERENT)
 file(REMOVE "${OUT}.tmp")

@@ -12,7 +12,8 @@ using namespace raylab::report;
 
 namespace {
 
-const Words& kWords = wordsFor("en");
+const std::string kEnglish = "en"; // a named string: no temporary for the reference to outlive
+const Words& kWords = wordsFor(kEnglish);
 
 // A document as a run writes it: two labs, each a generated part and the student's section.
 std::vector<Segment> freshDocument() {

@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <stdexcept>
 
 using namespace raylab;
 using raylab::test::sphereIntersections;

@@ -1,0 +1,145 @@
+// raylab watch [N]: a live page of lab N's pictures beside the references, their difference and the
+// lab's checks, rebuilt and graded again at every save of a lab file (framework/watch/ does the work).
+#include "build_info.h"
+#include "commands.h"
+
+#include "grader/lab_catalog.h"
+#include "grader/sandbox/process.h"
+#include "src/messages.h"
+#include "watch/file_watcher.h"
+#include "watch/http_rules.h"
+#include "watch/pixel_inspector.h"
+#include "watch/watch_server.h"
+#include "watch/watch_session.h"
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+namespace raylab::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct WatchOptions {
+    int lab = 0; // 0: the latest lab with code
+    int port = 0;
+    std::string out = "out/watch";
+    bool noOpen = false;
+};
+
+volatile std::sig_atomic_t g_stop = 0;
+extern "C" void onWatchStop(int) { g_stop = 1; }
+
+// How many stubs (RAYLAB_TODO) the lab's files still hold.
+int stubsLeft(const grader::LabDescription& lab) {
+    int count = 0;
+    for (const std::string& file : lab.files()) {
+        std::ifstream in(labsFolder() / lab.id / file);
+        const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        for (std::size_t at = text.find("RAYLAB_TODO("); at != std::string::npos; at = text.find("RAYLAB_TODO(", at + 1)) ++count;
+    }
+    return count;
+}
+
+// The latest lab of which a function is written (fewer stubs than functions); lab 1 when none is.
+int latestLabWithCode(const grader::LabCatalog& labs) {
+    int latest = labs.labs.empty() ? 1 : labs.labs.front().number;
+    for (const grader::LabDescription& lab : labs.labs)
+        if (stubsLeft(lab) < int(lab.functions.size())) latest = lab.number;
+    return latest;
+}
+
+// Opens the page in the desktop's browser where there is one; nothing where there is not (a server, CI).
+void openInBrowser(const std::string& address) {
+#if defined(_WIN32)
+    const fs::path opener = grader::findProgram("explorer");
+#elif defined(__APPLE__)
+    const fs::path opener = grader::findProgram("open");
+#else
+    const bool desktop = std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr;
+    const fs::path opener = desktop ? grader::findProgram("xdg-open") : fs::path();
+#endif
+    if (!opener.empty()) grader::runProcess({opener.string(), address}, {.output = grader::kNullDevice});
+}
+
+int runWatch(const WatchOptions& o, const Context& context) {
+    const grader::LabCatalog labs = courseLabs();
+    const int lab = o.lab != 0 ? o.lab : latestLabWithCode(labs);
+    const grader::LabDescription* watched = labs.lab(lab);
+    if (watched == nullptr)
+        throw std::invalid_argument(tr("figures.no_such_lab", {{"lab", std::to_string(lab)}, {"labs", labList(labs)}}));
+    watch::WatchSettings settings{lab,
+                                  fs::absolute(o.out),
+                                  build::kSourceDir,
+                                  build::kBuildDir,
+                                  build::kBinaryDir,
+                                  RAYLAB_CMAKE_COMMAND,
+                                  build::kBuildType,
+                                  referencesFolder(),
+                                  labsFolder(),
+                                  context.scenes,
+                                  context.threads};
+    fs::create_directories(settings.out);
+    watch::PageState page;
+    std::mutex agents;
+    watch::WatchSession session(settings, page, agents);
+    const watch::PixelInspector inspector(session.settings(), labs, agents);
+    watch::WatchServer server(page, settings.out, watch::newToken(),
+                              [&inspector](const std::string& figure, int x, int y) { return inspector.inspect(figure, x, y); });
+    server.bind(o.port);
+    std::thread serving([&server] { server.serve(); });
+    watch::FileWatcher files({labsFolder() / watched->id});
+    std::printf("%s\n", tr("watch.serving", {{"lab", std::to_string(lab)}, {"address", server.address()},
+                                             {"folder", "labs/" + watched->id + "/"}, {"how", files.how()}})
+                            .c_str());
+    std::fflush(stdout);
+    if (!o.noOpen) openInBrowser(server.address());
+
+    std::signal(SIGINT, onWatchStop);
+    std::signal(SIGTERM, onWatchStop);
+    std::vector<fs::path> changed;
+    bool first = true;
+    while (g_stop == 0) {
+        if (first || !changed.empty()) {
+            if (!first) std::printf("%s\n", tr("watch.saved", {{"file", fs::relative(changed.front(), build::kSourceDir).generic_string()}}).c_str());
+            std::fflush(stdout);
+            session.refresh(changed);
+            std::printf("%s\n", tr("watch.refreshed", {{"address", server.address()}}).c_str());
+            std::fflush(stdout);
+            first = false;
+        }
+        // Saves made during a build are waiting here: one build at a time, none lost.
+        changed = files.changes(std::chrono::milliseconds(200));
+        if (!changed.empty()) { // an editor's save is often several writes: take them all
+            for (auto more = files.changes(std::chrono::milliseconds(50)); !more.empty(); more = files.changes(std::chrono::milliseconds(50)))
+                changed.insert(changed.end(), more.begin(), more.end());
+        }
+    }
+    server.stop();
+    serving.join();
+    std::printf("%s\n", tr("watch.stopped").c_str());
+    return 0;
+}
+
+} // namespace
+
+void addWatchCommand(CLI::App& app, Context& context) {
+    auto options = std::make_shared<WatchOptions>();
+    CLI::App* watch = app.add_subcommand("watch", tr("cli.watch"));
+    watch->add_option("N", options->lab, tr("cli.watch_lab"))->check(CLI::PositiveNumber);
+    watch->add_option("--port", options->port, tr("cli.watch_port"))->check(integerIn(1, 65535));
+    watch->add_option("--out", options->out, tr("cli.watch_out"));
+    watch->add_flag("--no-open", options->noOpen, tr("cli.watch_no_open"));
+    context.addRenderOptions(watch);
+    watch->callback([&context, options] { context.exitStatus = runWatch(*options, context); });
+}
+
+} // namespace raylab::cli

@@ -1,0 +1,171 @@
+#include "watch/watch_server.h"
+
+#include "watch/http_rules.h"
+#include "watch/templates.h"
+
+#include "src/messages.h"
+
+#include <httplib.h>
+
+#include <atomic>
+#include <fstream>
+#include <mutex>
+#include <thread>
+#include <sstream>
+#include <stdexcept>
+
+namespace raylab::watch {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A long poll waits at most this long, under the browsers' and httplib's timeouts.
+constexpr std::chrono::seconds kLongPoll{20};
+
+std::string contentType(const fs::path& file) {
+    const std::string extension = file.extension().string();
+    if (extension == ".png") return "image/png";
+    if (extension == ".json") return "application/json";
+    if (extension == ".html") return "text/html; charset=utf-8";
+    return "application/octet-stream";
+}
+
+std::string fileBytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+int integerParam(const httplib::Request& request, const char* name) {
+    try {
+        return request.has_param(name) ? std::stoi(request.get_param_value(name)) : -1;
+    } catch (const std::exception&) {
+        return -1;
+    }
+}
+
+} // namespace
+
+struct WatchServer::Impl {
+    Impl(PageState& p, fs::path r, std::string t, Inspector i)
+        : page(p), root(std::move(r)), token(std::move(t)), inspector(std::move(i)) {}
+    PageState& page;
+    fs::path root;
+    std::string token;
+    Inspector inspector;
+    httplib::Server server;
+    int port = 0;
+    // httplib's stop() does nothing to a server that is not listening yet: stop() waits for serve()
+    // to have started listening, or keeps it from starting.
+    std::mutex starting;
+    bool stopped = false, serving = false;
+    std::atomic<bool> finished{false};
+
+    // What the page asks under its token; false when there is no such thing.
+    bool answer(const std::string& asked, const httplib::Request& request, httplib::Response& response) {
+        if (asked.empty()) {
+            response.set_content(templates::kWatchHtml, "text/html; charset=utf-8");
+        } else if (asked == "watch.js") {
+            response.set_content(templates::kWatchJs, "text/javascript; charset=utf-8");
+        } else if (asked == "watch.css") {
+            response.set_content(templates::kWatchCss, "text/css; charset=utf-8");
+        } else if (asked == "state") {
+            const long long since = request.has_param("since") ? std::atoll(request.get_param_value("since").c_str()) : -1;
+            response.set_content(page.after(since < 0 ? 0 : std::uint64_t(since), since < 0 ? std::chrono::seconds(0) : kLongPoll),
+                                 "application/json");
+        } else if (asked == "inspect" && inspector) {
+            response.set_content(inspector(request.get_param_value("figure"), integerParam(request, "x"), integerParam(request, "y")),
+                                 "application/json");
+        } else if (asked.starts_with("files/")) {
+            const auto file = servedFile(root, std::string_view(asked).substr(6));
+            if (!file) return false;
+            response.set_content(fileBytes(*file), contentType(*file).c_str());
+        } else {
+            return false;
+        }
+        return true;
+    }
+
+    void route(const httplib::Request& request, httplib::Response& response) {
+        response.set_header("Cache-Control", "no-store");
+        response.set_header("X-Content-Type-Options", "nosniff");
+        response.set_header("Referrer-Policy", "no-referrer");
+        response.set_header("Content-Security-Policy", "default-src 'self'; img-src 'self'; frame-ancestors 'none'");
+        if (!hostAllowed(request.get_header_value("Host"), port)) {
+            response.status = 403;
+            response.set_content(tr("watch.refused_host"), "text/plain; charset=utf-8");
+            return;
+        }
+        const auto asked = underToken(request.path, token);
+        if (!asked || !answer(*asked, request, response)) {
+            response.status = 404;
+            response.set_content(tr("watch.not_found"), "text/plain; charset=utf-8");
+        }
+    }
+};
+
+WatchServer::WatchServer(PageState& page, fs::path root, std::string token, Inspector inspector)
+    : m_impl(std::make_unique<Impl>(page, std::move(root), std::move(token), std::move(inspector))) {
+    // httplib's default on Linux is SO_REUSEPORT, with which a second server on the same port (another
+    // raylab watch given the same --port) would share it and answer half the requests: SO_REUSEADDR
+    // alone (a port left in TIME_WAIT by a Ctrl-C can be taken again), and on Windows exclusive use.
+    m_impl->server.set_socket_options([](socket_t sock) { // httplib.h's, at global scope
+        int yes = 1;
+#ifdef _WIN32
+        setsockopt(sock, SOL_SOCKET, SO_EXCLUSIVEADDRUSE, reinterpret_cast<char*>(&yes), sizeof yes);
+#else
+        setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+#endif
+    });
+    // A browser keeps its connection open between requests: stop() waits for it, at most this long.
+    m_impl->server.set_keep_alive_timeout(1);
+    // Every method and path reaches route(): the rules hold for all of them, and only GET answers.
+    m_impl->server.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
+        if (request.method != "GET") {
+            response.status = 405;
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        m_impl->route(request, response);
+        return httplib::Server::HandlerResponse::Handled;
+    });
+}
+
+WatchServer::~WatchServer() = default;
+
+int WatchServer::bind(int port) {
+    const bool bound = port == 0 ? (m_impl->port = m_impl->server.bind_to_any_port("127.0.0.1")) > 0
+                                 : m_impl->server.bind_to_port("127.0.0.1", m_impl->port = port);
+    if (!bound) throw std::runtime_error(tr("watch.cannot_listen", {{"address", "127.0.0.1:" + std::to_string(port)}}));
+    return m_impl->port;
+}
+
+void WatchServer::serve() {
+    {
+        const std::lock_guard lock(m_impl->starting);
+        if (m_impl->stopped) return;
+        m_impl->serving = true;
+    }
+    m_impl->server.listen_after_bind();
+    m_impl->finished = true;
+}
+
+void WatchServer::stop() {
+    m_impl->page.stop();
+    bool serving = false;
+    {
+        const std::lock_guard lock(m_impl->starting);
+        m_impl->stopped = true;
+        serving = m_impl->serving;
+    }
+    if (!serving) return;
+    while (!m_impl->finished && !m_impl->server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    m_impl->server.stop();
+}
+
+std::string WatchServer::address() const {
+    return "http://127.0.0.1:" + std::to_string(m_impl->port) + "/" + m_impl->token + "/";
+}
+
+} // namespace raylab::watch

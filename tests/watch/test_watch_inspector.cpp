@@ -1,0 +1,120 @@
+// The pixel inspector against agents of known code (built by tests/grading from solutions/ and the
+// mistakes' patches): the reference's own agent agrees on every value of a pixel of labs 2 to 5; a
+// mirrored lookAt basis (mistake M4.1) differs first at the camera's u; the same sample offset for
+// every sample (lab 5) first at the second sample. Run under each sandbox (ctest's RAYLAB_SANDBOX).
+#include "watch/pixel_inspector.h"
+
+#include "grader/lab_catalog.h"
+#include "src/messages.h"
+#include "support/files.h"
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <cctype>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// The inspector's answer for a pixel, `program` standing as the students' tree's one agent.
+json inspect(const std::string& program, const std::string& figure, int x, int y) {
+    const fs::path bin = raylab::test::freshFolder("watch-inspector-" + program);
+    fs::copy_file(fs::path(RAYLAB_BIN_DIR) / program, bin / "raylab-agent");
+    raylab::watch::WatchSettings settings;
+    settings.binDir = bin;
+    settings.out = bin / "out";
+    settings.scenes = fs::path(RAYLAB_SOURCE_DIR) / "scenes" / "figures";
+    const raylab::grader::LabCatalog labs = raylab::grader::loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", settings.scenes);
+    std::mutex agents;
+    const raylab::watch::PixelInspector inspector(settings, labs, agents);
+    return json::parse(inspector.inspect(figure, x, y));
+}
+
+// The anchor GitHub gives a Markdown heading: lower case, spaces as '-', punctuation dropped (the
+// letters beyond ASCII kept as they are).
+std::string anchorOf(const std::string& heading) {
+    std::string anchor;
+    for (const char c : heading) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (std::isalnum(byte) || c == '-' || c == '_' || byte >= 0x80) anchor += char(std::tolower(byte));
+        else if (c == ' ') anchor += '-';
+    }
+    return anchor;
+}
+
+// Whether "labs/<lab>/README.md#anchor" names a heading of that handout.
+bool handoutSectionExists(const std::string& link) {
+    const std::size_t hash = link.find('#');
+    std::istringstream text(raylab::test::readFile(fs::path(RAYLAB_SOURCE_DIR) / link.substr(0, hash)));
+    for (std::string line; std::getline(text, line);)
+        if (line.starts_with("#") && anchorOf(line.substr(line.find_first_not_of('#') + 1)) == link.substr(hash + 1)) return true;
+    return false;
+}
+
+std::vector<std::string> names(const json& answer) {
+    std::vector<std::string> all;
+    for (const json& row : answer["rows"]) all.push_back(row["name"]);
+    return all;
+}
+
+} // namespace
+
+TEST_SUITE("watch inspector") {
+
+TEST_CASE("the reference's agent agrees with the reference on every value") {
+    for (const auto& [figure, x, y] : {std::tuple{"lab2_directions", 10, 390}, std::tuple{"lab3_cosine", 300, 150},
+                                       std::tuple{"lab3_placeholder_normal", 250, 180}, std::tuple{"lab4_d", 150, 100},
+                                       std::tuple{"lab5_antialiased", 300, 100}}) {
+        const json answer = inspect("raylab-agent-reference", figure, x, y);
+        INFO(answer.dump(1));
+        CHECK(answer["note"] == "");
+        CHECK(answer["first"] == -1);
+        CHECK(answer["rows"].size() >= 3);
+        for (const json& row : answer["rows"]) // but the pictures' pixel: nothing was graded into settings.out here
+            if (row["name"] != "pixel colour") CHECK(!row["student"].is_null());
+    }
+    CHECK(names(inspect("raylab-agent-reference", "lab4_d", 150, 100)) ==
+          std::vector<std::string>{"(sx, sy)", "camera u", "camera v", "camera w", "topLeft", "hit", "t", "hit position",
+                                   "normal", "colour"});
+}
+
+TEST_CASE("a mirrored lookAt basis differs first at u, with its formula") {
+    const json answer = inspect("raylab-mistake-mirrored_basis", "lab4_d", 150, 100);
+    INFO(answer.dump(1));
+    REQUIRE(answer["first"] == 1);
+    CHECK(answer["rows"][1]["name"] == "camera u");
+    CHECK(answer["rows"][1]["formula"] == "u = normalize(cross(up, w))");
+    CHECK(answer["rows"][1]["handout"] == "labs/lab4_lookat_camera/README.md#the-maths");
+}
+
+TEST_CASE("one offset for every sample differs first at the second sample") {
+    const json answer = inspect("raylab-mistake-same_offset_every_sample", "lab5_antialiased", 300, 100);
+    INFO(answer.dump(1));
+    CHECK(answer["rows"][0]["name"] == "samples traced");
+    CHECK(answer["rows"][0]["differs"] == false);
+    REQUIRE(answer["first"] == 2);
+    CHECK(answer["rows"][2]["name"] == "sample 2 (sx, sy)");
+}
+
+TEST_CASE("every row links a section of its handout, in English and in French") {
+    for (const raylab::Language language : {raylab::Language::En, raylab::Language::Fr}) {
+        raylab::setLanguage(language);
+        for (const auto& [figure, x, y] : {std::tuple{"lab3_cosine", 300, 150}, std::tuple{"lab4_d", 150, 100},
+                                           std::tuple{"lab5_antialiased", 300, 100}})
+            for (const json& row : inspect("raylab-agent-reference", figure, x, y)["rows"])
+                CHECK_MESSAGE(handoutSectionExists(row["handout"]), row["handout"]);
+    }
+    CHECK(inspect("raylab-agent-reference", "lab3_cosine", 300, 150)["rows"][6]["name"] == "normale");
+    raylab::setLanguage(raylab::Language::En);
+}
+
+TEST_CASE("a pixel outside the picture, a figure of no lab: said, nothing run") {
+    CHECK(inspect("raylab-agent-reference", "lab3_cosine", 600, 0)["note"] == "pixel (600, 0) is outside the picture (600 x 400)");
+    CHECK(inspect("raylab-agent-reference", "../secret", 1, 1)["note"] == "no figure ../secret in this lab");
+    CHECK(inspect("raylab-agent-reference", "lab1_gradient", 1, 1)["rows"].empty());
+}
+
+} // TEST_SUITE

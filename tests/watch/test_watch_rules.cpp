@@ -1,0 +1,253 @@
+// raylab watch's parts that decide alone: what the server serves (the token, the Host header, the
+// files of its folder), the compiler's errors it shows, the long poll's versions and the file watcher.
+#include "watch/compiler_errors.h"
+#include "watch/file_watcher.h"
+#include "watch/http_rules.h"
+#include "watch/page_state.h"
+#include "watch/watch_server.h"
+
+#include "src/atomic_file.h"
+#include "support/files.h"
+
+#include <doctest/doctest.h>
+#include <httplib.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <thread>
+
+namespace fs = std::filesystem;
+using namespace raylab::watch;
+
+using raylab::test::freshFolder;
+
+TEST_SUITE("watch rules") {
+
+TEST_CASE("a token is 32 hexadecimal digits, new each time") {
+    std::set<std::string> seen;
+    for (int k = 0; k < 100; ++k) {
+        const std::string token = newToken();
+        CHECK(token.size() == 32);
+        CHECK(token.find_first_not_of("0123456789abcdef") == std::string::npos);
+        seen.insert(token);
+    }
+    CHECK(seen.size() == 100);
+}
+
+TEST_CASE("only the loopback address's own Host header is answered") {
+    CHECK(hostAllowed("127.0.0.1:8123", 8123));
+    CHECK(hostAllowed("localhost:8123", 8123));
+    CHECK_FALSE(hostAllowed("127.0.0.1:8124", 8123)); // another port
+    CHECK_FALSE(hostAllowed("127.0.0.1", 8123));
+    CHECK_FALSE(hostAllowed("evil.example:8123", 8123)); // DNS rebinding: the attacker's name
+    CHECK_FALSE(hostAllowed("localhost.evil.example:8123", 8123));
+    CHECK_FALSE(hostAllowed("127.0.0.1.evil.example:8123", 8123));
+    CHECK_FALSE(hostAllowed("", 8123));
+    CHECK_FALSE(hostAllowed("127.0.0.1:8123:8123", 8123));
+}
+
+TEST_CASE("a request is answered under its token only") {
+    const std::string token = "0123456789abcdef0123456789abcdef";
+    CHECK(underToken("/" + token + "/", token) == std::string());
+    CHECK(underToken("/" + token + "/files/report/a.png", token) == std::string("files/report/a.png"));
+    CHECK_FALSE(underToken("/" + token, token).has_value()); // the page's links are relative to the folder
+    CHECK_FALSE(underToken("/", token).has_value());
+    CHECK_FALSE(underToken("/" + token.substr(0, 31) + "0/", token).has_value()); // the last digit wrong
+    CHECK_FALSE(underToken("/x" + token.substr(1) + "/", token).has_value());     // the first digit wrong
+    CHECK_FALSE(underToken("//" + token + "/", token).has_value());
+    CHECK_FALSE(underToken("/anything/", "").has_value());
+}
+
+TEST_CASE("nothing outside the watch's folder is served") {
+    const fs::path root = freshFolder("watch-root");
+    const fs::path outside = freshFolder("watch-outside");
+    raylab::writeFileAtomically(root / "report" / "images" / "a.png", "png");
+    raylab::writeFileAtomically(root / ".hidden", "secret");
+    raylab::writeFileAtomically(outside / "secret.txt", "secret");
+    fs::create_symlink(outside / "secret.txt", root / "link.txt");
+    fs::create_directory_symlink(outside, root / "linked");
+
+    CHECK(servedFile(root, "report/images/a.png") == root / "report" / "images" / "a.png");
+    const std::string besideRoot = "../" + outside.filename().string() + "/secret.txt";
+    CHECK_FALSE(servedFile(root, besideRoot).has_value());
+    CHECK_FALSE(servedFile(root, "report/../" + besideRoot).has_value());
+    CHECK_FALSE(servedFile(root, (outside / "secret.txt").string()).has_value()); // absolute
+    CHECK_FALSE(servedFile(root, "link.txt").has_value());                         // a link to a file outside
+    CHECK_FALSE(servedFile(root, "linked/secret.txt").has_value());                // through a linked folder
+    CHECK_FALSE(servedFile(root, ".hidden").has_value());
+    CHECK_FALSE(servedFile(root, "report").has_value()); // a folder
+    CHECK_FALSE(servedFile(root, "report/images/").has_value());
+    CHECK_FALSE(servedFile(root, "report\\images\\a.png").has_value());
+    CHECK_FALSE(servedFile(root, std::string("report/images/a.png\0.txt", 24)).has_value());
+    CHECK_FALSE(servedFile(root, "missing.png").has_value());
+    CHECK_FALSE(servedFile(root, "").has_value());
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("watch parts") {
+
+TEST_CASE("compiler errors: file, line, column and message, each once, relative to the tree") {
+    const std::string output = "[ 50%] Building CXX object ...\n"
+                               "/src/tree/labs/lab3_sphere/sphere_geometry.cpp:23:12: error: 'nromal' was not declared in this scope\n"
+                               "   23 |     return nromal;\n"
+                               "/src/tree/labs/lab3_sphere/sphere_geometry.cpp:23:12: error: 'nromal' was not declared in this scope\n"
+                               "/src/tree/labs/lab3_sphere/sphere_geometry.cpp:30:1: warning: no return statement\n"
+                               "C:\\\\tp\\\\labs\\\\lab2.cpp(12,5): error C2065: 'x': undeclared identifier\r\n"
+                               "gmake[2]: *** [framework/CMakeFiles/x.dir/build.make:76: x.o] Error 1\n";
+    const std::vector<CompilerError> errors = compilerErrors(output, "/src/tree");
+    REQUIRE(errors.size() == 2);
+    CHECK(errors[0].file == "labs/lab3_sphere/sphere_geometry.cpp");
+    CHECK(errors[0].line == 23);
+    CHECK(errors[0].column == 12);
+    CHECK(errors[0].message == "'nromal' was not declared in this scope");
+    CHECK(errors[1].line == 12);
+    CHECK(errors[1].column == 5);
+    CHECK(errors[1].message == "C2065: 'x': undeclared identifier");
+    CHECK(compilerErrors("[100%] Built target raylab\n", "/src/tree").empty());
+}
+
+TEST_CASE("the long poll: a newer version at once, the same one after the wait, everything when stopping") {
+    PageState page;
+    CHECK(page.after(0, std::chrono::milliseconds(0)) == "{}");
+    page.publish(R"({"phase":"building"})");
+    CHECK(page.version() == 1);
+    CHECK(page.after(0, std::chrono::hours(1)) == R"({"version":1,"phase":"building"})"); // newer: no wait
+    page.publish("{}");
+    CHECK(page.after(1, std::chrono::hours(1)) == R"({"version":2})");
+    // A waiter for a version not there yet is woken by the next publication.
+    std::string seen;
+    std::thread waiter([&] { seen = page.after(2, std::chrono::hours(1)); });
+    page.publish(R"({"phase":"ready"})");
+    waiter.join();
+    CHECK(seen == R"({"version":3,"phase":"ready"})");
+    // Stopping wakes every waiter, however long it meant to wait.
+    std::thread stopped([&] { seen = page.after(3, std::chrono::hours(1)); });
+    page.stop();
+    stopped.join();
+    CHECK(seen == R"({"version":3,"phase":"ready"})");
+}
+
+TEST_CASE("the files that count as code") {
+    CHECK(isWatchedFile("labs/lab3_sphere/sphere_geometry.cpp"));
+    CHECK(isWatchedFile("labs/lab3_sphere/lab.toml"));
+    CHECK_FALSE(isWatchedFile("labs/lab3_sphere/README.md"));
+    CHECK_FALSE(isWatchedFile("labs/lab3_sphere/figure.png"));
+    CHECK_FALSE(isWatchedFile("labs/lab3_sphere/.sphere_geometry.cpp.swp"));
+    CHECK_FALSE(isWatchedFile("labs/lab3_sphere/sphere_geometry.cpp~"));
+}
+
+// Both watchers: inotify (Linux) and the portable polling one (RAYLAB_WATCH_POLL, as elsewhere).
+void seesSaves(bool polling) {
+    if (polling) setenv("RAYLAB_WATCH_POLL", "1", 1);
+    else unsetenv("RAYLAB_WATCH_POLL");
+    const fs::path folder = freshFolder(polling ? "watch-polled" : "watch-notified");
+    raylab::writeFileAtomically(folder / "lab3" / "sphere.cpp", "int a;");
+    FileWatcher watcher({folder});
+    unsetenv("RAYLAB_WATCH_POLL");
+    CHECK(std::string(watcher.how()) == (polling ? "polling" : "inotify"));
+    CHECK(watcher.changes(std::chrono::milliseconds(0)).empty());
+    // Polling sees a change of time: a save in the same clock tick as the snapshot would not be one.
+    std::this_thread::sleep_for(std::chrono::milliseconds(polling ? 20 : 0));
+    raylab::writeFileAtomically(folder / "lab3" / "sphere.cpp", "int b;");
+    raylab::writeFileAtomically(folder / "lab3" / "README.md", "a handout");
+    std::vector<fs::path> changed;
+    for (int k = 0; k < 50 && changed.empty(); ++k) changed = watcher.changes(std::chrono::milliseconds(200));
+    REQUIRE(changed.size() == 1);
+    CHECK(changed.front() == folder / "lab3" / "sphere.cpp");
+    // A folder made after the watcher started is watched too.
+    raylab::writeFileAtomically(folder / "lab3" / "new" / "more.cpp", "int c;");
+    changed.clear();
+    for (int k = 0; k < 50 && changed.empty(); ++k) changed = watcher.changes(std::chrono::milliseconds(200));
+    CHECK(std::find(changed.begin(), changed.end(), folder / "lab3" / "new" / "more.cpp") != changed.end());
+}
+
+#ifdef __linux__
+TEST_CASE("inotify sees a save, not a handout's") { seesSaves(false); }
+#endif
+TEST_CASE("polling sees a save, not a handout's") { seesSaves(true); }
+
+} // TEST_SUITE
+
+TEST_SUITE("watch server") {
+
+// The server on a free port of 127.0.0.1, serving `root`, asked over HTTP as a browser asks it.
+struct Served {
+    raylab::watch::PageState page;
+    raylab::watch::WatchServer server;
+    int port;
+    std::thread serving;
+    explicit Served(const fs::path& root)
+        : server(page, root, "0123456789abcdef0123456789abcdef",
+                 [](const std::string& figure, int x, int y) { return figure + " " + std::to_string(x) + " " + std::to_string(y); }),
+          port(server.bind(0)), serving([this] { server.serve(); }) {}
+    ~Served() {
+        server.stop();
+        serving.join();
+    }
+    // GET `path` with the Host header `host` (this server's own when empty): the status and the body.
+    std::pair<int, std::string> get(const std::string& path, std::string host = "") {
+        httplib::Client client("127.0.0.1", port);
+        if (host.empty()) host = "127.0.0.1:" + std::to_string(port);
+        const auto answer = client.Get(path.c_str(), httplib::Headers{{"Host", host}});
+        return answer ? std::pair{answer->status, answer->body} : std::pair{-1, std::string()};
+    }
+};
+
+TEST_CASE("the page, its files and the inspector under the token, with the right Host header only") {
+    const fs::path root = freshFolder("watch-served");
+    raylab::writeFileAtomically(root / "report" / "images" / "a.png", "not really a png");
+    raylab::writeFileAtomically(fs::path(root).concat("-secret.txt"), "secret");
+    Served served(root);
+    const std::string at = "/0123456789abcdef0123456789abcdef/";
+    CHECK(served.server.address() == "http://127.0.0.1:" + std::to_string(served.port) + at);
+    const auto page = served.get(at);
+    CHECK(page.first == 200);
+    CHECK(page.second.find("<script src=\"watch.js\"") != std::string::npos);
+    CHECK(served.get(at + "watch.js").first == 200);
+    CHECK(served.get(at + "files/report/images/a.png") == std::pair{200, std::string("not really a png")});
+    CHECK(served.get(at + "inspect?figure=lab3_cosine&x=3&y=4") == std::pair{200, std::string("lab3_cosine 3 4")});
+    CHECK(served.get(at, "localhost:" + std::to_string(served.port)).first == 200);
+    // Another name in Host (DNS rebinding), another port, no token, another token, outside the folder.
+    CHECK(served.get(at, "evil.example:" + std::to_string(served.port)).first == 403);
+    CHECK(served.get(at + "files/report/images/a.png", "evil.example").first == 403);
+    CHECK(served.get("/").first == 404);
+    CHECK(served.get("/0123456789abcdef0123456789abcdee/").first == 404);
+    CHECK(served.get(at + "files/../" + root.filename().string() + "-secret.txt").first == 404);
+    CHECK(served.get(at + "files/%2e%2e/" + root.filename().string() + "-secret.txt").first == 404);
+    CHECK(served.get(at + "nothing").first == 404);
+    httplib::Client client("127.0.0.1", served.port);
+    const auto posted = client.Post(at.c_str(), "x", "text/plain");
+    REQUIRE(posted);
+    CHECK(posted->status == 405);
+}
+
+TEST_CASE("the state: at once without a version, when a newer one is published with one") {
+    Served served(freshFolder("watch-state"));
+    const std::string at = "/0123456789abcdef0123456789abcdef/";
+    CHECK(served.get(at + "state") == std::pair{200, std::string("{}")});
+    served.page.publish(R"({"phase":"ready"})");
+    CHECK(served.get(at + "state?since=0") == std::pair{200, std::string(R"({"version":1,"phase":"ready"})")});
+    std::pair<int, std::string> waited;
+    std::thread poll([&] { waited = served.get(at + "state?since=1"); });
+    served.page.publish(R"({"phase":"building"})");
+    poll.join();
+    CHECK(waited == std::pair{200, std::string(R"({"version":2,"phase":"building"})")});
+}
+
+TEST_CASE("a port already taken is said, naming it") {
+    Served first(freshFolder("watch-port"));
+    raylab::watch::PageState page;
+    raylab::watch::WatchServer second(page, freshFolder("watch-port2"), "t", nullptr);
+    std::string said;
+    try {
+        second.bind(first.port);
+    } catch (const std::runtime_error& e) {
+        said = e.what();
+    }
+    CHECK(said.find("cannot listen on 127.0.0.1:" + std::to_string(first.port)) != std::string::npos);
+}
+
+} // TEST_SUITE
