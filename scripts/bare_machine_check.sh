@@ -4,24 +4,28 @@
 # a clean clone of the committed HEAD goes in, and there, in a chroot (/proc, /sys, /dev mounted;
 # bubblewrap cannot start in a chroot, so the grader's fallback sandbox runs, as in Docker):
 #   root-figures   as root, no sudo: README.md's figures command, in /root/raylab
+#   root-tests     then README.md's test command there (the whole suite: each test passed or skipped)
 #   root-students  as root: `raylab distribute /root/tp1`, then the command tp1/README.md writes
 #   user-figures   in a fresh root, as a user with sudo (NOPASSWD): README.md's figures command
 # Each must pass on its first run. The commands are read from the READMEs, so the check follows them.
 #
 #   scripts/bare_machine_check.sh [RELEASE...]    (as root; default: bookworm trixie)
-#   RAYLAB_BARE_USER_RELEASES="bookworm"           the releases of user-figures (default: the first)
+#   RAYLAB_BARE_USER_RELEASES="bookworm"           the releases of user-figures (default: all)
+#   RAYLAB_BARE_TESTS=0                            leaves root-tests out (a quicker look at the rest)
 #   RAYLAB_BARE_DIR=/var/tmp/raylab-bare           where the bare tarballs, compiler caches and roots go
 #   RAYLAB_DEBIAN_MIRROR=http://deb.debian.org/debian   else the first of this machine's apt sources
 #
 # Only the bare tarballs are cached (<release>-minbase.tar, remade when a week old), never an
 # installed package: each run installs everything as a newcomer would. What each release compiles is
 # cached (ccache-<release>/, bind-mounted into the root, shared by root's and the user's runs), so that
-# a re-run of an unchanged tree compiles little. Needs: mmdebstrap, git, mount, chroot (setup.sh --tests).
+# a re-run of an unchanged tree compiles little. The suite's own bare Debian 12 (the Gradescope zip's
+# test, tests/autograder) is a fixture, not what a newcomer installs: when this machine has made it,
+# the root uses it rather than making it again. Needs: mmdebstrap, git, mount, chroot (setup.sh --tests).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 if [ "$#" -eq 0 ]; then set -- bookworm trixie; fi
 releases=("$@")
-read -r -a user_releases <<<"${RAYLAB_BARE_USER_RELEASES:-$1}"
+read -r -a user_releases <<<"${RAYLAB_BARE_USER_RELEASES:-$*}"
 dir=${RAYLAB_BARE_DIR:-/var/tmp/raylab-bare}
 say() { printf '\n== bare_machine_check: %s\n' "$*"; }
 die() { echo "bare_machine_check: $*" >&2; exit 1; }
@@ -46,6 +50,8 @@ readme_command() { # FILE PRESET
 }
 figures_command=$(readme_command "$top/README.md" figures)
 [ -n "$figures_command" ] || die "README.md has no \`--preset figures\` command in a sh block"
+tests_command=$(readme_command "$top/README.md" test)
+[ -n "$tests_command" ] || die "README.md has no \`--preset test\` command in a sh block"
 
 mkdir -p "$dir"
 root=""                 # the root in use, for the trap
@@ -86,6 +92,10 @@ fresh_root() { # RELEASE NAME CLONE
   mount --rbind /dev "$root/dev" && mount --make-rslave "$root/dev"
   mkdir -p "$dir/ccache-$1" "$root/var/cache/raylab-ccache"
   mount --bind "$dir/ccache-$1" "$root/var/cache/raylab-ccache"
+  local fixture=/var/tmp/raylab-debian12-minimal
+  if [ -e "$fixture/.raylab-made" ]; then
+    mkdir -p "$root$fixture" && mount --bind "$fixture" "$root$fixture"
+  fi
   git clone -q --no-hardlinks "$top" "$root$3"
 }
 
@@ -116,6 +126,9 @@ failed=0
 for release in "${releases[@]}"; do
   fresh_root "$release" "$release-root" /root/raylab
   in_root "$release-root-figures" root "cd raylab && $figures_command" || { failed=1; continue; }
+  if [ "${RAYLAB_BARE_TESTS:-1}" != 0 ]; then
+    in_root "$release-root-tests" root "cd raylab && $tests_command" || failed=1
+  fi
   # The students' tree compiles through ccache too: what its README's command configures finds the
   # launcher in the environment (setup.sh has installed ccache by then).
   in_root "$release-root-distribute" root "raylab/build/bin/raylab distribute /root/tp1" || { failed=1; continue; }

@@ -50,8 +50,9 @@ int count(const std::string& text, const std::string& part) {
 
 using raylab::test::readFile;
 
-ProgramProcess startRaylab(const std::vector<std::string>& args, const fs::path& output) {
-    return startProgram(binDir() / "raylab", args, output);
+ProgramProcess startRaylab(const std::vector<std::string>& args, const fs::path& output,
+                           const std::vector<std::string>& environment = {}) {
+    return startProgram(binDir() / "raylab", args, output, 0, environment);
 }
 
 // grade-class of `classDir` into `out`, every student graded by the reference agent on lab 1 (fast);
@@ -367,64 +368,96 @@ TEST_CASE("raylab grade killed with SIGKILL leaves its scratch folder, which the
     CHECK(scratchFolders(temporary, "raylab-images-").empty());
 }
 
+// The first control character of `text` (C0 but for the line breaks `allowed`, DEL, C1 in UTF-8), shown
+// with what precedes it; empty when there is none.
+std::string controlCharacter(const std::string& text, const std::string& allowed = "\n") {
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        const auto byte = static_cast<unsigned char>(text[k]);
+        const bool c1 = byte == 0xC2 && k + 1 < text.size() && static_cast<unsigned char>(text[k + 1]) <= 0x9F;
+        if (((byte < 0x20 || byte == 0x7F) && allowed.find(text[k]) == std::string::npos) || c1)
+            return raylab::printableName(text.substr(k < 40 ? 0 : k - 40, 44));
+    }
+    return "";
+}
+
 TEST_CASE("hostile folder names each get their own row with their printable name and full points; formulas are "
-          "defused; odd entries are skipped") {
-    const fs::path root = freshFolder("raylab-ledger-names");
+          "defused; odd entries are skipped; no control character of a name reaches the console, the CSV or the "
+          "reports; under each sandbox") {
     const std::vector<std::string> names{"x$(touch PWNED)", "back`touch PWNED`tick", "double\"quote", "it's", "with space",
                                          "-leading-dash", "ünïcödé 名前", "a,b", "new\nline", "grades.csv", "build",
                                          "students", "%41", "A", "=1+2*3", "=HYPERLINK(\"evil\",\"click\")", "bad\xFEname",
-                                         "bad\xFFname", "esc\x1B[2J"};
-    const fs::path classDir = makeClass(root, names);
-    std::ofstream(classDir / "notes.txt") << "not a submission";
-    fs::create_directories(classDir / "empty");
-    fs::create_directory_symlink(classDir / "A", classDir / "link");
-    fs::create_directory_symlink("loop", classDir / "loop"); // a link to itself
+                                         "bad\xFFname", "esc\x1B[2J", "bell\a", "carriage\rreturn", "tab\there",
+                                         "del\x7F", "c1 csi\xC2\x9B" "2J", "nul-free\x01\x02\x1F"};
+    std::vector<std::string> sandboxes{""}; // the best this machine has (or none, where it has nothing)
+    if (geteuid() == 0) sandboxes.push_back("fallback");
+    for (const std::string& sandbox : sandboxes) {
+        CAPTURE(sandbox);
+        const fs::path root = freshFolder("raylab-ledger-names");
+        const fs::path classDir = makeClass(root, names);
+        std::ofstream(classDir / "notes.txt") << "not a submission";
+        fs::create_directories(classDir / "empty");
+        fs::create_directory_symlink(classDir / "A", classDir / "link");
+        fs::create_directory_symlink("loop", classDir / "loop"); // a link to itself
 
-    ProgramProcess run = startRaylab(classArgs(classDir, root / "out"), root / "output.txt");
-    const int status = run.finish();
-    const std::string output = run.text();
-    REQUIRE_MESSAGE(status == 0, output);
-    const std::string lines = "\n" + output;
-    CHECK_MESSAGE(lines.find("\nskipped 'notes.txt': not a folder\n") != std::string::npos, output);
-    CHECK_MESSAGE(lines.find("\nskipped 'empty': an empty folder\n") != std::string::npos, output);
-    CHECK_MESSAGE(lines.find("\nskipped 'link': a symbolic link") != std::string::npos, output);
-    CHECK_MESSAGE(lines.find("\nskipped 'loop': a symbolic link") != std::string::npos, output);
-    CHECK_MESSAGE(output.find("new\\nline") != std::string::npos, output); // one line in the terminal
-    CHECK_MESSAGE(output.find("bad\\xFEname") != std::string::npos, output);
-    CHECK_MESSAGE(output.find("esc\\x1B[2J") != std::string::npos, output);
-    CHECK_MESSAGE(output.find('\x1B') == std::string::npos, output);
+        std::vector<std::string> args = classArgs(classDir, root / "out");
+        if (!sandbox.empty()) std::erase(args, std::string("--no-sandbox"));
+        std::vector<std::string> environment;
+        if (!sandbox.empty()) environment.push_back("RAYLAB_SANDBOX=" + sandbox);
+        ProgramProcess run = startRaylab(args, root / "output.txt", environment);
+        const int status = run.finish();
+        const std::string output = run.text();
+        REQUIRE_MESSAGE(status == 0, output);
+        CHECK_MESSAGE(controlCharacter(output).empty(), controlCharacter(output));
+        const std::string csv = readFile(root / "out" / "grades.csv");
+        CHECK_MESSAGE(controlCharacter(csv).empty(), controlCharacter(csv));
+        for (const auto& entry : fs::recursive_directory_iterator(root / "out" / "students")) {
+            if (entry.path().extension() != ".html" && entry.path().extension() != ".json") continue;
+            CAPTURE(entry.path());
+            const std::string text = readFile(entry.path());
+            CHECK_MESSAGE(controlCharacter(text, "\n\t").empty(), controlCharacter(text, "\n\t"));
+        }
+        const std::string lines = "\n" + output;
+        CHECK_MESSAGE(lines.find("\nskipped 'notes.txt': not a folder\n") != std::string::npos, output);
+        CHECK_MESSAGE(lines.find("\nskipped 'empty': an empty folder\n") != std::string::npos, output);
+        CHECK_MESSAGE(lines.find("\nskipped 'link': a symbolic link") != std::string::npos, output);
+        CHECK_MESSAGE(lines.find("\nskipped 'loop': a symbolic link") != std::string::npos, output);
+        CHECK_MESSAGE(output.find("new\\nline") != std::string::npos, output); // one line in the terminal
+        CHECK_MESSAGE(output.find("bad\\xFEname") != std::string::npos, output);
+        CHECK_MESSAGE(output.find("esc\\x1B[2J") != std::string::npos, output);
+        CHECK_MESSAGE(output.find('\x1B') == std::string::npos, output);
 
-    const auto rows = readCsv(readFile(root / "out" / "grades.csv"));
-    REQUIRE(!rows.empty());
-    const std::vector<std::string>& header = rows[0];
-    REQUIRE(header.size() >= 4);
-    CHECK(header[0] == "student");
-    const std::size_t total = std::size_t(std::find(header.begin(), header.end(), "total") - header.begin());
-    REQUIRE(total + 1 < header.size());
-    CHECK(rows.size() == names.size() + 1);
-    // A spreadsheet reads a formula as text; two names that differ in bytes that are not UTF-8 differ.
-    const auto shownInCsv = [](const std::string& name) {
-        const std::string shown = raylab::printableName(name);
-        return std::string("=+-@").find(shown[0]) != std::string::npos ? "'" + shown : shown;
-    };
-    CHECK(shownInCsv("=1+2*3") == "'=1+2*3");
-    CHECK(shownInCsv("-leading-dash") == "'-leading-dash");
-    CHECK(shownInCsv("bad\xFEname") == "bad\\xFEname");
-    CHECK(shownInCsv("new\nline") == "new\\nline");
-    for (const std::string& name : names) {
-        CAPTURE(raylab::printableName(name));
-        int found = 0;
-        for (const auto& row : rows)
-            if (row[0] == shownInCsv(name)) {
-                ++found;
-                REQUIRE(row.size() == header.size());
-                CHECK(row[total] == row[total + 1]); // total == max
-                CHECK(std::stod(row[total]) > 0.);
-            }
-        CHECK(found == 1);
+        const auto rows = readCsv(csv);
+        REQUIRE(!rows.empty());
+        const std::vector<std::string>& header = rows[0];
+        REQUIRE(header.size() >= 4);
+        CHECK(header[0] == "student");
+        const std::size_t total = std::size_t(std::find(header.begin(), header.end(), "total") - header.begin());
+        REQUIRE(total + 1 < header.size());
+        CHECK(rows.size() == names.size() + 1);
+        // A spreadsheet reads a formula as text; two names that differ in bytes that are not UTF-8 differ.
+        const auto shownInCsv = [](const std::string& name) {
+            const std::string shown = raylab::printableName(name);
+            return std::string("=+-@").find(shown[0]) != std::string::npos ? "'" + shown : shown;
+        };
+        CHECK(shownInCsv("=1+2*3") == "'=1+2*3");
+        CHECK(shownInCsv("-leading-dash") == "'-leading-dash");
+        CHECK(shownInCsv("bad\xFEname") == "bad\\xFEname");
+        CHECK(shownInCsv("new\nline") == "new\\nline");
+        for (const std::string& name : names) {
+            CAPTURE(raylab::printableName(name));
+            int found = 0;
+            for (const auto& row : rows)
+                if (row[0] == shownInCsv(name)) {
+                    ++found;
+                    REQUIRE(row.size() == header.size());
+                    CHECK(row[total] == row[total + 1]); // total == max
+                    CHECK(std::stod(row[total]) > 0.);
+                }
+            CHECK(found == 1);
+        }
+        CHECK(results(root / "out").size() == names.size()); // a folder each
+        for (const fs::path& folder : {root, classDir, root / "out", fs::current_path()}) CHECK_FALSE(fs::exists(folder / "PWNED"));
     }
-    CHECK(results(root / "out").size() == names.size()); // a folder each
-    for (const fs::path& folder : {root, classDir, root / "out", fs::current_path()}) CHECK_FALSE(fs::exists(folder / "PWNED"));
 }
 
 #ifdef __linux__

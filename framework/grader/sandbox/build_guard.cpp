@@ -6,8 +6,9 @@
 //    student's work, or throw its bytes into the report: on Linux with bubblewrap the compiler runs
 //    confined (confined_compile.h), seeing only the allowed folders (the submission, the stubs, the
 //    include folders of the command line) and the system; where bubblewrap cannot start and we are
-//    root, it runs as an unprivileged user (unprivileged.h: it writes only its private folder and,
-//    where the kernel has Landlock, opens only the system, the allowed folders and that folder; without
+//    root, it runs as an unprivileged user on copies of the allowed folders (compile_stage.h: so
+//    wherever the tree is; its words and dependency file get the original paths back), writes only its
+//    private folder and, where the kernel has Landlock, opens only the system, those copies and that folder; without
 //    Landlock it reads every world-readable file); RAYLAB_SANDBOX=none|fallback in the environment chooses (see
 //    sandboxMode). Then, a second wall, every file the compiler read must lie in an allowed folder
 //    or the compiler's own, checked on the dependency file it writes, after symlinks (`.incbin` is
@@ -43,6 +44,8 @@
 #include <string>
 #include <vector>
 
+#include <fcntl.h>
+#include <string_view>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -161,20 +164,45 @@ fs::path resolved(const fs::path& path) {
 // What stopped a compiler that did not end by itself.
 constexpr int kPastTimeLimit = -1, kKilled = -2;
 
+// The compiler's error output passed on with the copies' paths put back (the fallback's stage), as
+// it comes: it may be a gigabyte.
+void passOnErrors(int from, raylab::grader::detail::CompileStage& stage) {
+    std::vector<char> buffer(std::size_t(64) << 10);
+    const auto write = [](const std::string& text) {
+        for (std::size_t done = 0; done < text.size();) {
+            const ssize_t n = ::write(STDERR_FILENO, text.data() + done, text.size() - done);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) return;
+            done += std::size_t(n);
+        }
+    };
+    for (;;) {
+        const ssize_t n = read(from, buffer.data(), buffer.size());
+        if (n < 0 && errno == EINTR) continue; // the wall-clock alarm: the compiler is being killed
+        if (n <= 0) break;
+        write(stage.originalPart(std::string_view(buffer.data(), std::size_t(n))));
+    }
+    write(stage.originalPart({}, true));
+}
+
 // Runs the compiler under the limits (as `user`, under the seccomp filter, when given); its exit
-// status, or kPastTimeLimit, or kKilled.
+// status, or kPastTimeLimit, or kKilled. With `stage`, its error output goes through passOnErrors.
 int compile(const std::vector<std::string>& argv, unsigned wallSeconds,
-            const raylab::grader::detail::UnprivilegedUser* user, int landlock) {
+            const raylab::grader::detail::UnprivilegedUser* user, int landlock,
+            raylab::grader::detail::CompileStage* stage) {
     const std::vector<sock_filter>* filter = user ? &raylab::grader::detail::seccompProgram() : nullptr;
     // Made before fork: the child allocates nothing under its address-space limit (an ASan build's
     // allocator would fail there).
     std::vector<char*> args;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
+    int errors[2] = {-1, -1};
+    if (stage && pipe2(errors, O_CLOEXEC) != 0) return 127;
     const pid_t pid = fork();
     if (pid < 0) return 127;
     if (pid == 0) {
         setpgid(0, 0);
+        if (stage && dup2(errors[1], STDERR_FILENO) < 0) _exit(127);
         if (user && !raylab::grader::detail::dropPrivileges(*user)) {
             std::fprintf(stderr, "error: raylab-build-guard cannot become the user %s\n", user->name.c_str());
             _exit(126);
@@ -196,6 +224,11 @@ int compile(const std::vector<std::string>& argv, unsigned wallSeconds,
     setpgid(pid, pid);
     g_compiler = pid;
     alarm(wallSeconds);
+    if (stage) {
+        close(errors[1]);
+        passOnErrors(errors[0], *stage);
+        close(errors[0]);
+    }
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
@@ -273,23 +306,24 @@ int main(int argc, char** argv) {
     const raylab::grader::detail::UnprivilegedUser* user =
         mode == SandboxMode::unprivileged ? &*raylab::grader::detail::unprivilegedUser() : nullptr;
     std::optional<raylab::grader::ConfinedCompile> confined;
-    if (!bwrap.empty() || user) confined.emplace(bwrap, command->compiler, command->allowed, user);
-    // The fallback's Landlock: the compiler opens the system, the allowed folders and its own, nothing else.
+    // The fallback's Landlock: the compiler opens the system, the allowed folders' copies and its own, nothing else.
     std::optional<raylab::grader::detail::LandlockRuleset> landlock;
+    try {
+        if (!bwrap.empty() || user) confined.emplace(bwrap, command->compiler, command->allowed, user);
+        if (user) landlock.emplace(confined->landlockRules());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: raylab-build-guard: %s\n", e.what());
+        return 1;
+    }
     if (user) { // ccache, when it is the launcher, without its cache (root's, other builds' objects)
         setenv("CCACHE_DISABLE", "1", 1);
         setenv("CCACHE_DIR", "/nonexistent", 1); // its configuration is root's too
         setenv("TMPDIR", confined->privateFolder().c_str(), 1); // the compiler's temporary files, not the shared /tmp
-        try {
-            landlock.emplace(confined->landlockRules());
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "error: raylab-build-guard: %s\n", e.what());
-            return 1;
-        }
     }
     const std::optional<WallLimit> limit = wallLimit(command->wallSeconds);
     if (!limit) return refuse("build-time", source, command->object);
-    int status = compile(confined ? confined->command() : command->compiler, limit->seconds, user, landlock ? landlock->fd() : -1);
+    int status = compile(confined ? confined->command() : command->compiler, limit->seconds, user,
+                         landlock ? landlock->fd() : -1, confined ? confined->stage() : nullptr);
     // bwrap passes a signal on as 128 + its number
     if (!bwrap.empty() && status == 128 + SIGXCPU) status = kPastTimeLimit;
     if (!bwrap.empty() && status == 128 + SIGKILL) status = g_timedOut ? kPastTimeLimit : kKilled;

@@ -6,11 +6,12 @@
 // for it, so `#include`, `#embed` and the assembler's `.incbin` of any other file fail, whatever the
 // path; and the other objects of the build folder (a classmate's, in a class run) are not there.
 
+#include "grader/sandbox/compile_stage.h"
 #include "grader/sandbox/landlock.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace raylab::grader {
@@ -20,10 +21,11 @@ struct UnprivilegedUser;
 }
 
 // Without bubblewrap, as root (the fallback, unprivileged.h), the compiler runs as an unprivileged
-// user instead, and writes only its private folder (handed to that user, its temporary folder too),
-// from where the guard moves the outputs, back in root's hands; where the kernel has Landlock
-// (landlock.h) it may open only the system, the folders it was allowed and its private folder, so
-// that `.incbin` of another file fails there too. Without Landlock it reads every world-readable file.
+// user instead, on copies of the folders it was allowed (compile_stage.h: wherever the tree is, that
+// user reaches them), and writes only its private folder there (handed to that user, its temporary
+// folder too), from where the guard moves the outputs, back in root's hands; where the kernel has
+// Landlock (landlock.h) it may open only the system, those copies and its private folder, so that
+// `.incbin` of another file fails there too. Without Landlock it reads every world-readable file.
 class ConfinedCompile {
 public:
     // `compiler`: the command (a launcher, the compiler and its arguments); `readable`: the folders it
@@ -35,10 +37,15 @@ public:
     ConfinedCompile(const ConfinedCompile&) = delete;
     ConfinedCompile& operator=(const ConfinedCompile&) = delete;
 
-    // [bwrap ... --] the command, its -o and -MF pointing into the private folder.
+    // [bwrap ... --] the command, its -o and -MF pointing into the private folder (the fallback: its
+    // paths of allowed files pointing to their copies).
     const std::vector<std::string>& command() const { return m_command; }
 
-    // After a compile that succeeded: each output moved to its place. False when one is missing.
+    // The fallback's copies, whose paths the compiler's words must be given back; null otherwise.
+    detail::CompileStage* stage() { return m_stage ? &*m_stage : nullptr; }
+
+    // After a compile that succeeded: each output moved to its place (the fallback: read as a file the
+    // user wrote, the dependency file with the original paths). False when one is missing or refused.
     bool deliver() const;
 
     // What the compiler may open under the fallback's Landlock: the system, the folders it may read,
@@ -47,10 +54,15 @@ public:
     const std::filesystem::path& privateFolder() const { return m_private; }
 
 private:
+    struct Output {
+        std::filesystem::path file, place; // in the private folder, where the build expects it
+        bool dependencies = false;         // the dependency file (-MF)
+    };
+    std::optional<detail::CompileStage> m_stage; // the fallback's
     std::vector<std::string> m_command;
     std::filesystem::path m_private; // empty when the command names no output
     bool m_handedOver = false;       // the private folder belongs to the fallback's user
-    std::vector<std::pair<std::filesystem::path, std::filesystem::path>> m_outputs; // private file, its place
+    std::vector<Output> m_outputs;
     detail::LandlockRules m_rules;
 };
 

@@ -17,31 +17,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A folder of root's that others may enter but not list: mkdtemp's 0700, then 0711.
-fs::path makeEnterableFolder(const fs::path& pattern) {
-    std::string name = pattern.string();
-    if (mkdtemp(name.data()) == nullptr || chmod(name.c_str(), 0711) != 0)
-        throw std::runtime_error("grader: cannot make the agents' folder " + name);
-    return name;
-}
-
-// Where every agent's copies go, made once: /tmp, which every user may enter, whatever the tree's folders.
-const fs::path& stageRoot() {
-    static const struct Root {
-        fs::path path = makeEnterableFolder("/tmp/raylab-agents-XXXXXX");
-        ~Root() {
-            std::error_code ignored;
-            fs::remove_all(path, ignored);
-        }
-    } root;
-    return root.path;
-}
-
 // Readable and, for a program, runnable by anyone; never writable (root keeps them).
 void makeReadOnly(const fs::path& path, bool program) {
     const mode_t mode = fs::is_directory(path) || program ? 0555 : 0444;
     if (chown(path.c_str(), 0, 0) != 0 || chmod(path.c_str(), mode) != 0)
-        throw std::runtime_error("grader: cannot hand the agent its copy " + path.string());
+        throw std::runtime_error("grader: cannot hand the unprivileged user its copy " + path.string());
 }
 
 // A path as a JSON string writes it (quotes and backslashes escaped).
@@ -56,8 +36,39 @@ std::string jsonText(const fs::path& path) {
 
 } // namespace
 
+fs::path makeEnterableFolder(const fs::path& pattern) {
+    std::string name = pattern.string();
+    if (mkdtemp(name.data()) == nullptr || chmod(name.c_str(), 0711) != 0)
+        throw std::runtime_error("grader: cannot make the folder " + name);
+    return name;
+}
+
+void copyReadOnly(const fs::path& from, const fs::path& to) {
+    const fs::file_status status = fs::symlink_status(from);
+    if (fs::is_regular_file(status)) {
+        fs::copy_file(from, to);
+        makeReadOnly(to, false);
+        return;
+    }
+    if (!fs::is_directory(status)) return;
+    fs::create_directory(to);
+    makeReadOnly(to, false); // root still writes into it
+    // The iterator follows no link to a folder; a link to a file is seen as a link and left out.
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(from)) {
+        const fs::path copy = to / entry.path().lexically_relative(from);
+        if (entry.is_symlink()) continue;
+        if (entry.is_directory()) fs::create_directory(copy);
+        else if (entry.is_regular_file()) fs::copy_file(entry.path(), copy);
+        else continue;
+        makeReadOnly(copy, false);
+    }
+}
+
 AgentStage::AgentStage(const fs::path& program, const std::vector<fs::path>& readable) : m_given(readable) {
-    m_folder = makeEnterableFolder(stageRoot() / "run-XXXXXX");
+    // /tmp, which every user may enter, whatever the tree's folders; a folder of each run's own, removed
+    // with it (a folder shared by a process's runs would stay behind one that ends with _exit, as each
+    // student of a class run does).
+    m_folder = makeEnterableFolder("/tmp/raylab-agent-XXXXXX");
     m_program = m_folder / program.filename();
     fs::copy_file(program, m_program);
     makeReadOnly(m_program, true);
@@ -67,12 +78,7 @@ AgentStage::AgentStage(const fs::path& program, const std::vector<fs::path>& rea
         makeReadOnly(place, false);
         const fs::path copy = place / readable[k].filename();
         std::error_code missing;
-        if (fs::exists(readable[k], missing)) {
-            fs::copy(readable[k], copy, fs::copy_options::recursive | fs::copy_options::skip_symlinks);
-            makeReadOnly(copy, false);
-            if (fs::is_directory(copy))
-                for (const fs::directory_entry& entry : fs::recursive_directory_iterator(copy)) makeReadOnly(entry.path(), false);
-        }
+        if (fs::exists(readable[k], missing)) copyReadOnly(readable[k], copy);
         m_readable.push_back(copy);
     }
 }

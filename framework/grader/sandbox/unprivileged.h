@@ -41,10 +41,18 @@ const std::optional<UnprivilegedUser>& unprivilegedUser();
 // reads it. False when it cannot be done.
 bool handOver(const std::filesystem::path& folder, const UnprivilegedUser& user);
 
+// A folder of root's made by mkdtemp from `pattern` (its name ends in XXXXXX), then mode 0711: others
+// may enter it, not list it. Throws when it cannot be made.
+std::filesystem::path makeEnterableFolder(const std::filesystem::path& pattern);
+
+// `from`, a file or a folder with its files and folders, copied to `to`, root's, readable by anyone and
+// writable by no one (folders 0555, files 0444); links and special files are left out, never followed.
+// Throws when a copy fails.
+void copyReadOnly(const std::filesystem::path& from, const std::filesystem::path& to);
+
 // An agent's program and inputs copied where the fallback's user can read them and nothing beside:
-// <root>/run-XXXXXX/, root's, mode 0711 (entered, never listed), in a root made once a run in /tmp
-// (root's, 0711); the program 0555, the inputs 0444 (their folders 0555), links left out. Removed
-// when it goes.
+// /tmp/raylab-agent-XXXXXX/, root's, mode 0711 (entered, never listed); the program 0555, the inputs
+// 0444 (their folders 0555), links left out. Removed when it goes.
 class AgentStage {
 public:
     AgentStage(const std::filesystem::path& program, const std::vector<std::filesystem::path>& readable);

@@ -1,0 +1,104 @@
+// The grader works wherever the tree is (issue 32): a copy of the students' tree in a folder of mode
+// 0700 (as /root, or a home folder of 0700, is), mounted read-only where the test can make a mount
+// namespace of its own (root), its build folder beside it in that folder. A submission is built and
+// graded there under bubblewrap and under the fallback, whose unprivileged user cannot enter that
+// folder: its compiler works on copies of what it may read (compile_stage.h), its agents run from
+// copies (unprivileged.h). Both earn the same points, and a compile error names the student's file
+// where it is, not a copy.
+#include "grading_support.h"
+#include "grader/course/submission.h"
+#include "grader/sandbox/process.h"
+#include "grader/sandbox/sandbox.h"
+#include "support/files.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <unistd.h>
+#ifdef __linux__
+#include <sched.h>
+#include <sys/mount.h>
+#endif
+
+using namespace raylab::test;
+
+namespace {
+
+// `tree` read-only for this process and what it starts, in a mount namespace of its own. False where
+// that cannot be done (not root, or a container without the right).
+bool mountReadOnly(const fs::path& tree) {
+#ifdef __linux__
+    if (geteuid() != 0 || unshare(CLONE_NEWNS) != 0) return false;
+    return mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) == 0 &&
+           mount(tree.c_str(), tree.c_str(), nullptr, MS_BIND | MS_REC, nullptr) == 0 &&
+           mount(nullptr, tree.c_str(), nullptr, MS_BIND | MS_REMOUNT | MS_RDONLY, nullptr) == 0;
+#else
+    (void)tree;
+    return false;
+#endif
+}
+
+} // namespace
+
+TEST_SUITE("closed tree") {
+
+TEST_CASE("a read-only tree under a folder of mode 0700 grades the same under bubblewrap and the fallback") {
+    std::vector<std::string> sandboxes;
+    if (bubblewrapMissing().empty()) sandboxes.push_back("bubblewrap");
+    else MESSAGE("bubblewrap cannot run here (" << bubblewrapMissing() << "): not tested with it");
+    if (geteuid() == 0) sandboxes.push_back("fallback");
+    else MESSAGE("not root: the fallback is not tested");
+    if (sandboxes.empty()) return;
+
+    const fs::path home = freshFolder("raylab-closed-tree") / "home", tree = home / "tree", build = home / "build";
+    fs::create_directories(tree);
+    fs::permissions(home, fs::perms::owner_all); // closed to every other user
+    for (const char* part : {"framework", "labs", "scenes", "cmake", "CMakeLists.txt", "CMakePresets.json"})
+        fs::copy(sourceDir() / part, tree / part, fs::copy_options::recursive);
+    const bool readOnly = mountReadOnly(tree);
+    if (readOnly) CHECK_FALSE(std::ofstream(tree / "written").is_open()); // root too
+    else MESSAGE("no mount namespace here: the tree is not read-only in this test");
+
+    const raylab::grader::Toolchain tools{RAYLAB_CMAKE_COMMAND, RAYLAB_CMAKE_GENERATOR,
+                                          raylab::grader::findProgram("ccache")};
+    for (const std::string& sandbox : sandboxes) {
+        CAPTURE(sandbox);
+        setenv("RAYLAB_SANDBOX", sandbox.c_str(), 1); // the grader's and the build guard's (CMake starts it)
+        // The solutions, lab 4 broken: a submission of its own for each sandbox, so each compiles it.
+        const fs::path submission = home / "submissions" / sandbox;
+        fs::create_directories(submission.parent_path());
+        fs::copy(sourceDir() / "solutions", submission, fs::copy_options::recursive);
+        const fs::path lookAt = submission / "lab4_lookat_camera" / "look_at.cpp";
+        const std::string code = readFile(lookAt);
+        std::ofstream(lookAt) << "this line is not C++\n" << code;
+
+        GradeSetup setup = loadGradeSetup(tree / "framework/grader/data/references", tree / "labs",
+                                          tree / "scenes/figures", home / ("scratch-" + sandbox));
+        setup.limits.wallSeconds = 60.;
+        setup.threads = 2;
+        CHECK(sandboxKind(setup.limits).rfind(sandbox == "fallback" ? "unprivileged user" : "bubblewrap", 0) == 0);
+        const raylab::grader::SubmissionBuild b =
+            raylab::grader::buildSubmission(tools, tree, submission, build, setup.labs);
+        CHECK_MESSAGE(b.brokenLabs == std::vector<int>{4}, b.compilerMessage);
+        CHECK_MESSAGE(b.compilerMessage.find(lookAt.string() + ":1") != std::string::npos, b.compilerMessage);
+        CHECK(b.compilerMessage.find("raylab-compile") == std::string::npos);
+        const GradeResult result = gradeCode(setup, b.agents, b.isolated, b.brokenLabs, b.compilerMessage);
+        fs::remove_all(setup.scratch);
+        // Lab 4 and the labs that use it score 0 (no solutions/ to stand in), every other lab all its points.
+        REQUIRE(!result.labs.empty());
+        for (const LabOutcome& lab : result.labs) {
+            CAPTURE(lab.lab);
+            const std::vector<int>& uses = setup.labs.lab(lab.lab)->uses;
+            const bool broken = lab.lab == 4 || std::find(uses.begin(), uses.end(), 4) != uses.end();
+            CHECK_MESSAGE(lab.points == (broken ? 0. : lab.maxPoints), failures(result));
+        }
+    }
+    unsetenv("RAYLAB_SANDBOX");
+    std::error_code ignored;
+#ifdef __linux__
+    if (readOnly) umount2(tree.c_str(), MNT_DETACH); // so that it can be removed
+#endif
+    fs::remove_all(home.parent_path(), ignored);
+}
+
+} // TEST_SUITE
