@@ -3,8 +3,8 @@
 # which one comes from where is a list of the labs taken from solutions/.
 #
 # The labs are found, not listed: every labs/lab<N>_<name>/lab.toml is lab N, whose id is its
-# folder's name. Sets RAYLAB_LAB_NUMBERS (sorted), RAYLAB_LAB_FOLDER_<n> and RAYLAB_LABS (the
-# folders, in the order of their numbers).
+# folder's name; those of the course's list (course.toml) are built. Sets RAYLAB_LAB_NUMBERS (the
+# course's, sorted), RAYLAB_LAB_FOLDER_<n> and RAYLAB_LABS (their folders, in the order of their numbers).
 
 #
 # The reference labs are solutions/<lab folder>/*.cpp, or, in Gradescope's image, the objects compiled
@@ -24,6 +24,34 @@ else()
   set(RAYLAB_HAVE_REFERENCE_LABS OFF)
 endif()
 
+# raylab_course_labs(OUT FOUND...): the labs of the course's list (course.toml at the top of the tree,
+# `labs = [1, 2, 3]`; read by the grader too, grader/course_list.cpp), each of which must be FOUND;
+# every lab found when the tree has no course.toml. CMake cannot parse TOML: the list is one line.
+function(raylab_course_labs out)
+  set(found ${ARGN})
+  set(file ${CMAKE_SOURCE_DIR}/course.toml)
+  if(NOT EXISTS ${file})
+    set(${out} ${found} PARENT_SCOPE)
+    return()
+  endif()
+  set_property(DIRECTORY ${CMAKE_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${file})
+  file(STRINGS ${file} lines REGEX "^[ \t]*labs[ \t]*=")
+  list(LENGTH lines count)
+  if(NOT count EQUAL 1 OR NOT lines MATCHES "^[ \t]*labs[ \t]*=[ \t]*\\[([0-9, \t]*)\\][ \t]*(#.*)?$")
+    message(FATAL_ERROR "${file}: expected one line `labs = [1, 2, 3]` (the numbers of the labs the course hands out)")
+  endif()
+  string(REGEX MATCHALL "[0-9]+" listed "${CMAKE_MATCH_1}")
+  if(NOT listed)
+    message(FATAL_ERROR "${file}: labs: the list is empty (a course hands out at least one lab)")
+  endif()
+  foreach(n IN LISTS listed)
+    if(NOT n IN_LIST found)
+      message(FATAL_ERROR "${file}: labs: there is no lab ${n} (labs/lab${n}_<name>/lab.toml; the labs found are ${found})")
+    endif()
+  endforeach()
+  set(${out} ${listed} PARENT_SCOPE)
+endfunction()
+
 # A lab's number and id come from its folder's name, lab<N>_<name> (N without a leading zero), not
 # from lab.toml, which CMake cannot parse; the grader's catalogue (framework/grader/lab_catalog.cpp)
 # checks that lab.toml's `number` and `id` say the same.
@@ -33,7 +61,7 @@ foreach(file IN LISTS raylab_lab_files)
   get_filename_component(folder_path ${file} DIRECTORY)
   get_filename_component(folder ${folder_path} NAME)
   if(NOT folder MATCHES "^lab([1-9][0-9]*)_.")
-    message(FATAL_ERROR "${file}: the folder ${folder} is not named lab<number>_<name>, such as lab3_sphere (see docs/instructors.md)")
+    message(FATAL_ERROR "${file}: the folder ${folder} is not named lab<number>_<name>, the number without a leading zero (see docs/instructors.md)")
   endif()
   set(number ${CMAKE_MATCH_1})
   if(number IN_LIST RAYLAB_LAB_NUMBERS)
@@ -45,6 +73,7 @@ endforeach()
 if(NOT RAYLAB_LAB_NUMBERS)
   message(FATAL_ERROR "no lab: there is no labs/lab*/lab.toml")
 endif()
+raylab_course_labs(RAYLAB_LAB_NUMBERS ${RAYLAB_LAB_NUMBERS})
 list(SORT RAYLAB_LAB_NUMBERS COMPARE NATURAL)
 set(RAYLAB_LABS "")
 foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
@@ -72,6 +101,9 @@ function(raylab_lab_shadings target n)
   if(NOT TARGET ${shadings})
     add_library(${shadings} OBJECT ${sources})
     target_link_libraries(${shadings} PRIVATE raylab_framework raylab_internals raylab_warnings)
+    target_include_directories(${shadings} PRIVATE ${CMAKE_SOURCE_DIR}/labs/${RAYLAB_LAB_FOLDER_${n}}) # the lab's header
+    # Its lab, for RAYLAB_REGISTER_FIGURE_STEP: the grading folder's name.
+    target_compile_definitions(${shadings} PRIVATE RAYLAB_LAB_ID="${RAYLAB_LAB_FOLDER_${n}}")
   endif()
   target_link_libraries(${target} INTERFACE $<TARGET_OBJECTS:${shadings}>)
   get_target_property(imported ${target} IMPORTED)
@@ -95,6 +127,7 @@ function(raylab_lab_target out n origin)
       add_library(${target} OBJECT IMPORTED GLOBAL)
       set_target_properties(${target} PROPERTIES IMPORTED_OBJECTS "${objects}")
       target_link_libraries(${target} INTERFACE raylab_framework)
+      target_include_directories(${target} INTERFACE ${CMAKE_SOURCE_DIR}/labs/${folder})
       raylab_lab_shadings(${target} ${n})
       set(${out} ${target} PARENT_SCOPE)
       return()
@@ -104,6 +137,9 @@ function(raylab_lab_target out n origin)
     endif()
     add_library(${target} OBJECT ${sources})
     target_link_libraries(${target} PUBLIC raylab_framework PRIVATE raylab_warnings)
+    # The lab's own header, labs/<lab>/<name>.h, declares the functions a student writes that no
+    # framework class declares: the stub, the solution and the lab's grading folder include it.
+    target_include_directories(${target} PUBLIC ${CMAKE_SOURCE_DIR}/labs/${folder})
     raylab_lab_shadings(${target} ${n})
     if(origin STREQUAL "labs")
       # A stub's one-line body ignores its parameters on purpose. On the sources, not the target: their

@@ -8,7 +8,7 @@
 #   figures  fresh clone, `cmake --workflow --preset figures`               (target: 3 min, 6 CPU-min)
 #   test     fresh clone, `cmake --workflow --preset test`                  (target: 8 min)
 #   class    `raylab grade-class` of 30 students: copies of solutions/, every sixth with a mistake of
-#            tests/mistakes/, one whose lab 3 does not compile             (target: 3 min, 4 s a student)
+#            framework/grader/labs/*/mistakes/, one whose lab 3 does not compile             (target: 3 min, 4 s a student)
 #   bench    `raylab bench --impl reference --threads 1`                    (target: ratios <= 1.15)
 #   clang    the same bench built with clang++: raylab's ns/ray, Clang over GCC (target: <= 1.10)
 # RAYLAB_MEASURE_DIR (default /var/tmp/raylab-measure) holds the clones, builds and logs; emptied first.
@@ -51,7 +51,7 @@ tool_build() {
 make_class() { # make_class DEST N
   local dest=$1 n=$2 i k s
   rm -rf "$dest" && mkdir -p "$dest"
-  local mistakes=("$source_repo"/tests/mistakes/*.patch)
+  local mistakes=("$source_repo"/framework/grader/labs/*/mistakes/*.patch)
   mistakes=("${mistakes[@]:0:4}")
   for i in $(seq -w 1 "$n"); do
     s="$dest/student$i"

@@ -220,7 +220,7 @@ int runGradescope(const Context& context) {
     std::printf("raylab autograder run: %s\n", why.c_str());
     const HandOver scratch;
     GradeResult nothing =
-        gradeBuildFailure(loadGradeSetup(referencesFolder(), labsFolder(), context.scenes, scratch.folder()), why);
+        gradeBuildFailure(loadGradeSetup(referenceFolders(""), labsFolder(), context.scenes, scratch.folder()), why);
     writeGradescopeJson(nothing, results / "results.json");
     addGradescopeFields(results / "results.json", elapsed());
     return 0;

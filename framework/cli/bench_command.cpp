@@ -59,7 +59,7 @@ std::optional<double> yardstickSeconds(const SceneDescription& d, const std::vec
 // yardstick (framework/study/yardstick.h) in turn, `repeats` times each, so that both see the same
 // load; then raylab on all threads. Shows the medians and the median of the per-pair time ratios.
 int runBench(const std::filesystem::path& scenes, int threads, int repeats) {
-    SceneDescription d = sceneWithRole(loadSceneFolder(scenes), "bench", scenes);
+    SceneDescription d = figureWithRole(scenes, "bench");
     const int allThreads = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
     std::printf("raylab bench: %s, %d x %d, %s sampler, median of %d timings (each of 50 ms at least)\n", d.id.c_str(),
                 d.width, d.height,

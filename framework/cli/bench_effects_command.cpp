@@ -72,7 +72,7 @@ void lambert(SceneDescription& d, bool light) {
 }
 
 int runBenchEffects(const std::filesystem::path& scenes, int threads, int repeats) {
-    const SceneDescription base = sceneWithRole(loadSceneFolder(scenes), "bench", scenes);
+    const SceneDescription base = figureWithRole(scenes, "bench");
     std::vector<Pair> pairs = {
         {"1 centred sample", "1 random sample", [](auto& d) { samples(d, SamplerKind::Center, 1); },
          [](auto& d) { samples(d, SamplerKind::Random, 1); }},

@@ -8,7 +8,6 @@ extern const char* const kImpl;       // "student" or "reference"
 extern const char* const kLabOrigins; // e.g. "lab1=labs lab2=solutions ..."
 // The tree and the build this program came from, also in program_identity.cpp: set on that file's
 // command line alone, so that the rest of the tool compiles the same in every tree (ccache shares it).
-extern const char* const kScenesDir; // the scenes/ folder of the source tree
 extern const char* const kSourceDir;
 extern const char* const kBinaryDir; // where the raylab programs are
 extern const char* const kBuildDir;  // the build folder (`cmake --build` it)

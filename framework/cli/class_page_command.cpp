@@ -30,7 +30,7 @@ std::vector<RosterEntry> classRoster(const std::string& roster) {
 void remakeClassPage(const fs::path& out, const std::vector<RosterEntry>& roster) {
     const ClassResults results = loadClassResults(out);
     const LabCatalog labs = courseLabs();
-    const std::vector<Mistake> mistakes = loadMistakes(referencesFolder());
+    const std::vector<Mistake> mistakes = loadMistakes(referenceFolders(""));
     const GradebookFiles gradebook = writeGradebooks(results, roster, out);
     const SimilarityReport similarity = findSimilarSubmissions(results, labs, labsFolder(), out / "similarity" / "compared");
     writeClassPage({results, labs, mistakes, similarity, gradebook}, out);

@@ -2,6 +2,8 @@
 // The raylab subcommands. Each file adds its own subcommands to the program's CLI11 app; their
 // callbacks set the exit status in the shared context.
 
+#include "src/scene_file.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
@@ -11,6 +13,7 @@
 
 namespace raylab::grader {
 struct LabCatalog;
+struct LabDescription;
 struct RosterEntry;
 }
 
@@ -21,7 +24,7 @@ struct Context {
     char** argv = nullptr;
     std::string impl;   // whose lab code: "student" or "reference" (--impl)
     int threads = 0;    // --threads; 0: one per core
-    std::string scenes; // --scenes: the folder of figure scene files
+    std::string scenes; // --scenes: a folder of figure scene files; empty: each lab's, labs/<lab>/scenes/
     int exitStatus = 0;
 
     // Adds --threads and --scenes to a subcommand.
@@ -36,10 +39,18 @@ struct Context {
 // The course's data in the source tree this program was built from: the lab descriptions
 // (labs/<lab>/lab.toml) and the grader's references (made by `raylab references`).
 std::filesystem::path labsFolder();
-std::filesystem::path referencesFolder();
-// The lab descriptions of labsFolder(), their figures' scene files in the tree's scenes/figures: what
-// says which lab a figure is, whichever folder --scenes names.
+// A lab's grading folder, framework/grader/labs/<lab>/, and its references/ in it.
+std::filesystem::path gradingFolder(const grader::LabDescription& lab);
+std::filesystem::path referencesFolder(const grader::LabDescription& lab);
+// The reference folders grading reads: `given` alone (--references) when it is not empty, else each
+// course lab's.
+std::vector<std::filesystem::path> referenceFolders(const std::string& given);
+// The lab descriptions of labsFolder() (the course's), their figures' scene files in each lab's
+// scenes/: what says which lab a figure is, whichever folder --scenes names.
 grader::LabCatalog courseLabs();
+// The figure scene with that role (bench, aliased...): of the --scenes folder when given, else of
+// the course's labs (courseLabs); throws SceneError when none has it, or two.
+SceneDescription figureWithRole(const std::filesystem::path& scenes, std::string_view role);
 // "the labs are 1 2 3 4 5", in the reader's language.
 std::string labList(const grader::LabCatalog& labs);
 

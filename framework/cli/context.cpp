@@ -78,11 +78,24 @@ void addTimingCommand(CLI::App& app, Context& context, const std::string& name, 
 
 std::filesystem::path labsFolder() { return std::filesystem::path(build::kSourceDir) / "labs"; }
 
-std::filesystem::path referencesFolder() {
-    return std::filesystem::path(build::kSourceDir) / "framework/grader/data/references";
+std::filesystem::path gradingFolder(const grader::LabDescription& lab) {
+    return std::filesystem::path(build::kSourceDir) / "framework" / "grader" / "labs" / lab.id;
 }
 
-grader::LabCatalog courseLabs() { return grader::loadLabCatalog(labsFolder(), build::kScenesDir); }
+std::filesystem::path referencesFolder(const grader::LabDescription& lab) { return gradingFolder(lab) / "references"; }
+
+std::vector<std::filesystem::path> referenceFolders(const std::string& given) {
+    if (!given.empty()) return {given};
+    std::vector<std::filesystem::path> folders;
+    for (const grader::LabDescription& lab : courseLabs().labs) folders.push_back(referencesFolder(lab));
+    return folders;
+}
+
+grader::LabCatalog courseLabs() { return grader::loadLabCatalog(labsFolder()); }
+
+SceneDescription figureWithRole(const std::filesystem::path& scenes, std::string_view role) {
+    return sceneWithRole(grader::loadFiguresInLabOrder(scenes, courseLabs()), role, scenes.empty() ? labsFolder() : scenes);
+}
 
 std::string labList(const grader::LabCatalog& labs) {
     std::string list;

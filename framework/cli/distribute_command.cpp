@@ -1,9 +1,9 @@
 // raylab distribute: writes the tree students receive: everything but the reference solutions and
-// what would give them away (the mistakes, valid variants and bad submissions of tests/ are patches
-// against the solutions, which show their lines; the studies and tests that hold a lab's answer are
+// what would give them away (the mistakes in each lab's grading folder, the valid variants and bad
+// submissions of tests/ are patches against the solutions, which show their lines; the studies and tests that hold a lab's answer are
 // built only where solutions/ is). It builds, runs and self-grades on its own: the
-// labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's references
-// (framework/grader/data/references/) go with it. tests/grading/distribute_ships_no_solution.cpp
+// labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's references (each
+// lab's framework/grader/labs/<lab>/references/) go with it. tests/grading/distribute_ships_no_solution.cpp
 // checks what it writes.
 #include "build_info.h"
 #include "commands.h"
@@ -26,8 +26,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+grader::LabCatalog courseCatalog(const fs::path& source) {
+    return grader::loadLabCatalog(source / "labs");
+}
+
 // Paths relative to the source tree that are not handed out.
-const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/variants", "tests/grading/bad_submissions",
+const std::set<std::string> kWithheld{"solutions", "tests/variants", "tests/grading/bad_submissions",
                                       ".git", "out", "compile_commands.json", ".cache",
                                       // raylab bench's yardstick writes the solutions' formulas out
                                       "framework/study/yardstick.cpp",
@@ -43,9 +47,24 @@ const std::set<std::string> kWithheld{"solutions", "tests/mistakes", "tests/vari
                                       "tests/study/counting_sphere.cpp", "tests/study/counting_sphere.h",
                                       "tests/study/test_render_work.cpp"};
 
-bool withheld(const fs::path& relative) {
+// The labs' folders that are not handed out: every lab's in solutions/ (kWithheld), its mistakes'
+// patches (against the solutions, they show their lines), and in labs/ and the grading folders those
+// of the labs the course's list (course.toml) leaves out: absent, not a zero.
+std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::LabCatalog& course) {
+    std::set<std::string> folders;
+    for (const auto& entry : fs::directory_iterator(source / "labs")) {
+        const std::string id = entry.path().filename().string();
+        folders.insert("framework/grader/labs/" + id + "/mistakes");
+        if (!entry.is_directory() || course.labOfId(id) != nullptr) continue;
+        folders.insert("labs/" + id);
+        folders.insert("framework/grader/labs/" + id);
+    }
+    return folders;
+}
+
+bool withheld(const fs::path& relative, const std::set<std::string>& labFolders) {
     const std::string text = relative.generic_string();
-    if (kWithheld.count(text)) return true;
+    if (kWithheld.count(text) || labFolders.count(text)) return true;
     const std::string top = relative.begin()->string();
     return top.rfind("build", 0) == 0; // build folders
 }
@@ -54,10 +73,11 @@ bool withheld(const fs::path& relative) {
 
 std::vector<fs::path> studentTreeFiles(const fs::path& source) {
     const fs::path sourceAbs = fs::canonical(source);
+    const std::set<std::string> labFolders = labFoldersWithheld(sourceAbs, courseCatalog(sourceAbs));
     std::vector<fs::path> files;
     for (auto it = fs::recursive_directory_iterator(sourceAbs); it != fs::recursive_directory_iterator(); ++it) {
         const fs::path relative = it->path().lexically_relative(sourceAbs); // fs::relative would follow links
-        if (withheld(relative) || it->is_symlink()) {
+        if (withheld(relative, labFolders) || it->is_symlink()) {
             if (it->is_directory()) it.disable_recursion_pending();
             continue;
         }
@@ -76,7 +96,7 @@ int writeStudentTree(const fs::path& source, const fs::path& out) {
         fs::create_directories((out / relative).parent_path());
         fs::copy_file(sourceAbs / relative, out / relative, fs::copy_options::overwrite_existing);
     }
-    writeStudentsReadme(out, grader::loadLabCatalog(sourceAbs / "labs", sourceAbs / "scenes" / "figures"));
+    writeStudentsReadme(out, courseCatalog(sourceAbs));
     const bool hadReadme = std::find(files.begin(), files.end(), fs::path("README.md")) != files.end();
     return int(files.size()) + (hadReadme ? 1 : 2); // LISEZMOI.md, and README.md where there was none
 }

@@ -78,7 +78,7 @@ int runFigures(const FiguresOptions& o) {
         if (std::none_of(scenes.begin(), scenes.end(), [&](const auto& d) { return d.id == id; })) {
             std::string known;
             for (const auto& d : scenes) known += " " + d.id;
-            throw std::invalid_argument(tr("figures.unknown", {{"id", id}, {"folder", o.scenes.string()}, {"known", known}}));
+            throw std::invalid_argument(tr("figures.unknown", {{"id", id}, {"folder", (o.scenes.empty() ? labsFolder() / "*" / "scenes" : o.scenes).string()}, {"known", known}}));
         }
     std::erase_if(scenes, [&](const SceneDescription& d) {
         const bool wanted = o.only.empty() || std::find(o.only.begin(), o.only.end(), d.id) != o.only.end();

@@ -45,11 +45,12 @@ std::vector<fs::path> studentLabFolders(bool everyLab) {
 }
 
 // The files that make the grading build, as far as a run can see them change: every lab's folder
-// of labs/, the framework (with each lab's grading folder), cmake/ and the top CMakeLists.txt.
+// of labs/, the framework (with each lab's grading folder), cmake/, the top CMakeLists.txt and the
+// course's list of labs.
 std::vector<fs::path> gradingBuildInputs() {
     std::vector<fs::path> inputs = studentLabFolders(true);
     const fs::path top = build::kSourceDir;
-    for (const char* name : {"framework", "cmake", "CMakeLists.txt"}) inputs.push_back(top / name);
+    for (const char* name : {"framework", "cmake", "CMakeLists.txt", "course.toml"}) inputs.push_back(top / name);
     return inputs;
 }
 

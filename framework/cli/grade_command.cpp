@@ -53,8 +53,7 @@ void noteRemovedScratch(const RunScratch& scratch, const std::string& command) {
 }
 
 GradeSetup setupFor(const GradeOptions& o, const Context& context, const fs::path& scratch) {
-    GradeSetup setup = loadGradeSetup(o.references.empty() ? referencesFolder() : fs::path(o.references), labsFolder(),
-                                      context.scenes, scratch);
+    GradeSetup setup = loadGradeSetup(referenceFolders(o.references), labsFolder(), context.scenes, scratch);
     if (o.lab != 0 && setup.labs.lab(o.lab) == nullptr)
         throw std::invalid_argument(tr("grade.no_such_lab", {{"lab", std::to_string(o.lab)}, {"labs", labList(setup.labs)}}));
     setup.limits.wallSeconds = o.timeout;
@@ -189,6 +188,14 @@ StudentRecord classRecord(const std::string& name, const GradeResult& result) {
     return record;
 }
 
+// The reference folders, as a result's settings name them.
+std::string referencesShown(const std::string& given) {
+    std::string shown;
+    for (const fs::path& folder : referenceFolders(given))
+        shown += (shown.empty() ? "" : " ") + fs::absolute(folder).lexically_normal().string();
+    return shown;
+}
+
 // What makes a student's result: another value of any of them and the student is graded again.
 Settings resultSettings(const GradeOptions& o, const GradeSetup& setup) {
     std::string agents;
@@ -199,7 +206,7 @@ Settings resultSettings(const GradeOptions& o, const GradeSetup& setup) {
             {"labs", o.lab == 0 ? "all" : std::to_string(o.lab)},
             {"timeout", timeout.str()},
             {"sandbox", sandboxKind(setup.limits)},
-            {"references", fs::absolute(o.references.empty() ? referencesFolder() : fs::path(o.references)).lexically_normal().string()},
+            {"references", referencesShown(o.references)},
             {"agents", agents.empty() ? "built from each submission" : agents}};
 }
 

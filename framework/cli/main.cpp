@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
     std::string lang = raylab::languageCode(raylab::language());
     app.add_option("--lang", lang, tr("cli.lang"))->check(CLI::IsMember({"en", "fr"}));
     app.fallthrough(); // --lang after the subcommand too
-    cli::Context context{argc, argv, build::kImpl, 0, build::kScenesDir};
+    cli::Context context{argc, argv, build::kImpl, 0, ""};
     // Every command describes itself in the reader's language (tests/cli/test_cli_language.cpp).
 #ifndef RAYLAB_GRADING_ONLY // a build for grading alone (RAYLAB_GRADING_ONLY, framework/CMakeLists.txt)
     cli::addFigureCommands(app, context);

@@ -6,7 +6,6 @@ namespace raylab::build {
 
 const char* const kImpl = RAYLAB_IMPL;
 const char* const kLabOrigins = RAYLAB_LAB_ORIGINS;
-const char* const kScenesDir = RAYLAB_SCENES_DIR;
 const char* const kSourceDir = RAYLAB_SOURCE_DIR;
 const char* const kBinaryDir = RAYLAB_BINARY_DIR;
 const char* const kBuildDir = RAYLAB_BUILD_DIR;

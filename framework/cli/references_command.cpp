@@ -1,5 +1,6 @@
-// raylab references: renders the graded figures from solutions/ into framework/grader/data/references/,
-// with the data the image checks need (docs/grading.md), and the mistakes' signatures.
+// raylab references: renders the graded figures from solutions/ into each lab's grading folder
+// (framework/grader/labs/<lab>/references/, or one --out folder), with the data the image checks need
+// (docs/grading.md), and the mistakes' signatures.
 #include "build_info.h"
 #include "commands.h"
 
@@ -25,9 +26,9 @@ using namespace raylab::grader;
 // Each mistake's agent renders the figures of `scenes`; those that fail their check are its signatures,
 // kept small. Only the figures rendered are touched: a signature of a figure not in `scenes` stays, one
 // whose figure now passes is removed, and an unchanged picture is left byte for byte.
-void makeSignatures(const fs::path& folder, const fs::path& bin, const fs::path& scenes) {
-    const ReferenceSet references = loadReferences(folder);
-    const std::vector<Mistake> mistakes = loadMistakes(folder);
+void makeSignatures(const std::vector<fs::path>& folders, const fs::path& bin, const fs::path& scenes, const LabCatalog& labs) {
+    const ReferenceSet references = loadReferences(folders);
+    const std::vector<Mistake> mistakes = loadMistakes(folders);
     for (const Mistake& m : mistakes) {
         const fs::path agent = bin / ("raylab-mistake-" + m.id);
         if (!fs::exists(agent)) {
@@ -36,11 +37,12 @@ void makeSignatures(const fs::path& folder, const fs::path& bin, const fs::path&
         }
         GradeSetup setup;
         setup.references = references;
+        setup.labs = labs;
         setup.scenes = scenes;
         setup.scratch = fs::temp_directory_path() / ("raylab-signature-" + m.id);
         fs::remove_all(setup.scratch);
         const std::map<std::string, Image8> pictures = renderFigures(setup, agent);
-        const fs::path out = folder / "mistakes" / m.id;
+        const fs::path out = m.folder / "mistakes" / m.id;
         std::string kept, removed;
         for (const FigureReference& r : references.figures) {
             const auto picture = pictures.find(r.id);
@@ -75,17 +77,21 @@ void printReference(const SceneDescription& d, const RenderedReference& rendered
                 f.stats->worstCorrectRmse, f.stats->rmseLimit);
 }
 
-int makeReferences(const fs::path& folder, const fs::path& scenes, const std::string& mistakesBin, int threads) {
-    std::printf("raylab references: %s -> %s\n", build::kLabOrigins, folder.string().c_str());
+// `out`: one folder for every figure; empty: each lab's references/.
+int makeReferences(const std::string& out, const fs::path& scenes, const std::string& mistakesBin, int threads) {
     const LabCatalog labs = courseLabs();
+    std::printf("raylab references: %s -> %s\n", build::kLabOrigins,
+                out.empty() ? (fs::path("framework/grader/labs/<lab>/references")).string().c_str() : out.c_str());
     for (const SceneDescription& d : loadFiguresInLabOrder(scenes, labs)) {
-        const int lab = labs.labNumberOfFigure(d.id);
-        if (lab == 0) throw std::runtime_error(d.file.string() + ": no lab lists this figure (labs/*/lab.toml, [[figure]])");
-        const RenderedReference rendered = renderReference(d, lab, threads);
+        const LabDescription* lab = labs.labOfFigure(d.id);
+        if (lab == nullptr) throw std::runtime_error(d.file.string() + ": no lab lists this figure (labs/*/lab.toml, [[figure]])");
+        const RenderedReference rendered = renderReference(d, lab->number, threads);
         printReference(d, rendered);
+        const fs::path folder = out.empty() ? referencesFolder(*lab) : fs::path(out);
+        fs::create_directories(folder);
         writeReference(folder, rendered.reference);
     }
-    if (!mistakesBin.empty()) makeSignatures(folder, mistakesBin, scenes);
+    if (!mistakesBin.empty()) makeSignatures(referenceFolders(out), mistakesBin, scenes, labs);
     return 0;
 }
 
@@ -102,8 +108,7 @@ void addReferencesCommand(CLI::App& app, Context& context) {
     references->callback([&context, out, mistakes] {
         context.impl = "reference";
         if (context.ranInOtherImpl()) return;
-        const fs::path folder = out->empty() ? referencesFolder() : fs::path(*out);
-        context.exitStatus = makeReferences(folder, context.scenes, *mistakes, context.threads);
+        context.exitStatus = makeReferences(*out, context.scenes, *mistakes, context.threads);
     });
 }
 

@@ -28,7 +28,7 @@ void addReportCommand(CLI::App& app, Context& context) {
         request->progress = stderrIsInteractive();
         request->referenceBuild = std::string(build::kImpl) == "reference";
         request->scenes = context.scenes;
-        request->references = referencesFolder();
+        request->references = referenceFolders("");
         request->labs = labsFolder();
         request->programs = build::kBinaryDir;
         std::printf("%s\n", tr("report.banner", {{"impl", tr(std::string("figures.impl_") + build::kImpl)},

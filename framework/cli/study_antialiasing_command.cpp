@@ -24,7 +24,7 @@ void addStudyAntialiasingCommand(CLI::App& app, Context& context) {
     command->callback([&context, o, out] {
         if (context.ranInOtherImpl()) return;
         o->threads = context.threads;
-        o->scene = sceneWithRole(loadSceneFolder(context.scenes), "bench", context.scenes).file;
+        o->scene = figureWithRole(context.scenes, "bench").file;
         o->thinObjects = std::filesystem::path(build::kSourceDir) / "scenes" / "study" / "adaptive_thin_objects.toml";
         o->out = !out->empty() ? std::filesystem::path(*out)
                  : o->quick   ? std::filesystem::path("out") / "study-quick"

@@ -83,7 +83,7 @@ int runWatch(const WatchOptions& o, const Context& context) {
                                   build::kBinaryDir,
                                   RAYLAB_CMAKE_COMMAND,
                                   build::kBuildType,
-                                  referencesFolder(),
+                                  referenceFolders(""),
                                   labsFolder(),
                                   context.scenes,
                                   context.threads};

@@ -1,5 +1,7 @@
 #include "grader/lab_catalog.h"
 
+#include "grader/course_list.h"
+
 #include "src/messages.h"
 #include "src/toml_reader.h"
 
@@ -193,6 +195,12 @@ const LabDescription* LabCatalog::lab(int number) const {
     return nullptr;
 }
 
+const LabDescription* LabCatalog::labOfId(const std::string& id) const {
+    for (const LabDescription& l : labs)
+        if (l.id == id) return &l;
+    return nullptr;
+}
+
 const LabFigure* LabCatalog::figure(const std::string& id) const {
     const LabDescription* l = labOfFigure(id);
     return l != nullptr ? l->figure(id) : nullptr;
@@ -236,18 +244,37 @@ LabDescription loadLabDescription(const fs::path& file, const fs::path& scenes) 
     lab.file = file;
     readHeading(r, root, file, lab);
     lab.functions = readFunctions(r, root, file);
-    lab.figures = readFigures(r, root, lab, scenes);
+    lab.figures = readFigures(r, root, lab, scenes.empty() ? file.parent_path() / "scenes" : scenes);
     lab.checks = readChecks(r, root, lab);
     rejectDuplicateNames(r, root, lab);
     return lab;
 }
 
 std::vector<SceneDescription> loadFiguresInLabOrder(const fs::path& folder, const LabCatalog& labs) {
+    if (folder.empty()) {
+        std::vector<SceneDescription> scenes; // each lab's figures, by id
+        for (const LabDescription& lab : labs.labs) {
+            std::vector<SceneDescription> own;
+            for (const LabFigure& f : lab.figures) own.push_back(loadSceneFile(f.scene));
+            std::sort(own.begin(), own.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+            scenes.insert(scenes.end(), own.begin(), own.end());
+        }
+        return scenes;
+    }
     std::vector<SceneDescription> scenes = loadSceneFolder(folder); // by id
     std::stable_sort(scenes.begin(), scenes.end(), [&](const auto& a, const auto& b) {
         return labs.labNumberOfFigure(a.id) < labs.labNumberOfFigure(b.id);
     });
     return scenes;
+}
+
+std::vector<fs::path> sceneFolders(const LabCatalog& labs) {
+    std::vector<fs::path> folders;
+    for (const LabDescription& lab : labs.labs)
+        for (const LabFigure& f : lab.figures)
+            if (std::find(folders.begin(), folders.end(), f.scene.parent_path()) == folders.end())
+                folders.push_back(f.scene.parent_path());
+    return folders;
 }
 
 LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {
@@ -263,6 +290,8 @@ LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {
     if (catalog.labs.empty()) throw std::runtime_error("no lab description (lab*/lab.toml) in " + labs.string());
     std::sort(catalog.labs.begin(), catalog.labs.end(),
               [](const auto& a, const auto& b) { return a.number < b.number; });
+    if (const std::optional<std::vector<int>> course = loadCourseList(courseFile(labs), catalog.numbers()))
+        std::erase_if(catalog.labs, [&](const LabDescription& l) { return !contains(*course, l.number); });
     std::map<std::string, const LabDescription*> figureOwner, fileOwner;
     for (std::size_t k = 0; k < catalog.labs.size(); ++k) {
         const LabDescription& lab = catalog.labs[k];

@@ -19,7 +19,7 @@ struct LabFunction {
 
 struct LabFigure {
     std::string id;              // the scene file's name without .toml
-    std::filesystem::path scene; // scenes/figures/<id>.toml
+    std::filesystem::path scene; // labs/<lab>/scenes/<id>.toml (or the --scenes folder's)
     std::string handout;         // the handout's figure number, e.g. "3(a)"
     std::string captionEn, captionFr;
     double points = 0.;
@@ -38,7 +38,7 @@ struct LabCheck {
 struct LabDescription {
     std::filesystem::path file; // its lab.toml
     int number = 0;
-    std::string id; // its folder's name, e.g. "lab3_sphere"
+    std::string id; // its folder's name, lab<number>_<name>
     std::string titleEn, titleFr;
     std::vector<LabFunction> functions;
     std::vector<int> uses; // every lab a figure or a check of this one uses
@@ -57,6 +57,7 @@ struct LabCatalog {
     std::vector<LabDescription> labs; // by number
 
     const LabDescription* lab(int number) const;
+    const LabDescription* labOfId(const std::string& id) const; // by its folder's name
     const LabFigure* figure(const std::string& id) const;
     const LabDescription* labOfFigure(const std::string& id) const;
     // The number of the lab that lists the figure; 0 when none does.
@@ -74,15 +75,20 @@ struct LabCatalog {
 std::string waitingMessage(const LabCatalog& labs, const std::string& figureId, const NotDoneYet& todo);
 
 // One lab.toml, checked on its own; throws std::runtime_error "FILE:LINE: key: problem".
-// `scenes`: the folder its figures' scene files must be in.
-LabDescription loadLabDescription(const std::filesystem::path& file, const std::filesystem::path& scenes);
+// `scenes`: the folder its figures' scene files must be in; empty: the lab's own, <lab>/scenes/.
+LabDescription loadLabDescription(const std::filesystem::path& file, const std::filesystem::path& scenes = {});
 
-// The scene files of `folder` (loadSceneFolder) in the order of their lab, then of their id (a
-// scene no lab lists first).
+// The figures' scenes in the order of their lab, then of their id: the catalogue's (each lab's
+// scenes/) when `folder` is empty, else the scene files of `folder` (loadSceneFolder; a scene no lab
+// lists first).
 std::vector<SceneDescription> loadFiguresInLabOrder(const std::filesystem::path& folder, const LabCatalog& labs);
 
+// The folders the figures' scene files are in (an agent may read them), each once.
+std::vector<std::filesystem::path> sceneFolders(const LabCatalog& labs);
+
 // Every <labs>/lab*/lab.toml, checked together (numbers and figure ids unique, `uses` names labs
-// that exist); throws std::runtime_error naming the file, line and key.
-LabCatalog loadLabCatalog(const std::filesystem::path& labs, const std::filesystem::path& scenes);
+// that exist), those of the course's list (course.toml beside <labs>, course_list.h) kept; throws
+// std::runtime_error naming the file, line and key.
+LabCatalog loadLabCatalog(const std::filesystem::path& labs, const std::filesystem::path& scenes = {});
 
 } // namespace raylab::grader

@@ -126,9 +126,9 @@ Image8 enlarge(const Image8& image, const CloseUp& z) {
 
 // The antialiasing comparison's close-ups (OUT/zoom), at the aliased reference's silhouette.
 std::optional<CloseUp> cropCloseUps(const std::map<std::string, Image8>& images, const ReferenceSet& references,
-                                    const fs::path& scenes, const fs::path& out) {
+                                    const std::vector<SceneDescription>& described, const fs::path& scenes,
+                                    const fs::path& out) {
     // A course without both roles has no comparison (two scenes with one role is an error).
-    const std::vector<SceneDescription> described = loadSceneFolder(scenes);
     const auto hasRole = [&](const char* role) {
         return std::any_of(described.begin(), described.end(), [&](const SceneDescription& d) {
             return std::find(d.roles.begin(), d.roles.end(), role) != d.roles.end();
@@ -199,7 +199,8 @@ int writeReportKit(const ReportRequest& request) {
     writeReports(result, setup.references, out / "grade");
     fs::remove_all(scratch);
     compareFigures(figures, images, result, setup.references, out);
-    const std::optional<CloseUp> closeUp = cropCloseUps(images, setup.references, request.scenes, out);
+    const std::optional<CloseUp> closeUp = cropCloseUps(images, setup.references, loadFiguresInLabOrder(request.scenes, setup.labs),
+                                                        request.scenes.empty() ? request.labs : request.scenes, out);
     writePages(KitContent{words, title, result, setup.labs, std::move(figures), closeUp}, out);
 
     std::printf("%s", terminalSummary(result).c_str());

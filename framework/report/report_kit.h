@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace raylab::report {
 
@@ -17,7 +18,7 @@ struct ReportRequest {
     bool progress = false;            // progress bars on a terminal
     bool referenceBuild = false;      // this program was built from solutions/: grade the reference agent
     std::filesystem::path scenes;     // the figures' scene files
-    std::filesystem::path references; // the grader's references
+    std::vector<std::filesystem::path> references; // the grader's reference folders
     std::filesystem::path labs;       // the labs' descriptions
     std::filesystem::path programs;   // where the agents are (beside raylab)
 };

@@ -6,7 +6,9 @@
 // lab.toml gives the function; the framework knows no lab. A lab function with no step is simply not
 // searched.
 //
-//   RAYLAB_REGISTER_FIGURE_STEP("lab3_sphere", "SphereGeometry::intersect", FigureStage::Pixel, intersections);
+//   RAYLAB_REGISTER_FIGURE_STEP("SphereGeometry::intersect", FigureStage::Pixel, intersections);
+//
+// The lab is the grading folder's (RAYLAB_LAB_ID, its folder's name, which CMake defines for it).
 
 #include "src/figure.h"
 #include "src/name_registry.h"
@@ -64,5 +66,5 @@ struct FigureStepRegistrar {
 } // namespace raylab
 
 // At namespace scope in a lab's figure_steps.cpp.
-#define RAYLAB_REGISTER_FIGURE_STEP(lab, function, stage, call)                                                        \
-    RAYLAB_REGISTRAR(::raylab::FigureStepRegistrar)((lab), (function), (stage), (call))
+#define RAYLAB_REGISTER_FIGURE_STEP(function, stage, call)                                                             \
+    RAYLAB_REGISTRAR(::raylab::FigureStepRegistrar)(RAYLAB_LAB_ID, (function), (stage), (call))

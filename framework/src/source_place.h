@@ -13,7 +13,7 @@ struct SourcePlace {
     static constexpr SourcePlace here(const char* file = __builtin_FILE(), unsigned line = __builtin_LINE()) {
         return {file, line};
     }
-    // "framework/grader/labs/lab1_first_image/checks.cpp:75": from the tree's top when the path has one.
+    // "framework/grader/labs/<lab>/checks.cpp:75": from the tree's top when the path has one.
     std::string shown() const {
         const std::string path = file;
         const std::size_t top = path.rfind("framework/");

@@ -1,5 +1,5 @@
 // The sphere's constructor: it refuses the spheres lab 3's intersection cannot handle. Its
-// intersect and computeNormal are lab 3's (labs/lab3_sphere/sphere_geometry.cpp).
+// intersect and computeNormal are lab 3's: the student's file in labs/ (or its solution).
 #include "raylab/sphere_geometry.h"
 
 #include "src/text.h"

@@ -10,7 +10,7 @@
 
 namespace raylab::study {
 
-// The linear pixels (row-major) of a scene like scenes/figures/lab5_antialiased.toml: the default
+// The linear pixels (row-major) of a scene like the bench figure's (roles = ["bench"]): the default
 // camera, one sphere, cosine shading, the random sampler, any size, samples and seed. Bit for bit
 // the image the reference labs render. Throws std::invalid_argument for any other kind of scene.
 std::vector<Color> renderYardstick(const SceneDescription& scene);

@@ -283,7 +283,10 @@ Json picturePixel(const fs::path& file, int x, int y) {
 std::string PixelInspector::inspect(const std::string& figure, int x, int y) const {
     Json answer{{"figure", figure}, {"x", x}, {"y", y}, {"rows", Json::array()}, {"first", -1}, {"note", ""}};
     const int lab = m_labs.labNumberOfFigure(figure);
-    const fs::path sceneFile = m_settings.scenes / (figure + ".toml");
+    const grader::LabFigure* described = m_labs.figure(figure);
+    const fs::path sceneFile = !m_settings.scenes.empty() ? m_settings.scenes / (figure + ".toml")
+                               : described != nullptr      ? described->scene
+                                                           : fs::path();
     std::error_code error;
     if (lab == 0 || !fs::is_regular_file(sceneFile, error)) {
         answer["note"] = tr("watch.no_figure", {{"figure", printableText(figure)}});
@@ -332,7 +335,7 @@ std::string PixelInspector::inspect(const std::string& figure, int x, int y) con
         answers.why = tr("grade.no_agent", {{"folder", m_settings.binDir.string()}});
     } else {
         const std::lock_guard lock(m_agents); // not while a build relinks the agent
-        answers = askAgent(agents.front().program, m_settings.scenes, lab, a.calls);
+        answers = askAgent(agents.front().program, sceneFile.parent_path(), lab, a.calls);
     }
     answer["note"] = printableText(answers.why);
 

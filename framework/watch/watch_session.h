@@ -21,9 +21,9 @@ struct WatchSettings {
     std::filesystem::path buildDir;   // its build (`cmake --build` it)
     std::filesystem::path binDir;     // where its agents are
     std::string cmake, buildType;     // the cmake program, the build's configuration
-    std::filesystem::path references; // the grader's references
+    std::vector<std::filesystem::path> references; // the grader's references, each lab's folder
     std::filesystem::path labs;       // the lab descriptions (labs/)
-    std::filesystem::path scenes;     // the figures' scene files
+    std::filesystem::path scenes;     // a folder of the figures' scene files; empty: each lab's
     int threads = 0;
 };
 

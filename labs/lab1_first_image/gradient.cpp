@@ -1,5 +1,5 @@
 // Lab 1: your first image. This file is yours to edit.
-#include "raylab/gradient.h"
+#include "gradient.h"
 #include "raylab/todo.h"
 
 namespace raylab {

@@ -1,5 +1,5 @@
 // Lab 6: shadows. This file is yours to edit.
-#include "raylab/point_light_integrator.h"
+#include "point_light_integrator.h"
 #include "raylab/todo.h"
 
 #include <glm/geometric.hpp>

@@ -1,5 +1,5 @@
 // Lab 1: your first image. The reference solution; students write labs/lab1_first_image/gradient.cpp.
-#include "raylab/gradient.h"
+#include "gradient.h"
 
 namespace raylab {
 

@@ -1,5 +1,5 @@
 // Lab 6: shadows. The reference solution; students write labs/lab6_shadows/point_light_integrator.cpp.
-#include "raylab/point_light_integrator.h"
+#include "point_light_integrator.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,5 +1,5 @@
 // Lab 6: shadows. The reference solution; students write labs/lab6_shadows/shadow_test.cpp.
-#include "raylab/point_light_integrator.h"
+#include "point_light_integrator.h"
 
 #include <glm/geometric.hpp>
 

@@ -186,8 +186,9 @@ TEST_CASE("the Gradescope zip unpacks into source/ and its setup.sh builds the t
     }
     // The reference labs travel in the zip, to be compiled once by setup.sh and deleted.
     CHECK(filesNamed(tree() / "solutions", ".cpp") == filesNamed(sourceDir() / "solutions", ".cpp"));
-    CHECK_FALSE(fs::exists(tree() / "tests" / "mistakes"));
-    CHECK(fs::exists(tree() / "framework/grader/data/references/mistakes.toml"));
+    CHECK(missingReferences(tree()).empty());
+    for (const auto& lab : fs::directory_iterator(tree() / "framework/grader/labs"))
+        CHECK_MESSAGE(!fs::exists(lab.path() / "mistakes"), lab.path()); // patches against the solutions
     CHECK(fs::exists(tree() / "labs/lab1_first_image/lab.toml"));
     // The header-only libraries, each with its licence, for an image that lacks them (Ubuntu 22.04: toml++).
     for (const char* header : {"glm/include/glm/glm.hpp", "tomlplusplus/include/toml++/toml.h", "cli11/include/CLI/CLI.hpp",
@@ -211,9 +212,14 @@ TEST_CASE("the Gradescope zip unpacks into source/ and its setup.sh builds the t
     CHECK(filesNamed(tree() / "solutions", ".cpp").empty());
     CHECK_FALSE(filesNamed(tree() / "solutions", ".o").empty());
     // Without bubblewrap the code graded reads what anyone may read: not the reference objects and pictures.
-    const fs::path references = tree() / "framework" / "grader" / "data" / "references";
-    for (const fs::path& secret : {tree() / "solutions", references})
+    std::vector<fs::path> secrets{tree() / "solutions"};
+    for (const LabDescription& lab : courseSetup().labs.labs)
+        secrets.push_back(tree() / "framework" / "grader" / "labs" / lab.id / "references"); // each lab's
+    for (const fs::path& secret : secrets) {
+        CAPTURE(secret);
+        REQUIRE(fs::exists(secret));
         CHECK((fs::status(secret).permissions() & fs::perms::others_all) == fs::perms::none);
+    }
     for (const std::string& object : filesNamed(tree() / "solutions", ".o"))
         CHECK((fs::status(tree() / "solutions" / object).permissions() & fs::perms::others_all) == fs::perms::none);
 }
@@ -436,7 +442,7 @@ TEST_SUITE("autograder github") {
 
 TEST_CASE("classroom.yml: GitHub Classroom's shape, a build, a step per check and figure with its points") {
     CHECK_FALSE(fs::exists(kRoot / "github" / "solutions"));
-    CHECK(fs::exists(kRoot / "github" / "framework/grader/data/references/mistakes.toml"));
+    CHECK(missingReferences(kRoot / "github").empty());
     const YAML::Node workflow = YAML::LoadFile((kRoot / "github" / ".github" / "workflows" / "classroom.yml").string());
     // A push grades; so does a run started by hand (workflow_dispatch) or by Classroom (repository_dispatch).
     std::set<std::string> events;

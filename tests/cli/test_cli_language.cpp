@@ -1,6 +1,8 @@
 // The command line speaks the reader's language: `raylab --help`, every command's help, the student
 // commands' output and the argument errors, CLI11's own included, are French with --lang fr and hold
 // none of the English sentences.
+#include "grader/lab_catalog.h"
+#include "support/scene_files.h"
 #include "src/messages.h"
 #include "support/run_program.h"
 
@@ -254,13 +256,18 @@ TEST_CASE("argument errors in French keep the option's name and the value") {
         std::vector<std::string> args;
         std::string french;
     };
+    // The course's labs, and a number none has (the catalogue says which: no list of our own).
+    const std::vector<int> numbers = raylab::grader::loadLabCatalog(raylab::test::kLabsDir).numbers();
+    std::string listed;
+    for (int n : numbers) listed += " " + std::to_string(n);
+    const std::string none = std::to_string(*std::max_element(numbers.begin(), numbers.end()) + 1);
     // --lang last (it may stand anywhere), but before an option left without its value.
     const std::vector<Case> cases{
         {{"grade", "--bogus", "--lang", "fr"}, "inattendu ici" + nbsp + ": --bogus"},
         {{"--lang", "fr", "grade", "--lab"}, "--lab attend une valeur"},
         {{"grade", "--lab", "two", "--lang", "fr"}, "--lab" + nbsp + ": two n'est pas un nombre positif"},
         {{"report", "--pdf=maybe", "--lang", "fr"}, "--pdf" + nbsp + ": «" + nbsp + "maybe" + nbsp + "» n'est pas une valeur valide"},
-        {{"lab", "9", "--lang", "fr"}, "TP 9" + nbsp + ": ce TP n'existe pas (les TP sont 1 2 3 4 5)"},
+        {{"lab", none, "--lang", "fr"}, "TP " + none + nbsp + ": ce TP n'existe pas (les TP sont" + listed + ")"},
         {{"render", "--lang", "fr"}, "FICHIER est obligatoire"},
         {{"report", "--out", "a", "--out", "b", "--lang", "fr"}, "--out apparaît 2 fois" + nbsp + "; le maximum est 1"},
         {{"figures", "--impl", "mine", "--lang", "fr"}, "--impl" + nbsp + ": mine n'est pas l'une des valeurs {student,reference}"},
@@ -283,7 +290,7 @@ TEST_CASE("argument errors in French keep the option's name and the value") {
 TEST_CASE("raylab render says what it renders in French") {
     const auto out = scratchFile("render.png");
     // Its first line, whether the student's lab 1 is written (the render succeeds) or not (it fails).
-    const std::string output = run({"render", std::string(RAYLAB_SCENES_DIR) + "/lab1_gradient.toml", "--out", out.string(), "--lang", "fr"}, std::nullopt);
+    const std::string output = run({"render", raylab::test::figureSceneFile("lab1_gradient").string(), "--out", out.string(), "--lang", "fr"}, std::nullopt);
     std::filesystem::remove(out);
     CHECK_MESSAGE(has(output, "lab1_gradient.toml\u00A0: 600 x 400, "), output);
     CHECK_MESSAGE(has(output, ", 1 échantillon par pixel (échantillonneur "), output);

@@ -1,6 +1,7 @@
 // The docs: every relative link and image of every Markdown file resolves; the figure tables
 // agree with the labs' descriptions (labs/<lab>/lab.toml); the contact sheet.
 #include "link_check.h"
+#include "support/scene_files.h"
 
 #include "grader/lab_catalog.h"
 
@@ -58,7 +59,7 @@ std::multimap<std::string, std::string> figureMentions(const std::string& text) 
 
 TEST_SUITE("figure tables") {
     TEST_CASE("each handout numbers its lab's figures and names its files as its lab.toml does") {
-        const auto catalog = raylab::grader::loadLabCatalog(kRoot / "labs", kRoot / "scenes/figures");
+        const auto catalog = raylab::grader::loadLabCatalog(kRoot / "labs");
         for (const auto& lab : catalog.labs)
             for (const char* handout : {"README.md", "README.fr.md"}) {
                 const fs::path file = kRoot / "labs" / lab.id / handout;
@@ -80,7 +81,7 @@ TEST_SUITE("figure tables") {
     }
 
     TEST_CASE("docs/figures/README.md has a row per figure: its lab, handout number and caption") {
-        const auto catalog = raylab::grader::loadLabCatalog(kRoot / "labs", kRoot / "scenes/figures");
+        const auto catalog = raylab::grader::loadLabCatalog(kRoot / "labs");
         const std::string text = readFile(kRoot / "docs/figures/README.md");
         static const std::regex row(R"(\| \[`([a-z0-9_]+)`\]\(([a-z0-9_]+)\.png\) \| ([0-9]+) \| Figure ([^|]+) \| ([^|\n]+) \|)");
         std::set<std::string> listed;
@@ -89,7 +90,10 @@ TEST_SUITE("figure tables") {
             CAPTURE(id);
             listed.insert(id);
             const auto* lab = catalog.labOfFigure(id);
-            REQUIRE_MESSAGE(lab != nullptr, id << " is the figure of no lab.toml");
+            if (lab == nullptr) { // a figure of a lab the course's list leaves out, or of none
+                CHECK_MESSAGE(!raylab::test::figureSceneFile(id).empty(), id << " is the figure of no lab");
+                continue;
+            }
             const auto& figure = *lab->figure(id);
             CHECK((*it)[2] == id);
             CHECK(std::stoi((*it)[3]) == lab->number);

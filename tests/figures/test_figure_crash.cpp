@@ -1,6 +1,7 @@
 // A lab function that crashes costs its figure only, and the figure's message names the function
 // (cli/figure_process.cpp): here lab 3's SphereGeometry::intersect (crashing_sphere.cpp), found by
 // the steps lab 3's grading folder registers; the other labs are the reference's.
+#include "support/scene_files.h"
 #include "cli/figure_process.h"
 #include "src/messages.h"
 
@@ -13,9 +14,8 @@ namespace {
 
 using namespace raylab;
 
-const std::filesystem::path kScenes = RAYLAB_SCENES_DIR;
 
-grader::LabCatalog labCatalog() { return grader::loadLabCatalog(kScenes.parent_path().parent_path() / "labs", kScenes); }
+grader::LabCatalog labCatalog() { return grader::loadLabCatalog(test::kLabsDir); }
 
 #if defined(__unix__) || defined(__APPLE__)
 // doctest's own crash handler, which the figure's child would inherit and report as this test's
@@ -35,7 +35,7 @@ TEST_SUITE("figure crash") {
 #if defined(__unix__) || defined(__APPLE__) // elsewhere a figure is drawn in the command's own process
     TEST_CASE("a crash in lab 3's intersect names lab 3 and SphereGeometry::intersect") {
         setLanguage(Language::En);
-        SceneDescription d = loadSceneFile(kScenes / "lab3_flat.toml");
+        SceneDescription d = loadSceneFile(test::figureSceneFile("lab3_flat"));
         d.width = 8;
         d.height = 6;
         const DefaultCrashHandler handler;
@@ -46,7 +46,7 @@ TEST_SUITE("figure crash") {
     }
 
     TEST_CASE("a figure that meets no sphere is drawn") {
-        const FigureResult r = cli::renderFigure(loadSceneFile(kScenes / "lab2_directions.toml"), {1, false}, labCatalog());
+        const FigureResult r = cli::renderFigure(loadSceneFile(test::figureSceneFile("lab2_directions")), {1, false}, labCatalog());
         CHECK(r.status == FigureResult::Status::Rendered);
         CHECK(r.image.has_value());
     }

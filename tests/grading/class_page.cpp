@@ -300,7 +300,7 @@ TEST_CASE("a copied lab 3, renamed and laid out otherwise, tops the list; studen
     fs::remove(copy);
     std::ofstream(copy) << text;
 
-    const auto catalog = raylab::grader::loadLabCatalog(sourceDir() / "labs", RAYLAB_SCENES_DIR);
+    const auto catalog = raylab::grader::loadLabCatalog(sourceDir() / "labs");
     const auto report = raylab::grader::findSimilarSubmissions(raylab::grader::loadClassResults(out), catalog,
                                                                sourceDir() / "labs", out / "compared");
     CHECK(report.note.empty());
@@ -332,7 +332,7 @@ TEST_CASE("without sim_c++: a note that says so and how to install it, no pairs"
     const char* path = std::getenv("PATH");
     const std::string ourPath = path ? path : "";
     setenv("PATH", "/nonexistent", 1);
-    const auto catalog = raylab::grader::loadLabCatalog(sourceDir() / "labs", RAYLAB_SCENES_DIR);
+    const auto catalog = raylab::grader::loadLabCatalog(sourceDir() / "labs");
     const auto report = raylab::grader::findSimilarSubmissions(raylab::grader::loadClassResults(out), catalog,
                                                                sourceDir() / "labs", out / "compared");
     setenv("PATH", ourPath.c_str(), 1);
@@ -352,7 +352,7 @@ TEST_CASE("class-page on a class of 100 students: the time it takes") {
     std::vector<fs::path> versions{{}}; // the solution, each mistake and variant: whichever labs they change
     for (const char* kind : {"mistake", "variant"})
         for (const auto& entry : fs::directory_iterator(submissions / kind)) versions.push_back(entry.path());
-    const auto catalog = raylab::grader::loadLabCatalog(sourceDir() / "labs", RAYLAB_SCENES_DIR);
+    const auto catalog = raylab::grader::loadLabCatalog(sourceDir() / "labs");
     for (int s = 0; s < 100; ++s) {
         const std::string name = "student" + std::to_string(s);
         const fs::path copy = out / "students" / name / "submission";

@@ -1,5 +1,6 @@
 // The commands as a user mistypes them and as a full disk answers them: a clear error that names
 // what is wrong, a non-zero exit status, never a hang, an abort or an old file destroyed.
+#include "support/scene_files.h"
 #include "support/files.h"
 #include "grading_support.h"
 
@@ -39,7 +40,7 @@ using raylab::test::readFile;
 
 bool has(const Finished& f, const std::string& text) { return f.output.find(text) != std::string::npos; }
 
-const std::string kGradientScene = std::string(RAYLAB_SCENES_DIR) + "/lab1_gradient.toml";
+const std::string kGradientScene = raylab::test::figureSceneFile("lab1_gradient").string();
 
 } // namespace
 
@@ -78,7 +79,7 @@ TEST_CASE("grade --images reads regular files only: a pipe or a device is refuse
     const fs::path dir = freshFolder("raylab-images-special");
     REQUIRE(mkfifo((dir / "lab4_d.png").c_str(), 0600) == 0);
     fs::create_symlink("/dev/zero", dir / "lab4_b.png");
-    fs::copy_file(sourceDir() / "framework/grader/data/references/lab1_gradient.png", dir / "lab1_gradient.png");
+    fs::copy_file(referencePicture("lab1_gradient"), dir / "lab1_gradient.png");
     const Finished f = run("raylab", {"grade", "--images", dir.string(), "--report", (dir / "report").string()});
     REQUIRE_MESSAGE(f.status != -1, "still running after a minute: it blocked on the pipe");
     CHECK(f.status == 1);

@@ -120,10 +120,10 @@ TEST_CASE("overwriting the references does not help: confined it cannot, in the 
     for (const bool bubblewrap : {false, true}) {
         CAPTURE(bubblewrap);
         fs::remove_all(copy);
-        fs::copy(referencesDir(), copy, fs::copy_options::recursive);
+        copyReferences(copy);
         const fs::path target = copy / "lab1_gradient.png";
         const auto before = fs::file_size(target);
-        GradeSetup setup = courseSetup(copy);
+        GradeSetup setup = courseSetup({copy});
         setup.limits.bubblewrap = bubblewrap;
         const GradeResult r = gradeAgent(setup, "raylab-bad-writes_references");
         CHECK((fs::file_size(target) == before) == confined(setup)); // the attack happened only in the process group

@@ -48,13 +48,21 @@ fs::path makeClass(const std::string& name) {
 
 TEST_SUITE("commands") {
 
+// The reference folders as a result's settings name them: each lab's, absolute.
+std::string referencesShown() {
+    std::string shown;
+    for (const fs::path& folder : referenceDirs())
+        shown += (shown.empty() ? "" : " ") + fs::absolute(folder).lexically_normal().string();
+    return shown;
+}
+
 TEST_CASE("grade-class resumes: students with a result are not graded again, the CSV is made from the results") {
     const fs::path root = makeClass("raylab-class-resume");
     // Made as this run makes them: every lab, the default timeout, this grader, its sandbox.
     const std::string sandbox = bubblewrapMissing().empty() ? "bubblewrap" : "process group";
     const std::string madeBy = R"([{"name": "grader", "value": "raylab )" RAYLAB_VERSION R"("}, {"name": "labs", "value": "all"},
         {"name": "timeout", "value": "180"}, {"name": "sandbox", "value": ")" + sandbox + R"("},
-        {"name": "references", "value": ")" + referencesDir().lexically_normal().string() + R"("},
+        {"name": "references", "value": ")" + referencesShown() + R"("},
         {"name": "agents", "value": "built from each submission"}])";
     for (const char* name : {"alice", "bob"}) {
         fs::create_directories(root / "out" / "students" / name);

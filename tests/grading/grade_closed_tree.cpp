@@ -72,8 +72,10 @@ TEST_CASE("a read-only tree under a folder of mode 0700 grades the same under bu
         const std::string code = readFile(lookAt);
         std::ofstream(lookAt) << "this line is not C++\n" << code;
 
-        GradeSetup setup = loadGradeSetup(tree / "framework/grader/data/references", tree / "labs",
-                                          tree / "scenes/figures", home / ("scratch-" + sandbox));
+        std::vector<fs::path> references;
+        for (const LabDescription& lab : loadLabCatalog(tree / "labs").labs)
+            references.push_back(tree / "framework/grader/labs" / lab.id / "references");
+        GradeSetup setup = loadGradeSetup(references, tree / "labs", {}, home / ("scratch-" + sandbox));
         setup.limits.wallSeconds = 60.;
         setup.threads = 2;
         CHECK(sandboxKind(setup.limits).rfind(sandbox == "fallback" ? "unprivileged user" : "bubblewrap", 0) == 0);

@@ -101,7 +101,7 @@ TEST_SUITE("protocol") {
 
     TEST_CASE("drawn cases change from one grading to the next, fixed cases stay") {
         const raylab::grader::LabCatalog labs =
-            raylab::grader::loadLabCatalog(std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
+            raylab::grader::loadLabCatalog(std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs");
         const std::vector<raylab::grader::FunctionCheck> a = raylab::grader::functionChecks(labs, 1),
                                                          b = raylab::grader::functionChecks(labs, 2);
         REQUIRE(a.size() == b.size());
@@ -144,7 +144,7 @@ TEST_SUITE("protocol") {
     }
 
     TEST_CASE("a picture rewritten after the render (atexit) changes nothing") {
-        const fs::path reference = referencesDir() / "lab1_gradient.png";
+        const fs::path reference = referencePicture("lab1_gradient");
 #ifdef _WIN32
         _putenv_s("RAYLAB_HOSTILE_PNG", reference.string().c_str());
 #else

@@ -7,8 +7,11 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace raylab::test {
 
@@ -17,12 +20,54 @@ using namespace raylab::grader;
 
 inline fs::path binDir() { return RAYLAB_GRADING_BIN; }
 inline fs::path sourceDir() { return RAYLAB_SOURCE_DIR; }
-inline fs::path referencesDir() { return sourceDir() / "framework/grader/data/references"; }
+// The course's reference folders, each lab's in its grading folder.
+inline std::vector<fs::path> referenceDirs() {
+    std::vector<fs::path> folders;
+    for (const LabDescription& lab : loadLabCatalog(sourceDir() / "labs").labs)
+        folders.push_back(sourceDir() / "framework/grader/labs" / lab.id / "references");
+    return folders;
+}
+
+// A figure's reference picture, in its lab's reference folder.
+inline fs::path referencePicture(const std::string& figure) {
+    for (const fs::path& folder : referenceDirs())
+        if (fs::exists(folder / (figure + ".png"))) return folder / (figure + ".png");
+    FAIL("no reference picture " << figure);
+    return {};
+}
+
+// The course's references gathered in one folder `to`, as --references and --out take them (the
+// labs' mistakes.toml one after the other: a list of [[mistake]] tables).
+inline void copyReferences(const fs::path& to) {
+    fs::create_directories(to);
+    std::string mistakes;
+    for (const fs::path& folder : referenceDirs())
+        for (const auto& entry : fs::directory_iterator(folder)) {
+            if (entry.path().filename() != "mistakes.toml") {
+                fs::copy(entry.path(), to / entry.path().filename(), fs::copy_options::recursive);
+                continue;
+            }
+            std::ifstream in(entry.path(), std::ios::binary);
+            mistakes += std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()) + "\n";
+        }
+    std::ofstream(to / "mistakes.toml", std::ios::binary) << mistakes;
+}
+
+// The reference pictures a tree (a copy handed out) lacks: each lab's figures in its grading folder.
+inline std::vector<std::string> missingReferences(const fs::path& tree) {
+    std::vector<std::string> missing;
+    for (const LabDescription& lab : loadLabCatalog(tree / "labs").labs)
+        for (const LabFigure& f : lab.figures) {
+            const fs::path file = fs::path("framework/grader/labs") / lab.id / "references" / (f.id + ".png");
+            if (!fs::exists(tree / file)) missing.push_back(file.generic_string());
+        }
+    return missing;
+}
 
 // A setup with a scratch folder of its own (tests run in parallel).
-inline GradeSetup courseSetup(const fs::path& references = referencesDir()) {
+inline GradeSetup courseSetup(const std::vector<fs::path>& references = referenceDirs()) {
     std::random_device random;
-    GradeSetup setup = loadGradeSetup(references, sourceDir() / "labs", RAYLAB_SCENES_DIR,
+    GradeSetup setup = loadGradeSetup(references, sourceDir() / "labs", {},
                                       fs::temp_directory_path() / ("raylab-grading-test-" + std::to_string(random())));
     setup.limits.wallSeconds = 60.;
     setup.threads = 2;

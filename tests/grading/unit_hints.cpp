@@ -25,7 +25,7 @@ using Answer = std::function<std::vector<double>(const protocol::Call&)>;
 // Every check of a lab (or the one named `only`) judged on what `answer` returns to its calls; its
 // message (empty when it passes) by name.
 std::vector<std::pair<std::string, std::string>> judge(int lab, const Answer& answer, const std::string& only = "") {
-    const LabCatalog labs = loadLabCatalog(std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
+    const LabCatalog labs = loadLabCatalog(std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs");
     CaseRandom random(2026);
     const std::vector<FunctionCheck> checks = labChecks(*labs.lab(lab), random);
     std::vector<std::pair<std::string, std::string>> messages;

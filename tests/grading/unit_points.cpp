@@ -151,7 +151,7 @@ TEST_CASE("a lab's number and id are those of its folder's name, lab<N>_<name>, 
         const fs::path file = course.lab(folder, text);
         CHECK_THROWS_WITH_AS(course.load(),
                              (file.string() + ":2: id: the folder " + folder +
-                              " is not named lab<number>_<name>, such as lab3_sphere").c_str(),
+                              " is not named lab<number>_<name>, the number without a leading zero").c_str(),
                              std::runtime_error);
         fs::remove_all(file.parent_path());
     }
@@ -168,13 +168,15 @@ TEST_CASE("a lab's files: each declared once, in order, and no two labs share a 
     const LabCatalog catalog = course.load();
     CHECK(catalog.lab(2)->files() == std::vector<std::string>{"code.cpp"});
     CHECK(catalog.lab(1)->files().empty());
-    const LabCatalog real = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
+    const LabCatalog real = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs");
     CHECK(real.lab(3)->files() == std::vector<std::string>{"sphere_geometry.cpp", "ray_cast_integrator.cpp"});
 }
 
 TEST_CASE("the course's descriptions agree with the references and the scene files") {
-    const LabCatalog catalog = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
-    const ReferenceSet references = loadReferences(fs::path(RAYLAB_SOURCE_DIR) / "framework/grader/data/references");
+    const LabCatalog catalog = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs");
+    std::vector<fs::path> folders;
+    for (const LabDescription& lab : catalog.labs) folders.push_back(fs::path(RAYLAB_SOURCE_DIR) / "framework/grader/labs" / lab.id / "references");
+    const ReferenceSet references = loadReferences(folders);
     REQUIRE_FALSE(catalog.labs.empty());
     std::size_t figures = 0;
     for (const LabDescription& lab : catalog.labs) {
@@ -196,7 +198,7 @@ TEST_CASE("the course's descriptions agree with the references and the scene fil
 
 TEST_CASE(
     "a check of the code lab.toml does not name, or one of lab.toml with no code, is an error naming both places") {
-    const LabCatalog real = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", RAYLAB_SCENES_DIR);
+    const LabCatalog real = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs");
     LabDescription lab = *real.lab(3);
     CaseRandom random(1);
     const std::vector<FunctionCheck> checks = labChecks(lab, random);

@@ -1,4 +1,4 @@
-// The grader's data files (framework/grader/data/references/): the mistakes' catalogue and each
+// The grader's data files (each lab's framework/grader/labs/<lab>/references/): the mistakes' catalogue and each
 // figure's reference description are read strictly, every problem naming the file, the line and the key.
 #include "grader/judge/diagnosis.h"
 #include "grader/judge/references.h"
@@ -36,7 +36,7 @@ struct Folder {
 template <class Load>
 std::string errorOf(const Folder& folder, Load load) {
     try {
-        load(folder.root);
+        load({folder.root});
     } catch (const std::runtime_error& e) {
         const std::string message = e.what(), prefix = (folder.root / "").string();
         return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
@@ -80,14 +80,29 @@ TEST_SUITE("reference files") {
 TEST_CASE("the mistakes' catalogue: a mistake is read whole") {
     const Folder folder;
     folder.write("mistakes.toml", kMistake + "label = \"2.1\"\n");
-    const std::vector<Mistake> mistakes = loadMistakes(folder.root);
+    const std::vector<Mistake> mistakes = loadMistakes({folder.root});
     REQUIRE(mistakes.size() == 1);
     CHECK(mistakes[0].id == "fovy_not_halved");
     CHECK(mistakes[0].nameFr == "fovy non divisé par deux");
     CHECK(mistakes[0].lab == 2);
     CHECK(mistakes[0].label == "2.1");
     CHECK(mistakes[0].check == "updateViewport: the viewport of the default camera");
-    CHECK(loadMistakes(folder.root / "none").empty()); // no catalogue: no mistake to diagnose
+    CHECK(loadMistakes({folder.root / "none"}).empty()); // no catalogue: no mistake to diagnose
+}
+
+TEST_CASE("the mistakes' catalogues of two labs: one id is one mistake, the second names the first's file") {
+    const Folder first, second;
+    first.write("mistakes.toml", kMistake);
+    second.write("mistakes.toml", kMistake);
+    CHECK(loadMistakes({first.root}).size() == 1);
+    try {
+        loadMistakes({first.root, second.root});
+        FAIL("the same id in two catalogues was read");
+    } catch (const std::runtime_error& e) {
+        const std::string message = e.what();
+        CHECK_MESSAGE(message.find((second.root / "mistakes.toml").string() + ":2: [[mistake]] #1 id: \"fovy_not_halved\" is also a mistake of " +
+                                   (first.root / "mistakes.toml").string()) != std::string::npos, message);
+    }
 }
 
 TEST_CASE("the mistakes' catalogue: an unknown key, a wrong type, a NaN or a missing value names the file, line and key") {
@@ -119,7 +134,7 @@ TEST_CASE("the mistakes' catalogue: an unknown key, a wrong type, a NaN or a mis
 TEST_CASE("a reference's description: what `raylab references` writes is read back") {
     const Folder folder;
     writeReference(folder.root, statistical());
-    const ReferenceSet set = loadReferences(folder.root);
+    const ReferenceSet set = loadReferences({folder.root});
     REQUIRE(set.figures.size() == 1);
     const FigureReference& f = set.figures[0];
     CHECK(f.id == "fig");

@@ -27,7 +27,7 @@ const fs::path kSource = RAYLAB_SOURCE_DIR;
 struct Upload {
     fs::path root = fs::temp_directory_path() / ("raylab-copy-test-" + std::to_string(std::random_device{}()));
     fs::path submission = root / "submission", copy = root / "copy";
-    LabCatalog catalog = loadLabCatalog(kSource / "labs", RAYLAB_SCENES_DIR);
+    LabCatalog catalog = loadLabCatalog(kSource / "labs");
 
     Upload() {
         raylab::setLanguage(raylab::Language::En);

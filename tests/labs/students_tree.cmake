@@ -41,7 +41,7 @@ function(suite_passes passed)
       set(verdict "Passed")
     endif()
     # ctest's result line: "k/N Test #i: <name> .....   <verdict>".
-    string(REGEX MATCHALL "Test #[0-9]+: [^\n]*" results "${output}")
+    string(REGEX MATCHALL "Test +#[0-9]+: [^\n]*" results "${output}") # "Test  #1" once there are 10 tests
     set(found "")
     foreach(line IN LISTS results)
       string(FIND "${line}" "${test}" named)

@@ -1,9 +1,10 @@
-# The toy-lab test: adding a lab, function checks included, is its own folders. In a copy of the tree
-# it adds labs/lab6_toy/ (its lab.toml, one stub function, a README), its completed twin in
-# solutions/, its scene file and its grading folder framework/grader/labs/lab6_toy/ (a probe, a check,
-# its English and French messages), then builds, renders, makes lab 6's references, grades and
-# reports it as an instructor and a student would, and lists what changed under framework/: only
-# the new lab's grading folder and the references `raylab references` made.
+# The toy-lab test: adding a lab, function checks included, is its own folders and its number in the
+# course's list. In a copy of the tree it adds lab N, the next free number: labs/labN_toy/ (its
+# lab.toml, its header, one stub function, a README, its scene file), its completed twin in
+# solutions/ and its grading folder framework/grader/labs/labN_toy/ (a probe, a check, its English
+# and French messages), and N to course.toml; then builds, renders, makes lab N's references, grades
+# and reports it as an instructor and a student would, and lists what changed under framework/: only
+# the new lab's grading folder (the references `raylab references` made are in it).
 #
 #   cmake -DSTEP=<step> -DSOURCE=<tree> -DWORK=<scratch folder> -DTOY=tests/labs/toy [-DGENERATOR=Ninja]
 #         [-DCCACHE=<ccache>] -P tests/labs/toy_lab.cmake
@@ -28,18 +29,37 @@ set(bin ${build}/bin)
 set(STEP_PREFIX "toy lab")
 include(${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake)
 
-# 1. The copy of the tree (no build folders, no out/, no tests/), and the toy lab added to it.
+# N: the toy lab's number, the next after every lab of the source tree (whichever labs it has).
+file(GLOB lab_files RELATIVE ${SOURCE}/labs ${SOURCE}/labs/lab*/lab.toml)
+set(N 1)
+foreach(file IN LISTS lab_files)
+  if(file MATCHES "^lab([0-9]+)_" AND CMAKE_MATCH_1 GREATER_EQUAL N)
+    math(EXPR N "${CMAKE_MATCH_1} + 1")
+  endif()
+endforeach()
+set(id lab${N}_toy)
+
+# 1. The copy of the tree (no build folders, no out/, no tests/), and the toy lab added to it: its
+# files, lab N in them (@N@), and N in the course's list.
 function(step_copy)
   file(REMOVE_RECURSE ${WORK})
   file(MAKE_DIRECTORY ${tree})
   foreach(part framework labs solutions scenes cmake)
     file(COPY ${SOURCE}/${part} DESTINATION ${tree})
   endforeach()
-  file(COPY ${SOURCE}/CMakeLists.txt ${SOURCE}/CMakePresets.json DESTINATION ${tree})
-  file(COPY ${TOY}/lab.toml ${TOY}/README.md ${TOY}/toy_colour.cpp DESTINATION ${tree}/labs/lab6_toy)
-  file(COPY ${TOY}/solution/toy_colour.cpp DESTINATION ${tree}/solutions/lab6_toy)
-  file(COPY ${TOY}/lab6_toy.toml DESTINATION ${tree}/scenes/figures)
-  file(COPY ${TOY}/grading/ DESTINATION ${tree}/framework/grader/labs/lab6_toy)
+  file(COPY ${SOURCE}/CMakeLists.txt ${SOURCE}/CMakePresets.json ${SOURCE}/course.toml DESTINATION ${tree})
+  foreach(file lab.toml README.md toy_colour.cpp toy_colour.h)
+    configure_file(${TOY}/${file} ${tree}/labs/${id}/${file} @ONLY)
+  endforeach()
+  configure_file(${TOY}/toy.toml ${tree}/labs/${id}/scenes/${id}.toml @ONLY)
+  configure_file(${TOY}/solution/toy_colour.cpp ${tree}/solutions/${id}/toy_colour.cpp @ONLY)
+  file(COPY ${TOY}/grading/ DESTINATION ${tree}/framework/grader/labs/${id})
+  file(READ ${tree}/course.toml course)
+  string(REGEX REPLACE "\nlabs = \\[([^]\n]*)\\]" "\nlabs = [\\1, ${N}]" listed "${course}")
+  if(listed STREQUAL course)
+    message(FATAL_ERROR "toy lab: no line `labs = [...]` in course.toml to add lab ${N} to")
+  endif()
+  file(WRITE ${tree}/course.toml "${listed}")
 
   # 2. Configured to build the programs a course uses (no test suite: tests/ is not copied).
   # Without link-time optimisation: this test is about adding a lab, not its speed (quicker links).
@@ -51,10 +71,10 @@ function(step_copy)
     list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CCACHE})
   endif()
   run(output 0 ${configure})
-  expect("${output}" "lab5_antialiasing;lab6_toy" "CMake found the sixth lab")
+  expect("${output}" ";${id}" "CMake found lab ${N}")
 endfunction()
 
-# The build, a few targets at a time: the framework, the grader (lab 6's check and messages in it),
+# The build, a few targets at a time: the framework, the grader (lab ${N}'s check and messages in it),
 # the command-line tool's library, then the programs (the labs' objects and the links).
 function(step_build_framework)
   build(raylab_framework)
@@ -67,78 +87,78 @@ function(step_build_cli)
 endfunction()
 function(step_build_programs)
   build(raylab raylab-reference raylab-agents raylab-agent-reference)
-  foreach(agent raylab-agent-lab6 raylab-agent-reference raylab-agent)
+  foreach(agent raylab-agent-lab${N} raylab-agent-reference raylab-agent)
     if(NOT EXISTS ${bin}/${agent})
       message(FATAL_ERROR "toy lab: ${agent} was not built")
     endif()
   endforeach()
 endfunction()
 
-# 3. Rendered by the reference build, and lab 6's references made from it (its scene alone).
+# 3. Rendered by the reference build, and lab ${N}'s references made from it (its scene alone).
 function(step_render)
   run(output 0 ${bin}/raylab-reference figures --out ${WORK}/figures)
-  expect("${output}" "lab6_toy" "raylab-reference figures lists lab 6's figure")
-  if(NOT EXISTS ${WORK}/figures/lab6_toy.png)
-    message(FATAL_ERROR "toy lab: raylab-reference figures wrote no lab6_toy.png")
+  expect("${output}" "${id}" "raylab-reference figures lists lab ${N}'s figure")
+  if(NOT EXISTS ${WORK}/figures/${id}.png)
+    message(FATAL_ERROR "toy lab: raylab-reference figures wrote no ${id}.png")
   endif()
-  file(MAKE_DIRECTORY ${WORK}/lab6-scenes)
-  file(COPY ${tree}/scenes/figures/lab6_toy.toml DESTINATION ${WORK}/lab6-scenes)
-  run(output 0 ${bin}/raylab-reference references --scenes ${WORK}/lab6-scenes)
-  expect("${output}" "lab6_toy" "raylab references made lab 6's reference")
+  file(MAKE_DIRECTORY ${WORK}/toy-scenes)
+  file(COPY ${tree}/labs/${id}/scenes/${id}.toml DESTINATION ${WORK}/toy-scenes)
+  run(output 0 ${bin}/raylab-reference references --scenes ${WORK}/toy-scenes)
+  expect("${output}" "${id}" "raylab references made lab ${N}'s reference")
 endfunction()
 
 # 4. Graded: the reference code gets every point, the stub is told to write toyColour.
 function(step_grade)
-  run(output 0 ${bin}/raylab grade --lab 6 --agent ${bin}/raylab-agent-reference --report ${WORK}/grade-reference)
-  expect("${output}" "PASS  lab6  figure lab6_toy" "the reference's figure passes")
-  expect("${output}" "PASS  lab6  toyColour: 1 - (d + 1) / 2 for each direction d" "the reference passes lab 6's check")
-  expect("${output}" "lab 6: 7 / 7 points" "the reference gets lab 6's points")
-  run(output nonzero ${bin}/raylab grade --lab 6 --report ${WORK}/grade-student)
-  expect("${output}" "lab 6 not done yet: write toyColour" "the stub is not done yet")
-  expect("${output}" "lab 6: 0 / 7 points" "the stub gets no point")
+  run(output 0 ${bin}/raylab grade --lab ${N} --agent ${bin}/raylab-agent-reference --report ${WORK}/grade-reference)
+  expect("${output}" "PASS  lab${N}  figure ${id}" "the reference's figure passes")
+  expect("${output}" "PASS  lab${N}  toyColour: 1 - (d + 1) / 2 for each direction d" "the reference passes lab ${N}'s check")
+  expect("${output}" "lab ${N}: 7 / 7 points" "the reference gets lab ${N}'s points")
+  run(output nonzero ${bin}/raylab grade --lab ${N} --report ${WORK}/grade-student)
+  expect("${output}" "lab ${N} not done yet: write toyColour" "the stub is not done yet")
+  expect("${output}" "lab ${N}: 0 / 7 points" "the stub gets no point")
 endfunction()
 
 # 5. Reported: the lab's section with its title, handout number and caption, from its lab.toml.
 function(step_report)
   run(output 0 ${bin}/raylab report --impl reference --out ${WORK}/report-reference)
   file(READ ${WORK}/report-reference/report.md report)
-  expect("${report}" "## Lab 6: A toy lab" "the report has lab 6's section")
-  expect("${report}" "### Figure 7 (lab6_toy)" "the report numbers lab 6's figure")
-  expect("${report}" "1 - (d + 1) / 2" "the report shows lab 6's caption")
-  expect("${report}" "![lab6_toy](figures/lab6_toy.png)" "the report shows lab 6's picture")
+  expect("${report}" "## Lab ${N}: A toy lab" "the report has lab ${N}'s section")
+  expect("${report}" "### Figure T (${id})" "the report numbers lab ${N}'s figure")
+  expect("${report}" "1 - (d + 1) / 2" "the report shows lab ${N}'s caption")
+  expect("${report}" "![${id}](figures/${id}.png)" "the report shows lab ${N}'s picture")
   run(output 0 ${bin}/raylab report --lang fr --out ${WORK}/report-student)
   file(READ ${WORK}/report-student/report.md report)
-  expect("${report}" "## TP 6 : Un TP jouet" "the French report has lab 6's section")
-  # The student build's labs are all stubs: lab 6's figure waits for lab 2's camera first.
-  string(FIND "${report}" "## TP 6 : Un TP jouet" section)
+  expect("${report}" "## TP ${N} : Un TP jouet" "the French report has lab ${N}'s section")
+  # The student build's labs are all stubs: lab ${N}'s figure waits for lab 2's camera first.
+  string(FIND "${report}" "## TP ${N} : Un TP jouet" section)
   string(SUBSTRING "${report}" ${section} -1 section)
-  expect("${section}" "La direction d de chaque rayon primaire" "the French report shows lab 6's French caption")
-  expect("${section}" "TP 6 : écrivez toyColour dans labs/lab6_toy/ ; cette figure attend d'abord le TP 2 : écrivez PerspectiveCamera::updateViewport"
-         "the student's French report names lab 6's function and the earlier lab it waits for")
+  expect("${section}" "La direction d de chaque rayon primaire" "the French report shows lab ${N}'s French caption")
+  expect("${section}" "TP ${N} : écrivez toyColour dans labs/${id}/ ; cette figure attend d'abord le TP 2 : écrivez PerspectiveCamera::updateViewport"
+         "the student's French report names lab ${N}'s function and the earlier lab it waits for")
 endfunction()
 
-# 5b. The student writes lab 6 after the build: `raylab grade` and `raylab lab` rebuild first, and
+# 5b. The student writes lab N after the build: `raylab grade` and `raylab lab` rebuild first, and
 # grade and draw the code as it is now (written anew, so that it is newer than the build).
 function(step_written_after_build)
   file(READ ${TOY}/solution/toy_colour.cpp written)
-  file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}")
+  file(WRITE ${tree}/labs/${id}/toy_colour.cpp "${written}")
   run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-written)
-  expect("${output}" "labs/lab6_toy/toy_colour.cpp changed since the last build: rebuilding first" "raylab grade rebuilds")
-  expect("${output}" "lab 6: 7 / 7 points" "the grade follows the code written after the build")
+  expect("${output}" "labs/${id}/toy_colour.cpp changed since the last build: rebuilding first" "raylab grade rebuilds")
+  expect("${output}" "lab ${N}: 7 / 7 points" "the grade follows the code written after the build")
 endfunction()
 
 # A lab that does not compile: `raylab grade` grades labs/ as a submission, in a build folder of its
 # own (out/grade-build, from nothing: the longest step).
 function(step_does_not_compile)
   file(READ ${TOY}/solution/toy_colour.cpp written)
-  file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}\nint unfinished(\n")
+  file(WRITE ${tree}/labs/${id}/toy_colour.cpp "${written}\nint unfinished(\n")
   # Its build folder beside build/ (not out/grade-build, the default): the same relative paths, so
   # that the compiler cache (CMAKE_CXX_COMPILER_LAUNCHER in the environment) finds the tree's objects.
   run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-broken --build-dir ${tree}/grade-build)
   expect("${output}" "grading labs/ as a submission" "a build that fails is graded as a submission")
-  expect("${output}" "lab 6: 0 / 7 points" "lab 6 that does not compile gets no point")
+  expect("${output}" "lab ${N}: 0 / 7 points" "lab ${N} that does not compile gets no point")
   expect("${output}" "lab 1: 0 / 10 points" "the other labs are graded (lab 1 is a stub)")
-  file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${written}")
+  file(WRITE ${tree}/labs/${id}/toy_colour.cpp "${written}")
 endfunction()
 
 function(step_lab_rebuilds)
@@ -151,7 +171,7 @@ function(step_lab_rebuilds)
   endif()
   # A lab function that crashes costs its figure only: the command names the lab and the function,
   # draws the other figures and exits with an error status, not a signal.
-  file(WRITE ${tree}/labs/lab1_first_image/gradient.cpp "#include \"raylab/gradient.h\"\nnamespace raylab {\nvoid fillGradient(Texture&) { *static_cast<volatile int*>(nullptr) = 1; }\n}\n")
+  file(WRITE ${tree}/labs/lab1_first_image/gradient.cpp "#include \"gradient.h\"\nnamespace raylab {\nvoid fillGradient(Texture&) { *static_cast<volatile int*>(nullptr) = 1; }\n}\n")
   run(output 1 ${bin}/raylab figures --out ${WORK}/figures-crash)
   expect("${output}" "lab 1: fillGradient in labs/lab1_first_image/ crashed (" "the crash names lab 1 and fillGradient")
   expect("${output}" "lab2_directions" "the figures after the crash are still drawn")
@@ -164,25 +184,25 @@ function(step_hints)
   if(wrong STREQUAL written)
     message(FATAL_ERROR "toy lab: the solution's formula was not found to make a wrong one")
   endif()
-  file(WRITE ${tree}/labs/lab6_toy/toy_colour.cpp "${wrong}")
-  run(output nonzero ${bin}/raylab grade --lab 6 --report ${WORK}/grade-wrong)
+  file(WRITE ${tree}/labs/${id}/toy_colour.cpp "${wrong}")
+  run(output nonzero ${bin}/raylab grade --lab ${N} --report ${WORK}/grade-wrong)
   expect("${output}" "toyColour returns 1 - (d + 1) / 2: the direction's colour, inverted" "the check's English hint")
-  run(output nonzero ${bin}/raylab grade --lab 6 --lang fr --report ${WORK}/grade-wrong-fr)
+  run(output nonzero ${bin}/raylab grade --lab ${N} --lang fr --report ${WORK}/grade-wrong-fr)
   expect("${output}" "toyColour renvoie 1 - (d + 1) / 2" "the check's French hint")
   expect("${output}" "1 - (d + 1) / 2 pour chaque direction d" "the check's French title")
   # The instructor rewords the hint in the grading folder: `raylab grade` rebuilds the grader first.
-  set(messages ${tree}/framework/grader/labs/lab6_toy/messages.en.toml)
+  set(messages ${tree}/framework/grader/labs/${id}/messages.en.toml)
   file(READ ${messages} hints)
   string(REPLACE "the direction's colour, inverted" "the direction's colour, upside down" reworded "${hints}")
   file(WRITE ${messages} "${reworded}")
-  run(output nonzero ${bin}/raylab grade --lab 6 --report ${WORK}/grade-reworded)
-  expect("${output}" "framework/grader/labs/lab6_toy/messages.en.toml changed since the last build: rebuilding first"
+  run(output nonzero ${bin}/raylab grade --lab ${N} --report ${WORK}/grade-reworded)
+  expect("${output}" "framework/grader/labs/${id}/messages.en.toml changed since the last build: rebuilding first"
          "raylab grade rebuilds when the lab's grading folder changed")
   expect("${output}" "toyColour returns 1 - (d + 1) / 2: the direction's colour, upside down" "the reworded hint")
   file(WRITE ${messages} "${hints}")
 endfunction()
 
-# 6. What adding the lab changed under framework/, listed: files added in lab 6's grading folder and
+# 6. What adding the lab changed under framework/, listed: files added in lab ${N}'s grading folder and
 # the references `raylab references` made for it, nothing else added, changed or removed.
 function(step_framework_unchanged)
   file(GLOB_RECURSE sources RELATIVE ${SOURCE}/framework ${SOURCE}/framework/*)
@@ -202,21 +222,20 @@ function(step_framework_unchanged)
     endif()
   endforeach()
   string(REPLACE ";" "\n    " listed "${added}")
-  message(STATUS "toy lab: framework/ files added by lab 6:\n    ${listed}")
+  message(STATUS "toy lab: framework/ files added by lab ${N}:\n    ${listed}")
   set(outside ${added})
-  list(FILTER outside EXCLUDE REGEX "^grader/labs/lab6_toy/[^/]+$")
-  list(FILTER outside EXCLUDE REGEX "^grader/data/references/lab6_toy\\.")
+  list(FILTER outside EXCLUDE REGEX "^grader/labs/${id}/")
   if(changed OR removed OR outside)
-    message(FATAL_ERROR "toy lab: adding lab 6 changed framework/ outside its grading folder: changed [${changed}], "
+    message(FATAL_ERROR "toy lab: adding lab ${N} changed framework/ outside its grading folder: changed [${changed}], "
                         "removed [${removed}], added [${outside}]")
   endif()
   foreach(file checks.cpp probes.cpp probes.h messages.en.toml messages.fr.toml)
-    list(FIND added grader/labs/lab6_toy/${file} at) # (a script has no IN_LIST without a policy)
+    list(FIND added grader/labs/${id}/${file} at) # (a script has no IN_LIST without a policy)
     if(at EQUAL -1)
-      message(FATAL_ERROR "toy lab: lab 6's grading folder has no ${file}")
+      message(FATAL_ERROR "toy lab: lab ${N}'s grading folder has no ${file}")
     endif()
   endforeach()
-  message(STATUS "toy lab: lab 6 built, rendered, graded and reported; framework/ changed only in lab 6's grading folder")
+  message(STATUS "toy lab: lab ${N} built, rendered, graded and reported; framework/ changed only in lab ${N}'s grading folder")
 endfunction()
 
 run_step()

@@ -4,7 +4,7 @@
 #include "numerics_support.h"
 
 #include "src/figure.h"
-#include "raylab/gradient.h"
+#include "gradient.h"
 #include "raylab/image_io.h"
 #include "raylab/perspective_camera.h"
 

@@ -22,7 +22,7 @@ namespace {
 const AntialiasingResult& quickStudy() {
     static const AntialiasingResult result = [] {
         AntialiasingOptions o;
-        o.scene = std::filesystem::path(RAYLAB_SOURCE_DIR) / "scenes/figures/lab5_antialiased.toml";
+        o.scene = std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs/lab5_antialiasing/scenes/lab5_antialiased.toml";
         o.thinObjects = std::filesystem::path(RAYLAB_SOURCE_DIR) / "scenes/study/adaptive_thin_objects.toml";
         o.out = std::filesystem::path(RAYLAB_BINARY_DIR) / "study-quick";
         o.quick = true;

@@ -1,5 +1,6 @@
 // The yardstick of `raylab bench` draws the reference labs' image of lab 5's scene bit for bit, so
 // that the bench compares the same work (docs/performance.md).
+#include "support/scene_files.h"
 #include "yardstick.h"
 
 #include "src/figure.h"
@@ -13,7 +14,7 @@ using namespace raylab;
 TEST_SUITE("yardstick") {
 
 TEST_CASE("the yardstick's pixels are the reference labs' bytes at 1, 4 and 64 samples") {
-    SceneDescription d = loadSceneFile(std::filesystem::path(RAYLAB_SCENES_DIR) / "lab5_antialiased.toml");
+    SceneDescription d = loadSceneFile(raylab::test::figureSceneFile("lab5_antialiased"));
     d.width = 48; // small, but the sphere's edge still crosses many pixels
     d.height = 32;
     for (int samples : {1, 4, 64}) {
@@ -29,7 +30,7 @@ TEST_CASE("the yardstick's pixels are the reference labs' bytes at 1, 4 and 64 s
 }
 
 TEST_CASE("the yardstick refuses a scene it does not draw") {
-    SceneDescription d = loadSceneFile(std::filesystem::path(RAYLAB_SCENES_DIR) / "lab5_antialiased.toml");
+    SceneDescription d = loadSceneFile(raylab::test::figureSceneFile("lab5_antialiased"));
     d.sampler = SamplerKind::Stratified;
     CHECK_THROWS_AS(study::renderYardstick(d), std::invalid_argument);
 }

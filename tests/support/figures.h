@@ -2,6 +2,7 @@
 // Helpers for tests that render the course's figures.
 
 #include "src/figure.h"
+#include "support/scene_files.h"
 #include "raylab/image_io.h"
 
 #include <doctest/doctest.h>
@@ -11,7 +12,7 @@
 namespace raylab::test {
 
 inline SceneDescription figureScene(const std::string& id) {
-    return loadSceneFile(std::filesystem::path(RAYLAB_SCENES_DIR) / (id + ".toml"));
+    return loadSceneFile(figureSceneFile(id));
 }
 
 // Renders a figure and fails the test unless it rendered.

@@ -1,6 +1,7 @@
 // The message catalogues (framework/messages/en.toml, fr.toml): the same ids and placeholders in
 // both languages, French typography, numbers written each language's way, the language chosen from
 // the environment.
+#include "support/scene_files.h"
 #include "grader/judge/checks/checks.h"
 #include "grader/lab_catalog.h"
 #include "src/messages.h"
@@ -130,8 +131,7 @@ TEST_SUITE("messages") {
     }
 
     TEST_CASE("every function check has a French title, and English shows its name") {
-        const std::filesystem::path scenes = RAYLAB_SCENES_DIR;
-        const grader::LabCatalog labs = grader::loadLabCatalog(scenes.parent_path().parent_path() / "labs", scenes);
+        const grader::LabCatalog labs = grader::loadLabCatalog(test::kLabsDir);
         for (const grader::FunctionCheck& check : grader::functionChecks(labs, 1)) {
             CHECK(messageCatalogue(Language::Fr).count(std::string(kCheckTitles) + check.name) == 1);
             const LanguageScope english(Language::En);
@@ -140,8 +140,7 @@ TEST_SUITE("messages") {
     }
 
     TEST_CASE("a lab function named in words has a French title, and not-done-yet says it in French") {
-        const std::filesystem::path scenes = RAYLAB_SCENES_DIR;
-        const grader::LabCatalog labs = grader::loadLabCatalog(scenes.parent_path().parent_path() / "labs", scenes);
+        const grader::LabCatalog labs = grader::loadLabCatalog(test::kLabsDir);
         int named = 0;
         for (const grader::LabDescription& lab : labs.labs)
             for (const grader::LabFunction& function : lab.functions) {

@@ -26,8 +26,7 @@ json inspect(const std::string& program, const std::string& figure, int x, int y
     raylab::watch::WatchSettings settings;
     settings.binDir = bin;
     settings.out = bin / "out";
-    settings.scenes = fs::path(RAYLAB_SOURCE_DIR) / "scenes" / "figures";
-    const raylab::grader::LabCatalog labs = raylab::grader::loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs", settings.scenes);
+    const raylab::grader::LabCatalog labs = raylab::grader::loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs"); // each lab's scenes
     std::mutex agents;
     const raylab::watch::PixelInspector inspector(settings, labs, agents);
     return json::parse(inspector.inspect(figure, x, y));

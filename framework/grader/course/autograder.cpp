@@ -193,7 +193,7 @@ find "$tree/solutions" -name '*.cpp' -delete
 cmake -S "$tree" -B "$tree/build" "${options[@]}"
 cmake --build "$tree/build" -j "$jobs"
 # Without bubblewrap the students' code sees every world-readable file: not these (root still reads them).
-chmod -R go-rwx "$tree/solutions" "$tree/framework/grader/data/references"
+chmod -R go-rwx "$tree/solutions" "$tree"/framework/grader/labs/*/references
 find "$tree/build" -type d -name 'raylab_lab*_solutions.dir' -exec chmod -R go-rwx {} +
 )script";
 }

@@ -226,13 +226,13 @@ public:
                 problem = "cannot take the lock " + printablePath(file) + ": " + std::strerror(errno);
                 return false;
             }
-            const std::string holder = "another grade-class run (" + holderPid() + ") is grading into " + printablePath(out) +
-                                       " (lock: " + printablePath(file) + ")";
+            const std::string holder =
+                tr("grade.class_lock_held", {{"pid", holderPid()}, {"out", printablePath(out)}, {"lock", printablePath(file)}});
             if (!wait) {
-                problem = holder + "; wait for it to finish, or add --wait";
+                problem = tr("grade.class_lock_no_wait", {{"holder", holder}});
                 return false;
             }
-            std::printf("waiting: %s ...\n", holder.c_str());
+            std::printf("%s\n", tr("grade.class_waiting", {{"holder", holder}}).c_str());
             std::fflush(stdout);
             while (::flock(m_fd, LOCK_EX) != 0)
                 if (errno != EINTR || g_stopSignal != 0) {
@@ -478,17 +478,17 @@ std::map<std::string, StudentRecord> takeMadeOtherwise(std::map<std::string, Stu
 int endOfRun(const fs::path& out, const std::vector<std::string>& unfinished) {
     std::fflush(stdout);
     if (g_stopSignal != 0) {
-        std::printf("stopped by %s; %s holds every student graded so far: run the same command again to resume\n",
-                    signalName(g_stopSignal), printablePath(out / "grades.csv").c_str());
+        std::printf("%s\n", tr("grade.class_stopped", {{"signal", signalName(g_stopSignal)},
+                                                        {"grades", printablePath(out / "grades.csv")}}).c_str());
         std::fflush(stdout);
         return 128 + g_stopSignal;
     }
-    std::printf("grades: %s, reports: %s/<student>/report/index.html\n", printablePath(out / "grades.csv").c_str(),
-                printablePath(studentsFolder(out)).c_str());
+    std::printf("%s\n", tr("grade.class_outputs", {{"grades", printablePath(out / "grades.csv")},
+                                                    {"students", printablePath(studentsFolder(out))}}).c_str());
     if (unfinished.empty()) return 0;
     std::string names;
     for (const std::string& n : unfinished) names += (names.empty() ? "" : ", ") + n;
-    std::printf("not graded (run again to retry): %s\n", names.c_str());
+    std::printf("%s\n", tr("grade.class_unfinished", {{"names", names}}).c_str());
     return 1;
 }
 
@@ -519,7 +519,8 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
             const std::string shown = printableName(work.name);
             const std::string safe = work.folder.filename().string();
             if (ledger.count(safe)) {
-                std::printf("%-20s already graded (%s)\n", shown.c_str(), printablePath(work.folder / kResultFile).c_str());
+                std::printf("%-20s %s\n", shown.c_str(),
+                            tr("grade.class_already_graded", {{"result", printablePath(work.folder / kResultFile)}}).c_str());
                 continue;
             }
             if (const auto old = madeOtherwise.find(safe); old != madeOtherwise.end())
@@ -537,7 +538,7 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
             fs::create_directories(work.folder);
             const Outcome outcome = gradeInOwnProcess(work, grade, options.madeBy, runOnly, why);
             if (outcome == Outcome::Stopped) {
-                std::printf("%-20s interrupted: not graded (the next run grades them)\n", shown.c_str());
+                std::printf("%-20s %s\n", shown.c_str(), tr("grade.class_interrupted").c_str());
                 break;
             }
             if (outcome == Outcome::DiskFull) {
@@ -547,7 +548,8 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
             std::optional<StudentRecord> record;
             if (outcome == Outcome::Graded) record = readRecord(work.folder / kResultFile);
             if (!record) {
-                std::printf("%-20s not graded: %s\n", shown.c_str(), why.empty() ? "no result was written" : why.c_str());
+                std::printf("%-20s %s\n", shown.c_str(),
+                            tr("grade.class_not_graded", {{"why", why.empty() ? tr("grade.class_no_result") : why}}).c_str());
                 unfinished.push_back(shown);
                 continue;
             }

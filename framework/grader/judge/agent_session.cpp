@@ -36,7 +36,7 @@ std::map<std::uint64_t, Item*> byId(std::vector<Item>& items) {
 
 protocol::Request requestFor(const GradeSetup& setup, const Item& item) {
     if (item.check) return protocol::CheckRequest{item.id, item.check->calls, item.check->lab};
-    return protocol::RenderRequest{item.id, fs::absolute(setup.scenes / (item.figure->id + ".toml")).string(), setup.seed,
+    return protocol::RenderRequest{item.id, fs::absolute(sceneFile(setup, item.figure->id)).string(), setup.seed,
                                    setup.threads, item.figure->lab};
 }
 
@@ -117,7 +117,7 @@ Reported runUntilDone(const GradeSetup& setup, const AgentPlan& plan, bool withC
         limits.totalSeconds = std::min(limits.totalSeconds, budget - spent[batch.lab]);
         const auto start = std::chrono::steady_clock::now();
         const AgentRun run = runAgent(
-            {plan.program, {}, scratch / ("run" + std::to_string(attempt)), {setup.scenes}, {}, batch.requests}, limits);
+            {plan.program, {}, scratch / ("run" + std::to_string(attempt)), sceneFolders(setup), {}, batch.requests}, limits);
         spent[batch.lab] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (const std::string why = settleRun(plan, run, batch, index, ledger, reported); !why.empty()) {
             for (Item& item : items)

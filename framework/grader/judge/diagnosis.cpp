@@ -46,20 +46,24 @@ Mistake readMistake(const TomlReader& r, const toml::table& m, const std::string
     return mistake;
 }
 
-} // namespace
-
-std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
-    std::vector<Mistake> mistakes;
+// One folder's catalogue, appended to `mistakes`.
+void loadCatalogue(const fs::path& referenceFolder, std::vector<Mistake>& mistakes) {
     const fs::path file = referenceFolder / "mistakes.toml";
     std::error_code error;
-    if (!fs::exists(file, error)) return mistakes;
+    if (!fs::exists(file, error)) return;
     const toml::table root = parseTomlFile(file);
     const TomlReader r(file);
     r.onlyKeys(root, "", {"mistake"});
     const std::vector<const toml::table*> list = r.tables(root, "mistake");
     if (list.empty()) r.fail(nullptr, "[[mistake]]", tr("toml.missing"));
     for (std::size_t k = 0; k < list.size(); ++k) {
-        Mistake mistake = readMistake(r, *list[k], "[[mistake]] #" + std::to_string(k + 1) + " ");
+        const std::string where = "[[mistake]] #" + std::to_string(k + 1) + " ";
+        Mistake mistake = readMistake(r, *list[k], where);
+        for (const Mistake& other : mistakes)
+            if (other.id == mistake.id)
+                r.fail(list[k]->get("id"), where + "id",
+                       tr("toml.mistake_twice", {{"id", mistake.id}, {"file", (other.folder / "mistakes.toml").string()}}));
+        mistake.folder = referenceFolder;
         const fs::path folder = referenceFolder / "mistakes" / mistake.id;
         if (fs::is_directory(folder, error))
             for (const auto& entry : fs::directory_iterator(folder))
@@ -67,6 +71,13 @@ std::vector<Mistake> loadMistakes(const fs::path& referenceFolder) {
                     mistake.signatures.emplace_back(entry.path().stem().string(), readImage(entry.path()));
         mistakes.push_back(std::move(mistake));
     }
+}
+
+} // namespace
+
+std::vector<Mistake> loadMistakes(const std::vector<fs::path>& referenceFolders) {
+    std::vector<Mistake> mistakes;
+    for (const fs::path& folder : referenceFolders) loadCatalogue(folder, mistakes);
     return mistakes;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// The catalogue of classic mistakes (framework/grader/data/references/mistakes.toml) and their signatures: each
-// mistake's rendering of the figures it changes, a quarter of the size
-// (framework/grader/data/references/mistakes/<mistake>/<figure>.png). A failing image is matched against them.
+// The catalogue of classic mistakes, each lab's in its grading folder (framework/grader/labs/<lab>/references/
+// mistakes.toml), and their signatures: each mistake's rendering of the figures it changes, a quarter
+// of the size (references/mistakes/<mistake>/<figure>.png beside it). A failing image is matched against them.
 
 #include "raylab/image_io.h"
 
@@ -18,7 +18,7 @@ namespace raylab::grader {
 inline constexpr int kSignatureScale = 4; // signatures are averaged over 4 x 4 pixel blocks
 
 struct Mistake {
-    std::string id;    // its patch tests/mistakes/<id>.patch, its folder in framework/grader/data/references/mistakes/
+    std::string id;    // its patch framework/grader/labs/<lab>/mistakes/<id>.patch, its signatures' references/mistakes/<id>/
     std::string nameEn, nameFr; // "fovy not halved", "fovy non divisé par deux"
     std::string hintEn, hintFr; // "use tan(fovy / 2): fovy is the full angle"
     std::string label; // its number in the handouts, "2.1": M2.1 in English, E2.1 in French; may be empty
@@ -26,6 +26,7 @@ struct Mistake {
     std::string function; // where in that lab: "PerspectiveCamera::updateViewport (perspective_camera.cpp)"
     std::string check;    // the function check expected to catch it ("updateViewport: ...")
     std::vector<std::pair<std::string, Image8>> signatures; // figure id, signature
+    std::filesystem::path folder; // the reference folder whose mistakes.toml lists it
     // In the current language (raylab/messages.h).
     const std::string& name() const;
     const std::string& hint() const;
@@ -41,8 +42,9 @@ struct Diagnosis {
     std::string text() const; // "your image matches 'fovy not halved' (lab 2, updateViewport): use tan(fovy / 2) ..."
 };
 
-// Reads the catalogue and every signature present; a missing signature folder leaves it empty.
-std::vector<Mistake> loadMistakes(const std::filesystem::path& referenceFolder);
+// Reads the catalogues (mistakes.toml of each reference folder that has one) and every signature
+// present; a missing signature folder leaves it empty. Throws when two mistakes have one id.
+std::vector<Mistake> loadMistakes(const std::vector<std::filesystem::path>& referenceFolders);
 
 // Averages kSignatureScale x kSignatureScale blocks (an image that does not divide keeps its
 // whole blocks only).

@@ -226,7 +226,19 @@ bool GradeResult::allPassed() const {
            std::all_of(figures.begin(), figures.end(), [](const auto& f) { return f.passed || !f.found; });
 }
 
-GradeSetup loadGradeSetup(const fs::path& references, const fs::path& labs, const fs::path& scenes,
+fs::path sceneFile(const GradeSetup& setup, const std::string& figure) {
+    if (!setup.scenes.empty()) return setup.scenes / (figure + ".toml");
+    const LabFigure* f = setup.labs.figure(figure);
+    if (f == nullptr) throw std::logic_error("no lab lists the figure " + figure);
+    return f->scene;
+}
+
+std::vector<fs::path> sceneFolders(const GradeSetup& setup) {
+    if (!setup.scenes.empty()) return {setup.scenes};
+    return sceneFolders(setup.labs);
+}
+
+GradeSetup loadGradeSetup(const std::vector<fs::path>& references, const fs::path& labs, const fs::path& scenes,
                           const fs::path& scratch) {
     GradeSetup setup;
     setup.references = loadReferences(references);
@@ -235,7 +247,7 @@ GradeSetup loadGradeSetup(const fs::path& references, const fs::path& labs, cons
     functionChecks(setup.labs, 0); // the checks of the code are those of lab.toml, or it throws naming both places
     for (const Mistake& m : setup.mistakes) // any number of labs: a mistake's lab is one that lab.toml describes
         if (setup.labs.lab(m.lab) == nullptr)
-            throw std::runtime_error((references / "mistakes.toml").string() + ": mistake '" + m.id + "' is of lab " +
+            throw std::runtime_error((m.folder / "mistakes.toml").string() + ": mistake '" + m.id + "' is of lab " +
                                      std::to_string(m.lab) + ", which no labs/*/lab.toml describes");
     setup.scenes = scenes;
     setup.scratch = scratch;

@@ -25,7 +25,7 @@ struct GradeSetup {
     ReferenceSet references;
     std::vector<Mistake> mistakes;
     LabCatalog labs;               // the labs' descriptions: their items, points and dependencies
-    std::filesystem::path scenes;  // the figure scene files, for the agents
+    std::filesystem::path scenes;  // a folder of the figure scene files; empty: the catalogue's (labs/<lab>/scenes/)
     std::filesystem::path scratch; // a folder of our own: agents run and write here
     SandboxLimits limits;
     TimeBudget budget; // each lab's wall-clock time in all (limits.wallSeconds stays each item's)
@@ -33,8 +33,13 @@ struct GradeSetup {
     long long seed = -1; // >= 0: the agents render with this seed instead of the scenes' own
 };
 
-// `labs`: the folder of the lab descriptions (labs/<lab>/lab.toml); `scenes`: the figures' scene files.
-GradeSetup loadGradeSetup(const std::filesystem::path& references, const std::filesystem::path& labs,
+// The scene file of a figure, and the folders an agent reads them from.
+std::filesystem::path sceneFile(const GradeSetup& setup, const std::string& figure);
+std::vector<std::filesystem::path> sceneFolders(const GradeSetup& setup);
+
+// `references`: the reference folders (each lab's, gradingFolders); `labs`: the folder of the lab
+// descriptions (labs/<lab>/lab.toml); `scenes`: a folder of the figures' scene files, or empty for each lab's own.
+GradeSetup loadGradeSetup(const std::vector<std::filesystem::path>& references, const std::filesystem::path& labs,
                           const std::filesystem::path& scenes, const std::filesystem::path& scratch);
 
 struct AgentPlan {

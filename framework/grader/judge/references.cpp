@@ -101,20 +101,22 @@ FigureReference readReference(const fs::path& folder, const fs::path& file) {
 
 } // namespace
 
-ReferenceSet loadReferences(const fs::path& folder) {
+ReferenceSet loadReferences(const std::vector<fs::path>& folders) {
     ReferenceSet set;
-    set.folder = folder;
-    std::error_code error;
-    if (!fs::is_directory(folder, error))
-        throw std::runtime_error("no reference folder " + folder.string() + " (made by `raylab references`)");
-    for (const auto& entry : fs::directory_iterator(folder)) {
-        const fs::path file = entry.path();
-        if (file.extension() != ".toml" || file.filename() == "mistakes.toml") continue;
-        set.figures.push_back(readReference(folder, file));
+    std::string names;
+    for (const fs::path& folder : folders) {
+        names += (names.empty() ? "" : ", ") + folder.string();
+        std::error_code error;
+        if (!fs::is_directory(folder, error)) continue; // a lab with no figure yet
+        for (const auto& entry : fs::directory_iterator(folder)) {
+            const fs::path file = entry.path();
+            if (file.extension() != ".toml" || file.filename() == "mistakes.toml") continue;
+            set.figures.push_back(readReference(folder, file));
+        }
     }
     std::sort(set.figures.begin(), set.figures.end(),
               [](const auto& a, const auto& b) { return std::tie(a.lab, a.id) < std::tie(b.lab, b.id); });
-    if (set.figures.empty()) throw std::runtime_error("no reference in " + folder.string() + " (made by `raylab references`)");
+    if (set.figures.empty()) throw std::runtime_error("no reference in " + names + " (made by `raylab references`)");
     return set;
 }
 

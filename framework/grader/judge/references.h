@@ -1,6 +1,6 @@
 #pragma once
-// The reference outputs the grader compares against (framework/grader/data/references/), made by
-// `raylab references` from solutions/, so grading never needs solutions/.
+// The reference outputs the grader compares against, made by `raylab references` from solutions/, so
+// grading never needs solutions/: each lab's in its grading folder, framework/grader/labs/<lab>/references/.
 //
 //   <id>.png   the reference picture (8-bit, as the student's)
 //   <id>.toml  its lab, its kind, the time the reference took to render it (render_milliseconds,
@@ -43,14 +43,14 @@ struct FigureReference {
 };
 
 struct ReferenceSet {
-    std::filesystem::path folder;
     std::vector<FigureReference> figures; // in the order of their lab, then id
 
     const FigureReference* find(const std::string& id) const;
 };
 
-// Reads every <id>.toml of the folder; throws std::runtime_error naming the file and the problem.
-ReferenceSet loadReferences(const std::filesystem::path& folder);
+// Reads every <id>.toml of the folders (each lab's); throws std::runtime_error naming the file and the
+// problem, or when they hold no reference at all.
+ReferenceSet loadReferences(const std::vector<std::filesystem::path>& folders);
 
 // Writes one figure's reference files into the folder; a file whose content did not change is left
 // byte for byte (writePngIfChanged), so that a regeneration shows only what it changed.

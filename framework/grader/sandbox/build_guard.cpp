@@ -1,7 +1,7 @@
 // raylab-build-guard: the compiler launcher of a submission's lab files (POSIX; see
 // framework/grader/CMakeLists.txt). A submission is code we compile before any sandbox runs it, so
 // the compiler is where it can reach what it must not:
-//  - `#include "raylab/../../../solutions/lab3_sphere/sphere_geometry.cpp"`, `#embed` or the
+//  - `#include "raylab/../../../solutions/<lab>/<file>.cpp"`, `#embed` or the
 //    assembler's `.incbin` of a solution (or a classmate's file) would grade the reference as the
 //    student's work, or throw its bytes into the report: on Linux with bubblewrap the compiler runs
 //    confined (confined_compile.h), seeing only the allowed folders (the submission, the stubs, the

@@ -18,7 +18,6 @@ public:
     int height() const { return m_height; }
 
     // Throws std::out_of_range naming (i, j) and the size when the pixel is outside the image.
-    // Inline: the renderer sets every pixel; the message is built out of line, only when thrown.
     void setPixel(int i, int j, const Color& color) {
         if (i < 0 || i >= m_width || j < 0 || j >= m_height) throwOutside(i, j);
         m_pixels[std::size_t(j) * std::size_t(m_width) + std::size_t(i)] = color;
@@ -28,9 +27,8 @@ public:
     const std::vector<Color>& pixels() const { return m_pixels; }
 
 private:
-    // The renderer's loops set pixels inside the image by construction (its tiles): no check, which
-    // costs 18 instructions a pixel of lab 5's loop (docs/performance.md).
-    friend class Renderer;
+    friend class Renderer; // its tiles are inside the image: it writes without the check
+
     void setPixelInside(int i, int j, const Color& color) {
         m_pixels[std::size_t(j) * std::size_t(m_width) + std::size_t(i)] = color;
     }

@@ -1,13 +1,13 @@
-// Lab 6 (a toy): each primary ray coloured by its direction, inverted. The integrator that draws
+// Lab @N@ (a toy): each primary ray coloured by its direction, inverted. The integrator that draws
 // the figure is registered here, under the name its scene file's [render] shading gives.
 #include "raylab/integrator_registry.h"
+#include "toy_colour.h"
 #include "raylab/todo.h"
 
 namespace raylab {
 
-// The colour of a ray of direction d: 1 - (d + 1) / 2.
 Color toyColour(const Ray& ray) {
-    RAYLAB_TODO("lab 6", "toyColour");
+    RAYLAB_TODO("lab @N@", "toyColour");
 }
 
 namespace {

@@ -116,5 +116,6 @@ void appendInputs(std::vector<double>& inputs, const glm::dvec3& v);
 
 } // namespace raylab::grader
 
-// At namespace scope in a lab's checks.cpp: RAYLAB_REGISTER_CHECKS("lab1_first_image", addChecks);
-#define RAYLAB_REGISTER_CHECKS(labId, maker) RAYLAB_REGISTRAR(::raylab::grader::ChecksRegistrar)((labId), (maker))
+// At namespace scope in a lab's checks.cpp: RAYLAB_REGISTER_CHECKS(addChecks). The lab is the grading
+// folder's: CMake defines RAYLAB_LAB_ID, its folder's name, for the files of each grading folder.
+#define RAYLAB_REGISTER_CHECKS(maker) RAYLAB_REGISTRAR(::raylab::grader::ChecksRegistrar)(RAYLAB_LAB_ID, (maker))

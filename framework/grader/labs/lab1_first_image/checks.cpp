@@ -107,6 +107,6 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
 
 } // namespace
 
-RAYLAB_REGISTER_CHECKS("lab1_first_image", addChecks);
+RAYLAB_REGISTER_CHECKS(addChecks);
 
 } // namespace raylab::grader

@@ -1,5 +1,5 @@
 // Lab 1's function as the crash finder calls it (src/figure_steps.h): the gradient, the whole image at once.
-#include "raylab/gradient.h"
+#include "gradient.h"
 #include "src/figure_steps.h"
 
 namespace raylab {
@@ -14,6 +14,6 @@ void gradient(FigureStepContext& c) {
 
 } // namespace
 
-RAYLAB_REGISTER_FIGURE_STEP("lab1_first_image", "fillGradient", FigureStage::Setup, gradient);
+RAYLAB_REGISTER_FIGURE_STEP("fillGradient", FigureStage::Setup, gradient);
 
 } // namespace raylab

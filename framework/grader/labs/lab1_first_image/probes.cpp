@@ -2,7 +2,7 @@
 #include "grader/protocol/agent/probes.h"
 #include "probes.h"
 
-#include "raylab/gradient.h"
+#include "gradient.h"
 
 namespace raylab::agent {
 

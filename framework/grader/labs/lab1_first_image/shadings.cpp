@@ -1,5 +1,5 @@
 // Lab 1's picture, by the name its scene file's [render] shading gives: the gradient, drawn without rays.
-#include "raylab/gradient.h"
+#include "gradient.h"
 #include "raylab/integrator_registry.h"
 
 namespace raylab {

@@ -226,6 +226,6 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
 
 } // namespace
 
-RAYLAB_REGISTER_CHECKS("lab2_primary_rays", addChecks);
+RAYLAB_REGISTER_CHECKS(addChecks);
 
 } // namespace raylab::grader

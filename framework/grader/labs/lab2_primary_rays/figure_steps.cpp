@@ -20,7 +20,7 @@ void ray(FigureStepContext& c) {
 
 } // namespace
 
-RAYLAB_REGISTER_FIGURE_STEP("lab2_primary_rays", "PerspectiveCamera::updateViewport", FigureStage::Setup, defaultCamera);
-RAYLAB_REGISTER_FIGURE_STEP("lab2_primary_rays", "PerspectiveCamera::generateRay", FigureStage::Pixel, ray);
+RAYLAB_REGISTER_FIGURE_STEP("PerspectiveCamera::updateViewport", FigureStage::Setup, defaultCamera);
+RAYLAB_REGISTER_FIGURE_STEP("PerspectiveCamera::generateRay", FigureStage::Pixel, ray);
 
 } // namespace raylab

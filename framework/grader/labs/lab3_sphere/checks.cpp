@@ -488,6 +488,6 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
 
 } // namespace
 
-RAYLAB_REGISTER_CHECKS("lab3_sphere", addChecks);
+RAYLAB_REGISTER_CHECKS(addChecks);
 
 } // namespace raylab::grader

@@ -31,8 +31,8 @@ void colour(FigureStepContext& c) {
 
 } // namespace
 
-RAYLAB_REGISTER_FIGURE_STEP("lab3_sphere", "SphereGeometry::intersect", FigureStage::Pixel, intersections);
-RAYLAB_REGISTER_FIGURE_STEP("lab3_sphere", "SphereGeometry::computeNormal", FigureStage::Pixel, normals);
-RAYLAB_REGISTER_FIGURE_STEP("lab3_sphere", "RayCastIntegrator::Li", FigureStage::Pixel, colour);
+RAYLAB_REGISTER_FIGURE_STEP("SphereGeometry::intersect", FigureStage::Pixel, intersections);
+RAYLAB_REGISTER_FIGURE_STEP("SphereGeometry::computeNormal", FigureStage::Pixel, normals);
+RAYLAB_REGISTER_FIGURE_STEP("RayCastIntegrator::Li", FigureStage::Pixel, colour);
 
 } // namespace raylab

@@ -54,7 +54,7 @@ struct Built {
     }
 };
 
-// The cameras of scenes/figures/lab4_{a,b,c,d}.toml (named when the checks are made: in the reader's language).
+// The cameras of scenes/lab4_{a,b,c,d}.toml (named when the checks are made: in the reader's language).
 std::vector<LookAt> handoutCameras() {
     auto name = [](const char* letter) { return tr("what.lab4.handout_camera", {{"letter", letter}}); };
     return {{name("a"), {0., 0., -2.}, {0., 0., 79.}, {0., 1., 0.}},
@@ -178,6 +178,6 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
 
 } // namespace
 
-RAYLAB_REGISTER_CHECKS("lab4_lookat_camera", addChecks);
+RAYLAB_REGISTER_CHECKS(addChecks);
 
 } // namespace raylab::grader

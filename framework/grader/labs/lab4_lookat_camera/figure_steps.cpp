@@ -14,8 +14,7 @@ void lookAtCamera(FigureStepContext& c) {
 
 } // namespace
 
-RAYLAB_REGISTER_FIGURE_STEP("lab4_lookat_camera",
-                            "the lookAt constructor PerspectiveCamera(width, height, position, target, up, fovy)",
+RAYLAB_REGISTER_FIGURE_STEP("the lookAt constructor PerspectiveCamera(width, height, position, target, up, fovy)",
                             FigureStage::Setup, lookAtCamera);
 
 } // namespace raylab

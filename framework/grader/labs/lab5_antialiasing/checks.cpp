@@ -149,6 +149,6 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
 
 } // namespace
 
-RAYLAB_REGISTER_CHECKS("lab5_antialiasing", addChecks);
+RAYLAB_REGISTER_CHECKS(addChecks);
 
 } // namespace raylab::grader

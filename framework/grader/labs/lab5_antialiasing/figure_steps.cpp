@@ -15,6 +15,6 @@ void samples(FigureStepContext& c) {
 
 } // namespace
 
-RAYLAB_REGISTER_FIGURE_STEP("lab5_antialiasing", "Renderer::renderPixel", FigureStage::Pixel, samples);
+RAYLAB_REGISTER_FIGURE_STEP("Renderer::renderPixel", FigureStage::Pixel, samples);
 
 } // namespace raylab

@@ -398,6 +398,6 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
 
 } // namespace
 
-RAYLAB_REGISTER_CHECKS("lab6_shadows", addChecks);
+RAYLAB_REGISTER_CHECKS(addChecks);
 
 } // namespace raylab::grader

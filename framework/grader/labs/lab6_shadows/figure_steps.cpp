@@ -1,7 +1,7 @@
 // Lab 6's functions as the crash finder calls them (src/figure_steps.h), on each pixel centre's ray
 // of a figure drawn by its own shading: the shadow test towards each light from the nearest hit, then
 // the integrator's colour.
-#include "raylab/point_light_integrator.h"
+#include "point_light_integrator.h"
 #include "src/figure_steps.h"
 
 namespace raylab {
@@ -29,7 +29,7 @@ void colour(FigureStepContext& c) {
 
 } // namespace
 
-RAYLAB_REGISTER_FIGURE_STEP("lab6_shadows", "inShadow", FigureStage::Pixel, shadowTests);
-RAYLAB_REGISTER_FIGURE_STEP("lab6_shadows", "PointLightIntegrator::Li", FigureStage::Pixel, colour);
+RAYLAB_REGISTER_FIGURE_STEP("inShadow", FigureStage::Pixel, shadowTests);
+RAYLAB_REGISTER_FIGURE_STEP("PointLightIntegrator::Li", FigureStage::Pixel, colour);
 
 } // namespace raylab

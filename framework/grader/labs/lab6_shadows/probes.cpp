@@ -3,7 +3,7 @@
 #include "grader/protocol/agent/probes.h"
 #include "probes.h"
 
-#include "raylab/point_light_integrator.h"
+#include "point_light_integrator.h"
 
 namespace raylab::agent {
 

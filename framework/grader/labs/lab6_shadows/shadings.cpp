@@ -1,7 +1,7 @@
 // Lab 6's pictures, by the names their scene files' [render] shading gives: the student's
 // PointLightIntegrator with the shadow test and without it, the ambient term from [shading].
 #include "raylab/integrator_registry.h"
-#include "raylab/point_light_integrator.h"
+#include "point_light_integrator.h"
 
 #include <memory>
 

@@ -18,14 +18,14 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     }
     checks.add({"toyColour: 1 - (d + 1) / 2 for each direction d", calls, [directions](const auto& out, Judge& judge) {
                     for (std::size_t k = 0; k < directions.size(); ++k)
-                        judge.expectNear(tr("what.lab6.colour", {{"direction", show(directions[k])}}),
+                        judge.expectNear(tr("what.toy.colour", {{"direction", show(directions[k])}}),
                                          Outputs(out[k]).vec3(), glm::dvec3(1.) - (directions[k] + 1.) / 2., 1e-6,
-                                         tr("hint.lab6.colour"));
+                                         tr("hint.toy.colour"));
                 }});
 }
 
 } // namespace
 
-RAYLAB_REGISTER_CHECKS("lab6_toy", addChecks);
+RAYLAB_REGISTER_CHECKS(addChecks);
 
 } // namespace raylab::grader

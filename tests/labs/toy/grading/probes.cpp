@@ -2,14 +2,9 @@
 #include "grader/protocol/agent/probes.h"
 #include "probes.h"
 
-#include "raylab/ray.h"
-#include "raylab/texture.h"
+#include "toy_colour.h"
 
-namespace raylab {
-
-Color toyColour(const Ray& ray); // the toy lab's function (labs/lab6_toy/toy_colour.cpp)
-
-namespace agent {
+namespace raylab::agent {
 
 namespace {
 
@@ -23,6 +18,4 @@ std::vector<double> toyColourProbe(ProbeInputs in) {
 
 RAYLAB_REGISTER_PROBE(grader::probes::toyColour, toyColourProbe);
 
-} // namespace agent
-
-} // namespace raylab
+} // namespace raylab::agent

@@ -1,10 +1,10 @@
-// Lab 6 (a toy): each primary ray coloured by its direction, inverted. The integrator that draws
+// Lab @N@ (a toy): each primary ray coloured by its direction, inverted. The integrator that draws
 // the figure is registered here, under the name its scene file's [render] shading gives.
 #include "raylab/integrator_registry.h"
+#include "toy_colour.h"
 
 namespace raylab {
 
-// The colour of a ray of direction d: 1 - (d + 1) / 2.
 Color toyColour(const Ray& ray) {
     return Color(1.f) - (ray.direction + 1.f) * 0.5f;
 }
