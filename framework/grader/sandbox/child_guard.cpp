@@ -45,6 +45,10 @@ constexpr int kGuardedSignals[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGILL,    SIGTRAP
 struct sigaction g_previous[NSIG];
 std::mutex g_guardMutex;
 int g_adopters = 0, g_signalGuards = 0;
+// This process's parent when the guard began: its signals are never an agent's, the one its death
+// sends (PR_SET_PDEATHSIG, from a grade-class run killed with SIGKILL) included, though by then this
+// process has another parent and the sender is gone.
+std::atomic<long> g_parent{0};
 
 bool isAgent(long pid) {
     for (const std::atomic<long>& a : g_agents)
@@ -134,7 +138,7 @@ void onSignal(int signal, siginfo_t* info, void* context) {
                       || info->si_code == SI_TKILL
 #endif
         ;
-    if (sent && info->si_pid != getpid()) {
+    if (sent && info->si_pid != getpid() && info->si_pid != g_parent.load()) {
         if (const long agent = agentOf(info->si_pid)) {
             Violation& v = g_violations[unsigned(g_violationCount.fetch_add(1)) % kMaxViolations]; // a ring
             v.signal.store(signal);
@@ -164,6 +168,7 @@ ChildGuard::ChildGuard(bool guardSignals) : m_signals(guardSignals) {
     if (g_adopters++ == 0) prctl(PR_SET_CHILD_SUBREAPER, 1);
 #endif
     if (!m_signals || g_signalGuards++ > 0) return;
+    g_parent.store(getppid());
     struct sigaction action{};
     action.sa_sigaction = onSignal;
     action.sa_flags = SA_SIGINFO | SA_RESTART;
