@@ -111,15 +111,6 @@ std::set<std::string> filesNamed(const fs::path& folder, const std::string& endi
     return names;
 }
 
-double catalogTotal() {
-    double total = 0.;
-    for (const LabDescription& lab : courseSetup().labs.labs) {
-        for (const LabCheck& c : lab.checks) total += c.points;
-        for (const LabFigure& f : lab.figures) total += f.points;
-    }
-    return total;
-}
-
 // Hands `folder` in as the submission (its content at the submission's top) and runs run_autograder,
 // its environment changed by `environment` (shell assignments: `PATH=...`).
 nlohmann::json gradeOnGradescope(const fs::path& folder, const std::string& environment = "") {
@@ -296,14 +287,9 @@ TEST_CASE("run_autograder: a lab that does not compile costs that lab alone") {
     const fs::path lookAt = submission / "labs" / "lab4_lookat_camera" / "look_at.cpp";
     std::ofstream(lookAt, std::ios::app) << "\nint missing_semicolon = 1\n";
     const nlohmann::json j = gradeOnGradescope(submission);
-    double lab4 = 0.;
-    for (const LabDescription& lab : courseSetup().labs.labs)
-        if (lab.number == 4) {
-            for (const LabCheck& c : lab.checks) lab4 += c.points;
-            for (const LabFigure& f : lab.figures) lab4 += f.points;
-        }
+    const double lab4 = labPoints(*courseSetup().labs.lab(4));
     REQUIRE(lab4 > 0.);
-    CHECK(j["score"].get<double>() == doctest::Approx(catalogTotal() - lab4)); // 63 of 75
+    CHECK(j["score"].get<double>() == doctest::Approx(catalogTotal() - lab4));
     for (const nlohmann::json& t : j["tests"]) {
         const bool ofLab4 = t["name"].get<std::string>().rfind("lab4: ", 0) == 0;
         CHECK_MESSAGE(t["status"] == (ofLab4 ? "failed" : "passed"), t.dump());

@@ -3,13 +3,16 @@
 // agent built by tests/grading/CMakeLists.txt.
 
 #include "grader/judge/grade.h"
+#include "src/messages.h"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,6 +29,61 @@ inline std::vector<fs::path> referenceDirs() {
     for (const LabDescription& lab : loadLabCatalog(sourceDir() / "labs").labs)
         folders.push_back(sourceDir() / "framework/grader/labs" / lab.id / "references");
     return folders;
+}
+
+// A lab's points in the catalogue: its checks' and its figures'.
+inline double labPoints(const LabDescription& lab) {
+    double points = 0.;
+    for (const LabCheck& c : lab.checks) points += c.points;
+    for (const LabFigure& f : lab.figures) points += f.points;
+    return points;
+}
+
+// The course's total in the catalogue.
+inline double catalogTotal() {
+    double total = 0.;
+    for (const LabDescription& lab : loadLabCatalog(sourceDir() / "labs").labs) total += labPoints(lab);
+    return total;
+}
+
+// The points cells of a grades.csv row, as the catalogue makes them: each lab's (lab<N>, in the
+// course's order) with the labs `lost` at 0, then the total and the max.
+inline std::vector<std::string> expectedPointsCells(const std::set<int>& lost = {}) {
+    std::vector<std::string> cells;
+    double total = 0.;
+    for (const LabDescription& lab : loadLabCatalog(sourceDir() / "labs").labs) {
+        const double points = lost.count(lab.number) ? 0. : labPoints(lab);
+        cells.push_back(formatNumber(points));
+        total += points;
+    }
+    cells.push_back(formatNumber(total));
+    cells.push_back(formatNumber(catalogTotal()));
+    return cells;
+}
+
+// Every lab of the course, by number.
+inline std::set<int> everyLab() {
+    std::set<int> numbers;
+    for (const LabDescription& lab : loadLabCatalog(sourceDir() / "labs").labs) numbers.insert(lab.number);
+    return numbers;
+}
+
+// Lab `lab` and the labs that use it, by number: those a broken lab costs where no reference stands
+// in for it (the students' tree).
+inline std::vector<int> labAndItsUsers(const LabCatalog& catalog, int lab) {
+    std::vector<int> labs;
+    for (const LabDescription& l : catalog.labs)
+        if (l.number == lab || std::find(l.uses.begin(), l.uses.end(), lab) != l.uses.end()) labs.push_back(l.number);
+    return labs;
+}
+
+// grades.csv's header as the catalogue makes it.
+inline std::vector<std::string> expectedCsvHeader() {
+    std::vector<std::string> header{"student"};
+    for (const LabDescription& lab : loadLabCatalog(sourceDir() / "labs").labs)
+        header.push_back("lab" + std::to_string(lab.number));
+    header.insert(header.end(), {"total", "max", "problems"});
+    return header;
 }
 
 // A figure's reference picture, in its lab's reference folder.

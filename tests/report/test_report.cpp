@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "grader/lab_catalog.h"
 #include "raylab/image_io.h"
 #include "support/needs.h"
 #include "support/run_program.h"
@@ -17,18 +18,26 @@
 #include <fstream>
 #include <regex>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kFigures[][2] = {
-    {"lab1_gradient", "Figure 1 "},     {"lab2_directions", "Figure 2 "}, {"lab3_flat", "Figure 3(a)"},
-    {"lab3_placeholder_normal", "Figure 3(b)"}, {"lab3_cosine", "Figure 3(c)"}, {"lab4_a", "Figure 5(a)"},
-    {"lab4_b", "Figure 5(b)"},          {"lab4_c", "Figure 5(c)"},        {"lab4_d", "Figure 5(d)"},
-    {"lab5_antialiased", "Figure 6 "},
-};
+// The course's labs, as the catalogue reads them.
+const raylab::grader::LabCatalog& courseLabs() {
+    static const raylab::grader::LabCatalog labs = raylab::grader::loadLabCatalog(RAYLAB_LABS_DIR);
+    return labs;
+}
+
+// Every figure of the course, with its lab.
+std::vector<std::pair<const raylab::grader::LabDescription*, const raylab::grader::LabFigure*>> courseFigures() {
+    std::vector<std::pair<const raylab::grader::LabDescription*, const raylab::grader::LabFigure*>> figures;
+    for (const raylab::grader::LabDescription& lab : courseLabs().labs)
+        for (const raylab::grader::LabFigure& f : lab.figures) figures.emplace_back(&lab, &f);
+    return figures;
+}
 
 using raylab::test::readFile;
 
@@ -105,17 +114,17 @@ TEST_SUITE("report") {
 TEST_CASE("the reference build's kit: every figure, its number, its pictures and maps, a section per lab") {
     const fs::path dir = makeKit("raylab-reference", "reference");
     const std::string md = readFile(dir / "report.md"), html = readFile(dir / "report.html");
-    for (const auto& [id, number] : kFigures) {
+    const auto figures = courseFigures();
+    for (const auto& [lab, figure] : figures) {
+        const std::string& id = figure->id;
         CHECK_MESSAGE(html.find(id) != std::string::npos, id);
-        CHECK_MESSAGE(md.find(std::string(number) + (number[std::strlen(number) - 1] == ' ' ? "(" : " (") + id + ")") !=
-                          std::string::npos,
-                      number << " " << id);
-        CHECK_MESSAGE(md.find("figures/" + std::string(id) + ".png") != std::string::npos, id);
-        CHECK_MESSAGE(md.find("diff/" + std::string(id) + ".png") != std::string::npos, id);
-        CHECK_MESSAGE(html.find("grade/images/" + std::string(id) + ".reference.png") != std::string::npos, id);
-        CHECK_MESSAGE(md.find("PASS  lab" + std::string(1, id[3]) + "  figure " + id + ":") != std::string::npos, id);
+        CHECK_MESSAGE(md.find("Figure " + figure->handout + " (" + id + ")") != std::string::npos, figure->handout << " " << id);
+        CHECK_MESSAGE(md.find("figures/" + id + ".png") != std::string::npos, id);
+        CHECK_MESSAGE(md.find("diff/" + id + ".png") != std::string::npos, id);
+        CHECK_MESSAGE(html.find("grade/images/" + id + ".reference.png") != std::string::npos, id);
+        CHECK_MESSAGE(md.find("PASS  lab" + std::to_string(lab->number) + "  figure " + id + ":") != std::string::npos, id);
     }
-    for (int lab = 1; lab <= 5; ++lab) {
+    for (const int lab : courseLabs().numbers()) {
         CHECK(md.find("## Lab " + std::to_string(lab) + ": ") != std::string::npos);
         CHECK(md.find("### Your text (Lab " + std::to_string(lab) + ")\n<!-- raylab:end -->\n\n<!-- raylab:student lab" +
                       std::to_string(lab) + " -->") != std::string::npos);
@@ -125,7 +134,7 @@ TEST_CASE("the reference build's kit: every figure, its number, its pictures and
     CHECK(md.find("PASS  lab3  check ") != std::string::npos);
     CHECK(md.find("FAIL  lab") == std::string::npos);
     // Each difference map has its scale and its reading.
-    CHECK(count(md, "](diff/scale.png) dark: within tolerance") == std::size(kFigures));
+    CHECK(count(md, "](diff/scale.png) dark: within tolerance") == figures.size());
     CHECK(md.find("A noisy figure: a pixel is within tolerance") != std::string::npos);
     // The antialiasing section: both renders' cost, the close-up's place and zoom.
     CHECK(md.find("Antialiasing: aliased against antialiased") != std::string::npos);
@@ -173,18 +182,20 @@ TEST_CASE("the grade block's total is `raylab grade`'s: the reference agent, and
 TEST_CASE("the student build's kit (stubs): each lab not done yet, the references still shown") {
     const fs::path dir = makeKit("raylab", "student");
     const std::string md = readFile(dir / "report.md"), html = readFile(dir / "report.html");
-    for (const auto& [id, number] : kFigures) {
+    for (const auto& [lab, figure] : courseFigures()) {
+        const std::string& id = figure->id;
         CHECK_MESSAGE(md.find(id) != std::string::npos, id);
-        CHECK_MESSAGE(!fs::exists(dir / "figures" / (std::string(id) + ".png")), id);
-        CHECK_MESSAGE(md.find("FAIL  lab" + std::string(1, id[3]) + "  figure " + id + ":") != std::string::npos, id);
+        CHECK_MESSAGE(!fs::exists(dir / "figures" / (id + ".png")), id);
+        CHECK_MESSAGE(md.find("FAIL  lab" + std::to_string(lab->number) + "  figure " + id + ":") != std::string::npos, id);
     }
-    for (int lab = 1; lab <= 5; ++lab) {
+    for (const raylab::grader::LabDescription& description : courseLabs().labs) {
+        const int lab = description.number;
         const std::size_t begin = md.find("## Lab " + std::to_string(lab) + ": ");
         REQUIRE(begin != std::string::npos);
         const std::string section = md.substr(begin, md.find("\n## Lab ", begin + 1) - begin);
         CHECK_MESSAGE(section.find(" not done yet: write ") != std::string::npos, section);
         // A figure drawn through lab 2's camera names its own lab's functions, and lab 2 first.
-        if (lab >= 3)
+        if (std::find(description.uses.begin(), description.uses.end(), 2) != description.uses.end())
             CHECK_MESSAGE((section.find("lab " + std::to_string(lab) + ": write ") != std::string::npos &&
                            section.find("; this figure first needs lab 2: write PerspectiveCamera::updateViewport in labs/") !=
                                std::string::npos),

@@ -1,5 +1,6 @@
 #include "raylab/integrator_registry.h"
 #include "support/scene_files.h"
+#include "grader/lab_catalog.h"
 #include "src/scene_file.h"
 
 #include <doctest/doctest.h>
@@ -7,7 +8,9 @@
 #include <algorithm>
 #include <fstream>
 #include <random>
+#include <set>
 #include <string>
+#include <vector>
 
 using namespace raylab;
 
@@ -32,6 +35,15 @@ std::string errorOf(const std::string& text) {
         return message.substr(message.find("scene.toml"));
     }
     return "no error";
+}
+
+// The shadings the course's labs register: those their figures use, and "lambert", the framework's
+// reference with lights (framework/study/lambert_shading.cpp), in alphabetical order.
+std::vector<std::string> courseShadings() {
+    std::set<std::string> names{"lambert"};
+    for (const SceneDescription& d : grader::loadFiguresInLabOrder({}, grader::loadLabCatalog(test::kLabsDir)))
+        names.insert(d.shading);
+    return {names.begin(), names.end()};
 }
 
 } // namespace
@@ -115,8 +127,9 @@ TEST_CASE("errors name the file, the line and the key") {
           "scene.toml:2: [[sphere]] center: expected an array of 3 numbers such as [0.0, 1.0, 0.0]");
     CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\n") == "scene.toml:1: [[sphere]]: a sphere needs a center and a radius");
     CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\nradius = -1\n") == "scene.toml:3: [[sphere]] radius: -1 must be positive");
-    CHECK(errorOf("[render]\nshading = \"phong\"\n") ==
-          "scene.toml:2: [render] shading: 'phong' is not one of cosine, directions, flat, gradient, lambert, placeholder_normal");
+    std::string shadings;
+    for (const std::string& name : courseShadings()) shadings += (shadings.empty() ? "" : ", ") + name;
+    CHECK(errorOf("[render]\nshading = \"phong\"\n") == "scene.toml:2: [render] shading: 'phong' is not one of " + shadings);
     CHECK(errorOf("[render]\nsampler = \"magic\"\n") ==
           "scene.toml:2: [render] sampler: 'magic' is not one of center, random, stratified, grid, sobol, r2, adaptive");
     CHECK(errorOf("[camera]\nlook_at = [0, 0, 1]\n") ==
@@ -176,10 +189,8 @@ TEST_CASE("a figure's roles name it for the tools, not its id: one scene a role"
 }
 
 TEST_CASE("every shading is a name a lab registers: one path for the figures") {
-    // Labs 1 to 3 register theirs from framework/grader/labs/<lab>/shadings.cpp; "lambert" is the
-    // framework's reference with lights (framework/study/lambert_shading.cpp).
-    CHECK(registeredIntegratorNames() ==
-          std::vector<std::string>{"cosine", "directions", "flat", "gradient", "lambert", "placeholder_normal"});
+    // Each lab registers its figures' from framework/grader/labs/<lab>/shadings.cpp.
+    CHECK(registeredIntegratorNames() == courseShadings());
     CHECK(isRegisteredImage("gradient")); // drawn without rays
     CHECK_FALSE(isRegisteredImage("cosine"));
     CHECK(isRegisteredIntegrator("cosine"));
