@@ -67,7 +67,8 @@ private:
     // framework's part, which reads the settings below and fills the statistics.
     friend class RenderPasses;
 
-    // What lab 5's code uses.
+    // What lab 5's code uses. The camera and the integrator come through handles that call lab 2's
+    // and lab 3's classes directly (raylab/detail/lab_handles.h: nothing there is yours to write).
     const Scene& m_scene;
     CameraHandle m_camera;         // the camera: m_camera.generateRay(sx, sy), m_camera.width(), m_camera.height()
     IntegratorHandle m_integrator; // the integrator: m_integrator.Li(m_scene, ray)
