@@ -45,7 +45,9 @@ const std::set<std::string> kWithheld{"solutions", "tests/variants", "tests/grad
                                       "framework/study/lambert_shading.cpp",
                                       // a complete lab 3 sphere that counts its calls, and its test
                                       "tests/study/counting_sphere.cpp", "tests/study/counting_sphere.h",
-                                      "tests/study/test_render_work.cpp"};
+                                      "tests/study/test_render_work.cpp",
+                                      // the toy lab's answer, a lab's solution in the toy-lab test's tree
+                                      "tests/labs/toy/solution"};
 
 // The labs' folders that are not handed out: every lab's in solutions/ (kWithheld), its mistakes'
 // patches (against the solutions, they show their lines), and in labs/ and the grading folders those

@@ -1,5 +1,7 @@
 #include "raylab/sampler.h"
 
+#include "src/low_discrepancy.h"
+
 #include <algorithm>
 #include <array>
 #include <bit>

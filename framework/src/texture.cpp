@@ -2,14 +2,30 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace raylab {
 
-Texture::Texture(int width, int height) : m_width(width), m_height(height) {
+namespace {
+
+// width x height; throws when that has no pixel.
+std::size_t pixelCount(int width, int height) {
     if (width < 1 || height < 1)
         throw std::invalid_argument("Texture: size " + std::to_string(width) + " x " + std::to_string(height) +
                                     " has no pixel; width and height must be at least 1");
-    m_pixels.assign(std::size_t(width) * std::size_t(height), Color(0.f));
+    return std::size_t(width) * std::size_t(height);
+}
+
+} // namespace
+
+Texture::Texture(int width, int height)
+    : Texture(width, height, std::vector<Color>(pixelCount(width, height), Color(0.f))) {}
+
+Texture::Texture(int width, int height, std::vector<Color> pixels)
+    : m_width(width), m_height(height), m_pixels(std::move(pixels)) {
+    if (m_pixels.size() != pixelCount(width, height))
+        throw std::invalid_argument("Texture: " + std::to_string(m_pixels.size()) + " pixels for a " + std::to_string(width) +
+                                    " x " + std::to_string(height) + " image; it needs width x height");
 }
 
 void Texture::checkInside(int i, int j) const {

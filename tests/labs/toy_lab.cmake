@@ -1,17 +1,28 @@
 # The toy-lab test: adding a lab, function checks included, is its own folders and its number in the
-# course's list. In a copy of the tree it adds lab N, the next free number: labs/labN_toy/ (its
-# lab.toml, its header, one stub function, a README, its scene file), its completed twin in
-# solutions/ and its grading folder framework/grader/labs/labN_toy/ (a probe, a check, its English
-# and French messages), and N to course.toml; then builds, renders, makes lab N's references, grades
-# and reports it as an instructor and a student would, and lists what changed under framework/: only
-# the new lab's grading folder (the references `raylab references` made are in it).
+# course's list. In a copy of the whole tree (its files as git lists them: tests/ and docs/ too, no
+# build folder) it adds lab N, the next free number: labs/labN_toy/ (its lab.toml, its header, one
+# stub function, its handouts in English and French, its scene file), its completed twin in
+# solutions/ and its grading folder framework/grader/labs/labN_toy/ (a probe, three checks, its
+# English and French messages), and N to course.toml; then builds, renders, makes lab N's references and the
+# handouts' figures with its row in docs/figures/README.md (docs/instructors.md, "Adding a lab"),
+# runs the copy's own lab tests, grades and reports it as an instructor and a student would, and
+# lists what changed under framework/: only the new lab's grading folder (the references
+# `raylab references` made are in it).
+#
+# The copy's tests: `ctest -L lab`, the command docs/instructors.md gives to check a new lab before
+# it is committed (the lab descriptions, figure steps, scene files, both message catalogues, the
+# handouts' figure tables and links, no lab named in the framework, the reference's grade, the
+# mistakes, the checks, "doing nothing earns no point", what `raylab distribute` ships): what adding
+# a lab can break, about 30 s once built. Not the rest of the copy's suite: the tests labelled slow
+# build trees of their own (this one among them) and take far longer, and the others test the
+# framework, the sandbox and the tools, which a lab's folders do not change.
 #
 #   cmake -DSTEP=<step> -DSOURCE=<tree> -DWORK=<scratch folder> -DTOY=tests/labs/toy [-DGENERATOR=Ninja]
 #         [-DCCACHE=<ccache>] -P tests/labs/toy_lab.cmake
 # It runs in steps, one ctest test each (tests/CMakeLists.txt), each in the tree the steps before it
 # left (ctest prints nothing while a test runs; with a warm compiler cache each step lasts seconds): copy, then
-# build-framework, build-grader, build-cli, build-programs, render, grade, report, written-after-build,
-# does-not-compile, lab-rebuilds, hints, framework-unchanged.
+# build-framework, build-grader, build-cli, build-programs, render, lab-tests, grade, report,
+# written-after-build, does-not-compile, lab-rebuilds, hints, framework-unchanged.
 # Every program runs from an argument vector (execute_process), never through a shell.
 
 foreach(var STEP SOURCE WORK TOY)
@@ -39,16 +50,12 @@ foreach(file IN LISTS lab_files)
 endforeach()
 set(id lab${N}_toy)
 
-# 1. The copy of the tree (no build folders, no out/, no tests/), and the toy lab added to it: its
-# files, lab N in them (@N@), and N in the course's list.
+# 1. The copy of the whole tree (script_steps.cmake), and the toy lab added to it: its files, lab N in
+# them (@N@), and N in the course's list.
 function(step_copy)
   file(REMOVE_RECURSE ${WORK})
-  file(MAKE_DIRECTORY ${tree})
-  foreach(part framework labs solutions scenes cmake)
-    file(COPY ${SOURCE}/${part} DESTINATION ${tree})
-  endforeach()
-  file(COPY ${SOURCE}/CMakeLists.txt ${SOURCE}/CMakePresets.json ${SOURCE}/course.toml DESTINATION ${tree})
-  foreach(file lab.toml README.md toy_colour.cpp toy_colour.h)
+  copy_tree(${SOURCE} ${tree})
+  foreach(file lab.toml README.md README.fr.md toy_colour.cpp toy_colour.h)
     configure_file(${TOY}/${file} ${tree}/labs/${id}/${file} @ONLY)
   endforeach()
   configure_file(${TOY}/toy.toml ${tree}/labs/${id}/scenes/${id}.toml @ONLY)
@@ -61,16 +68,8 @@ function(step_copy)
   endif()
   file(WRITE ${tree}/course.toml "${listed}")
 
-  # 2. Configured to build the programs a course uses (no test suite: tests/ is not copied).
-  # Without link-time optimisation: this test is about adding a lab, not its speed (quicker links).
-  set(configure ${CMAKE_COMMAND} -S ${tree} -B ${build} -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DRAYLAB_LTO=OFF)
-  if(GENERATOR)
-    list(APPEND configure -G ${GENERATOR})
-  endif()
-  if(CCACHE)
-    list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CCACHE})
-  endif()
-  run(output 0 ${configure})
+  # 2. Configured, its test suite too.
+  configure_tree(output)
   expect("${output}" ";${id}" "CMake found lab ${N}")
 endfunction()
 
@@ -94,24 +93,60 @@ function(step_build_programs)
   endforeach()
 endfunction()
 
-# 3. Rendered by the reference build, and lab ${N}'s references made from it (its scene alone).
+# Lab ${N}'s row in docs/figures/README.md, after the table's last row, made from its lab.toml (its
+# handout number and English caption), as an instructor adds it.
+function(add_figure_row)
+  file(READ ${tree}/labs/${id}/lab.toml description)
+  if(NOT description MATCHES "\nhandout = \"([^\"]*)\"\ncaption = { en = \"([^\"]*)\"")
+    message(FATAL_ERROR "toy lab: no handout and English caption in labs/${id}/lab.toml")
+  endif()
+  set(row "| [`${id}`](${id}.png) | ${N} | Figure ${CMAKE_MATCH_1} | ${CMAKE_MATCH_2} |")
+  file(READ ${tree}/docs/figures/README.md table)
+  string(FIND "${table}" "\n| [`" last REVERSE)
+  if(last EQUAL -1)
+    message(FATAL_ERROR "toy lab: docs/figures/README.md has no figure row")
+  endif()
+  math(EXPR last "${last} + 1")
+  string(SUBSTRING "${table}" ${last} -1 rest)
+  string(FIND "${rest}" "\n" end)
+  if(end EQUAL -1)
+    string(LENGTH "${rest}" end)
+  endif()
+  math(EXPR end "${last} + ${end}")
+  string(SUBSTRING "${table}" 0 ${end} before)
+  string(SUBSTRING "${table}" ${end} -1 after)
+  file(WRITE ${tree}/docs/figures/README.md "${before}\n${row}${after}")
+endfunction()
+
+# 3. Rendered by the reference build into the handouts' figures, docs/figures/ (with lab ${N}'s row in
+# its README, from its lab.toml), and lab ${N}'s references made from it (its scene alone).
 function(step_render)
-  run(output 0 ${bin}/raylab-reference figures --out ${WORK}/figures)
+  run(output 0 ${bin}/raylab-reference figures --out ${tree}/docs/figures)
   expect("${output}" "${id}" "raylab-reference figures lists lab ${N}'s figure")
-  if(NOT EXISTS ${WORK}/figures/${id}.png)
+  if(NOT EXISTS ${tree}/docs/figures/${id}.png)
     message(FATAL_ERROR "toy lab: raylab-reference figures wrote no ${id}.png")
   endif()
+  add_figure_row()
   file(MAKE_DIRECTORY ${WORK}/toy-scenes)
   file(COPY ${tree}/labs/${id}/scenes/${id}.toml DESTINATION ${WORK}/toy-scenes)
   run(output 0 ${bin}/raylab-reference references --scenes ${WORK}/toy-scenes)
   expect("${output}" "${id}" "raylab references made lab ${N}'s reference")
 endfunction()
 
+# 3b. The copy's own lab tests pass with lab ${N} added: `ctest -L lab`, as docs/instructors.md asks of
+# a new lab (see the top of this file), after building the whole copy, its tests included.
+function(step_lab_tests)
+  build(all)
+  run(output 0 ${CMAKE_CTEST_COMMAND} --test-dir ${build} -L "^lab$" -j 2 --output-on-failure)
+  expect("${output}" "100% tests passed" "the copy's lab tests pass")
+  expect("${output}" "grading/grade reference" "the copy's lab tests grade the reference")
+endfunction()
+
 # 4. Graded: the reference code gets every point, the stub is told to write toyColour.
 function(step_grade)
   run(output 0 ${bin}/raylab grade --lab ${N} --agent ${bin}/raylab-agent-reference --report ${WORK}/grade-reference)
   expect("${output}" "PASS  lab${N}  figure ${id}" "the reference's figure passes")
-  expect("${output}" "PASS  lab${N}  toyColour: 1 - (d + 1) / 2 for each direction d" "the reference passes lab ${N}'s check")
+  expect("${output}" "PASS  lab${N}  toyColour: a direction drawn at grading time" "the reference passes lab ${N}'s checks")
   expect("${output}" "lab ${N}: 7 / 7 points" "the reference gets lab ${N}'s points")
   run(output nonzero ${bin}/raylab grade --lab ${N} --report ${WORK}/grade-student)
   expect("${output}" "lab ${N} not done yet: write toyColour" "the stub is not done yet")
@@ -123,7 +158,7 @@ function(step_report)
   run(output 0 ${bin}/raylab report --impl reference --out ${WORK}/report-reference)
   file(READ ${WORK}/report-reference/report.md report)
   expect("${report}" "## Lab ${N}: A toy lab" "the report has lab ${N}'s section")
-  expect("${report}" "### Figure T (${id})" "the report numbers lab ${N}'s figure")
+  expect("${report}" "### Figure ${N}0 (${id})" "the report numbers lab ${N}'s figure")
   expect("${report}" "1 - (d + 1) / 2" "the report shows lab ${N}'s caption")
   expect("${report}" "![${id}](figures/${id}.png)" "the report shows lab ${N}'s picture")
   run(output 0 ${bin}/raylab report --lang fr --out ${WORK}/report-student)
@@ -189,7 +224,7 @@ function(step_hints)
   expect("${output}" "toyColour returns 1 - (d + 1) / 2: the direction's colour, inverted" "the check's English hint")
   run(output nonzero ${bin}/raylab grade --lab ${N} --lang fr --report ${WORK}/grade-wrong-fr)
   expect("${output}" "toyColour renvoie 1 - (d + 1) / 2" "the check's French hint")
-  expect("${output}" "1 - (d + 1) / 2 pour chaque direction d" "the check's French title")
+  expect("${output}" "une direction tirée à la correction" "the check's French title")
   # The instructor rewords the hint in the grading folder: `raylab grade` rebuilds the grader first.
   set(messages ${tree}/framework/grader/labs/${id}/messages.en.toml)
   file(READ ${messages} hints)

@@ -1,4 +1,5 @@
 #include "raylab/sampler.h"
+#include "src/low_discrepancy.h"
 
 #include <doctest/doctest.h>
 

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <vector>
 
 using namespace raylab;
 
@@ -24,6 +25,15 @@ TEST_CASE("a texture stores each pixel at (column i, row j)") {
     CHECK(t.pixels()[1 * 3 + 2] == Color(0.25f, 0.5f, 1.f)); // row-major
     CHECK(t.pixels()[1 * 3 + 0] == Color(1.f, 0.f, 0.f));
     CHECK(t.getPixel(1, 1) == Color(0.f));
+}
+
+TEST_CASE("a texture made from its pixels keeps them in place, and refuses the wrong number") {
+    const Texture t(2, 2, {Color(1.f, 0.f, 0.f), Color(0.f, 1.f, 0.f), Color(0.f, 0.f, 1.f), Color(0.5f)});
+    CHECK(t.getPixel(1, 0) == Color(0.f, 1.f, 0.f));
+    CHECK(t.getPixel(0, 1) == Color(0.f, 0.f, 1.f)); // row-major, as setPixel writes
+    CHECK_THROWS_WITH_AS(Texture(3, 2, std::vector<Color>(5)),
+                         "Texture: 5 pixels for a 3 x 2 image; it needs width x height", std::invalid_argument);
+    CHECK_THROWS_AS(Texture(0, 2, {}), std::invalid_argument);
 }
 
 TEST_CASE("a pixel outside the texture is an error that names it") {

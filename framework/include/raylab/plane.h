@@ -19,8 +19,7 @@ public:
 
     // The one t where the ray crosses the plane, when it is in [tMin, tMax]. A ray parallel to the
     // plane, lying in it included, misses (a plane has no thickness), and so does a NaN ray.
-    // Inline, as Scene::intersect: a call the compiler cannot see into would keep every ray's hit
-    // record in memory, the spheres' too.
+    // Inline, as Scene::intersect (docs/performance.md).
     bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const {
         if (const float t = crossing(ray); within(t, tMin, tMax)) {
             hit.t = t;

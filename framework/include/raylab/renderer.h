@@ -63,33 +63,18 @@ public:
     Color renderPixel(int i, int j, PixelSampler& sampler) const;
 
 private:
-    // The strategies of renderImage, one each; they fill `image` and m_stats' ray and number counts.
-    // One centred sample per pixel: the centre's ray, without the lab 5 code.
-    void renderCentres(Texture& image);
-    // nbPixelSamples() samples per pixel, placed by the sampler, through renderPixel.
-    void renderSampled(Texture& image);
-    // Adaptive sampling (AdaptiveSettings): a first pass that measures each pixel's spread, then a
-    // second pass on the pixels to refine.
-    void renderAdaptive(Texture& image);
+    // How renderImage goes over the pixels, on threads (framework/src/render_passes.h): the
+    // framework's part, which reads the settings below and fills the statistics.
+    friend class RenderPasses;
 
-    // A renderer of this one's scene and camera that sees `integrator` and averages `nbSamples`
-    // samples, set through the public interface like any caller's.
-    Renderer passRenderer(const Integrator& integrator, int nbSamples) const;
-    // This renderer's settings, with handles made from lab 2's camera and lab 3's integrator.
-    Renderer(const Renderer& settings, const PerspectiveCamera& camera, const RayCastIntegrator& integrator);
-    // The strategies' loop over the pixels [x0, x1) x [y0, y1): the sum of pixel(renderer, i, j).
-    // `renderer` is this one, or, when it has the labs' camera and integrator, a copy made from them
-    // in a loop of its own where everything is inlined: lab 5's loop then calls the labs directly.
-    template <class Pixel> std::uint64_t forEachPixel(int x0, int y0, int x1, int y1, const Pixel& pixel) const;
-    template <class Pixel> std::uint64_t forEachPixelDirect(int x0, int y0, int x1, int y1, const Pixel& pixel) const;
-    Color renderPixelCentre(int i, int j) const;
-    // Adaptive sampling's second pass: which pixels to render again, from the first pass's spreads.
-    std::vector<std::uint8_t> pixelsToRefine(const std::vector<float>& spread) const;
-
+    // What lab 5's code uses. The camera and the integrator come through handles that call lab 2's
+    // and lab 3's classes directly (raylab/detail/lab_handles.h: nothing there is yours to write).
     const Scene& m_scene;
-    CameraHandle m_camera;
-    IntegratorHandle m_integrator;
+    CameraHandle m_camera;         // the camera: m_camera.generateRay(sx, sy), m_camera.width(), m_camera.height()
+    IntegratorHandle m_integrator; // the integrator: m_integrator.Li(m_scene, ray)
     int m_nbPixelSamples = 1;
+
+    // The other settings, and what the last render measured.
     SamplerKind m_sampler = SamplerKind::Center;
     std::uint64_t m_seed = 0;
     AdaptiveSettings m_adaptive;

@@ -39,8 +39,7 @@ public:
     PixelSampler(SamplerKind kind, int nbSamples, std::uint64_t seed, int i, int j, int width);
 
     // The next sample offset in the pixel. After nbSamples calls, stratified sampling starts over
-    // with new jitter, grid repeats its points, and the sequences go on. The random sampler, the
-    // one lab 5 uses, is inline: two steps of its generator, seeded in the constructor.
+    // with new jitter, grid repeats its points, and the sequences go on.
     glm::vec2 next2D() {
         if (m_kind != SamplerKind::Random) return next2DOther();
         m_drawn += 2;
@@ -70,17 +69,5 @@ private:
     std::uint32_t m_sobol1Reversed = 0;   // sobol: the last point's second dimension, bits reversed
     double m_shift[2] = {0., 0.};         // r2: per-pixel offset
 };
-
-// The building blocks, exposed for the tests.
-namespace lowdiscrepancy {
-// The first two dimensions of the Sobol' sequence, as 32-bit fixed-point fractions.
-std::uint32_t sobol(std::uint32_t index, int dimension);
-// Nested uniform (Owen) scrambling of a 32-bit fraction with a hash (Burley 2020, after Laine and Karras).
-std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed);
-// The same, of the fraction whose bits reversed are `reversed` (the sampler keeps them so).
-std::uint32_t owenScrambleReversed(std::uint32_t reversed, std::uint32_t seed);
-// The n-th point of R2: frac(n / g), frac(n / g^2), g the plastic number.
-glm::dvec2 r2(std::uint32_t index);
-} // namespace lowdiscrepancy
 
 } // namespace raylab

@@ -12,7 +12,11 @@ using Color = glm::vec3;
 
 class Texture {
 public:
+    // A black image. Throws std::invalid_argument when width or height is below 1.
     Texture(int width, int height);
+    // The image of these pixels, row-major (pixel (i, j) at j * width + i). Throws
+    // std::invalid_argument when their number is not width x height.
+    Texture(int width, int height, std::vector<Color> pixels);
 
     int width() const { return m_width; }
     int height() const { return m_height; }
@@ -27,12 +31,6 @@ public:
     const std::vector<Color>& pixels() const { return m_pixels; }
 
 private:
-    friend class Renderer; // its tiles are inside the image: it writes without the check
-
-    void setPixelInside(int i, int j, const Color& color) {
-        m_pixels[std::size_t(j) * std::size_t(m_width) + std::size_t(i)] = color;
-    }
-
     void checkInside(int i, int j) const;
     [[noreturn]] void throwOutside(int i, int j) const;
 

@@ -1,27 +1,32 @@
-// The toy lab's function check: toyColour on fixed directions and on one drawn at grading time.
+// The toy lab's function checks: toyColour on two fixed directions and on one drawn at grading time,
+// one check each (a lab has at least three).
 #include "grader/judge/checks/checks.h"
 #include "probes.h"
 
 #include "src/messages.h"
 
+#include <string>
+
 namespace raylab::grader {
 
 namespace {
 
+// The check `name`: toyColour(d) is 1 - (d + 1) / 2.
+void addColourCheck(LabChecks& checks, const std::string& name, const glm::dvec3& d,
+                    SourcePlace where = SourcePlace::here()) {
+    std::vector<double> inputs;
+    appendInputs(inputs, d);
+    checks.add({name, {{probes::toyColour, inputs}}, [d](const auto& out, Judge& judge) {
+                    judge.expectNear(tr("what.toy.colour", {{"direction", show(d)}}), Outputs(out[0]).vec3(),
+                                     glm::dvec3(1.) - (d + 1.) / 2., 1e-6, tr("hint.toy.colour"));
+                }},
+               where);
+}
+
 void addChecks(LabChecks& checks, CaseRandom& random) {
-    const std::vector<glm::dvec3> directions{{0., 0., 1.}, {-1., 0., 0.}, CaseRandom::asFloat(random.unitVector())};
-    std::vector<protocol::Call> calls;
-    for (const glm::dvec3& d : directions) {
-        std::vector<double> inputs;
-        appendInputs(inputs, d);
-        calls.push_back({probes::toyColour, inputs});
-    }
-    checks.add({"toyColour: 1 - (d + 1) / 2 for each direction d", calls, [directions](const auto& out, Judge& judge) {
-                    for (std::size_t k = 0; k < directions.size(); ++k)
-                        judge.expectNear(tr("what.toy.colour", {{"direction", show(directions[k])}}),
-                                         Outputs(out[k]).vec3(), glm::dvec3(1.) - (directions[k] + 1.) / 2., 1e-6,
-                                         tr("hint.toy.colour"));
-                }});
+    addColourCheck(checks, "toyColour: the ray straight ahead", {0., 0., 1.});
+    addColourCheck(checks, "toyColour: a ray to the side", {-1., 0., 0.});
+    addColourCheck(checks, "toyColour: a direction drawn at grading time", CaseRandom::asFloat(random.unitVector()));
 }
 
 } // namespace
