@@ -8,7 +8,8 @@
 # A lab the course leaves out whose functions the framework itself calls (lab.toml's `framework_calls =
 # true`: members of framework classes) is given: every program links its reference, as part of the
 # framework, and nothing grades it. RAYLAB_GIVEN_LAB_NUMBERS lists them. Its reference is solutions/<lab>/
-# where the tree has it, else framework/given/<lab>/, which `raylab distribute` writes for a students' tree.
+# where the tree has it, else framework/given/<lab>/, which `raylab distribute` writes for a students'
+# tree (there each folder of framework/given/ is a given lab: its lab.toml is not handed out).
 
 #
 # The reference labs are solutions/<lab folder>/*.cpp, or, in Gradescope's image, the objects compiled
@@ -108,13 +109,27 @@ foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
 endforeach()
 message(STATUS "raylab labs: ${RAYLAB_LABS}")
 set(RAYLAB_GIVEN_LAB_NUMBERS "")
-set(given_folders "")
-list(SORT raylab_found_labs COMPARE NATURAL)
 foreach(n IN LISTS raylab_found_labs)
   if(RAYLAB_LAB_FRAMEWORK_CALLS_${n} AND NOT n IN_LIST RAYLAB_LAB_NUMBERS)
     list(APPEND RAYLAB_GIVEN_LAB_NUMBERS ${n})
-    list(APPEND given_folders ${RAYLAB_LAB_FOLDER_${n}})
   endif()
+endforeach()
+# A students' tree has no lab.toml of a given lab, only its reference (raylab distribute).
+file(GLOB given_paths LIST_DIRECTORIES true ${CMAKE_SOURCE_DIR}/framework/given/lab*)
+foreach(path IN LISTS given_paths)
+  get_filename_component(folder ${path} NAME)
+  if(IS_DIRECTORY ${path} AND folder MATCHES "^lab([1-9][0-9]*)_.")
+    set(n ${CMAKE_MATCH_1})
+    if(NOT DEFINED RAYLAB_LAB_FOLDER_${n})
+      set(RAYLAB_LAB_FOLDER_${n} ${folder})
+      list(APPEND RAYLAB_GIVEN_LAB_NUMBERS ${n})
+    endif()
+  endif()
+endforeach()
+list(SORT RAYLAB_GIVEN_LAB_NUMBERS COMPARE NATURAL)
+set(given_folders "")
+foreach(n IN LISTS RAYLAB_GIVEN_LAB_NUMBERS)
+  list(APPEND given_folders ${RAYLAB_LAB_FOLDER_${n}})
 endforeach()
 if(given_folders)
   message(STATUS "raylab labs given (their reference, part of the framework): ${given_folders}")

@@ -184,6 +184,27 @@ void leaveOut(LabCatalog& catalog, const std::vector<int>& course) {
         else if (lab.frameworkCalls) catalog.given.push_back(std::move(lab));
     }
     catalog.labs = std::move(kept);
+}
+
+// A students' tree has no lab.toml of a given lab, only its reference, framework/given/<lab>/ (`raylab
+// distribute`), whose folder's name says its number and id. Then no lab's `uses` names a given lab.
+void addGivenReferences(LabCatalog& catalog, const fs::path& labs) {
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(labs.parent_path() / "framework" / "given", error)) {
+        const std::string id = entry.path().filename().string();
+        const std::optional<int> number = folderNumber(id);
+        const auto known = [&](const LabDescription& l) { return number && l.number == *number; };
+        if (!entry.is_directory() || !number || std::any_of(catalog.labs.begin(), catalog.labs.end(), known) ||
+            std::any_of(catalog.given.begin(), catalog.given.end(), known))
+            continue;
+        LabDescription lab;
+        lab.file = entry.path();
+        lab.number = *number;
+        lab.id = id;
+        lab.frameworkCalls = true;
+        catalog.given.push_back(std::move(lab));
+    }
+    std::sort(catalog.given.begin(), catalog.given.end(), [](const auto& a, const auto& b) { return a.number < b.number; });
     for (LabDescription& lab : catalog.labs) {
         forgetGivenLabs(lab.uses, catalog.given);
         for (LabFigure& f : lab.figures) forgetGivenLabs(f.uses, catalog.given);
@@ -315,6 +336,7 @@ LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {
               [](const auto& a, const auto& b) { return a.number < b.number; });
     if (const std::optional<std::vector<int>> course = loadCourseList(courseFile(labs), catalog.numbers()))
         leaveOut(catalog, *course);
+    addGivenReferences(catalog, labs);
     std::map<std::string, const LabDescription*> figureOwner, fileOwner;
     for (std::size_t k = 0; k < catalog.labs.size(); ++k) {
         const LabDescription& lab = catalog.labs[k];

@@ -59,7 +59,8 @@ struct LabDescription {
 struct LabCatalog {
     std::vector<LabDescription> labs; // by number
     // The labs the course leaves out whose functions the framework calls: every program links their
-    // reference, and nothing grades, draws or reports them (by number). No lab's `uses` names them.
+    // reference, and nothing grades, draws or reports them (by number). No lab's `uses` names them. In
+    // a students' tree, only their number and id, from framework/given/<lab>/.
     std::vector<LabDescription> given;
 
     const LabDescription* lab(int number) const;

@@ -196,6 +196,17 @@ TEST_CASE("a lab the course leaves out is given when the framework calls its fun
     std::ofstream(course.root / "course.toml") << "labs = [1, 2]\n";
     course.lab("lab1_first", kLab1 + "framework_calls = true\n");
     CHECK(course.load().given.empty()); // handed out: graded as any lab
+
+    // A students' tree: no lab.toml of the given lab, its reference in framework/given/<lab>/.
+    fs::remove_all(course.root / "labs" / "lab1_first");
+    fs::create_directories(course.root / "framework" / "given" / "lab1_first");
+    std::ofstream(course.root / "course.toml") << "labs = [2]\n";
+    const LabCatalog students = course.load();
+    CHECK(students.numbers() == std::vector<int>{2});
+    REQUIRE(students.given.size() == 1);
+    CHECK(students.given[0].number == 1);
+    CHECK(students.given[0].id == "lab1_first");
+    CHECK(students.lab(2)->uses.empty());
 }
 
 TEST_CASE("the course's descriptions agree with the references and the scene files") {
