@@ -5,13 +5,13 @@
 # are the course's labs' alone (every point of theirs to the reference, the totals of their lab.toml);
 # `raylab distribute` writes a students' tree without the left-out labs' folders, the given labs'
 # reference in framework/given/ and no other solution; that tree builds, its stubs get no point, and
-# the solutions written into its labs get them all. The labs are whichever the tree has: the test
-# reads labs/, never a list of its own.
+# the solutions written into its labs get them all. Gradescope's zip builds and grades the course the
+# same way. The labs are whichever the tree has: the test reads labs/, never a list of its own.
 #
 #   cmake -DSTEP=<step> -DSOURCE=<tree> -DWORK=<scratch folder> [-DGENERATOR=Ninja] [-DCCACHE=<ccache>]
 #         -P tests/labs/course_subset.cmake
 # Steps (one ctest test each, in the trees the steps before left): copy, build, figures, grade,
-# distribute, students-build, students-stubs, students-written.
+# distribute, students-build, students-stubs, students-written, gradescope-setup, gradescope-run.
 
 foreach(var STEP SOURCE WORK)
   if(NOT ${var})
@@ -288,6 +288,41 @@ function(step_students_written)
   run(output 0 ${students}/build/bin/raylab --lang en grade --report ${WORK}/students-written)
   expect_grade("${output}" all)
   message(STATUS "course subset: labs ${kept_list} built, drawn, graded and handed out; given ${given}; absent ${absent}")
+endfunction()
+
+# 8. Gradescope's zip: the students' tree (the given labs' reference in framework/given/) and the
+# course's labs' reference in solutions/, which its setup.sh compiles once and deletes; unpacked as
+# Gradescope does, its setup.sh run without its package installation.
+set(autograder ${WORK}/autograder)
+function(step_gradescope_setup)
+  file(REMOVE_RECURSE ${autograder})
+  file(MAKE_DIRECTORY ${autograder}/source)
+  run(output 0 ${bin}/raylab autograder gradescope ${WORK}/autograder.zip)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E tar xf ${WORK}/autograder.zip WORKING_DIRECTORY ${autograder}/source
+                  RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "course subset: ${WORK}/autograder.zip does not unpack: ${status}")
+  endif()
+  folders_of(folders ${kept})
+  expect_files(${autograder}/source/raylab/solutions "${folders}" "the zip carries the course's labs' reference")
+  folders_of(folders ${given})
+  expect_files(${autograder}/source/raylab/framework/given "${folders}" "the zip carries the given labs' reference")
+  run(output 0 ${CMAKE_COMMAND} -E env RAYLAB_AUTOGRADER_ROOT=${autograder} RAYLAB_SKIP_PACKAGES=1
+      bash ${autograder}/source/setup.sh)
+endfunction()
+
+# 9. run_autograder on the solutions of the course's labs, handed in as labs/<lab>/: every point.
+function(step_gradescope_run)
+  file(REMOVE_RECURSE ${autograder}/submission ${autograder}/results)
+  foreach(n IN LISTS kept)
+    file(COPY ${SOURCE}/solutions/${folder_${n}} DESTINATION ${autograder}/submission/labs)
+  endforeach()
+  run(output 0 ${CMAKE_COMMAND} -E env RAYLAB_AUTOGRADER_ROOT=${autograder} LANG=C
+      bash ${autograder}/source/run_autograder)
+  file(READ ${autograder}/results/results.json results)
+  string(JSON text GET "${results}" output)
+  expect_grade("${text}" all)
+  message(STATUS "course subset: Gradescope's zip built and graded labs ${kept_list}, given ${given}")
 endfunction()
 
 run_step()
