@@ -87,15 +87,19 @@ std::map<std::string, fs::path> filesUnder(const fs::path& folder) {
 
 // The windows of solutions/ code that the stubs do not share, and the solution file each comes from.
 // The labs of `given` (a students' tree's framework/given/: the labs its course leaves out and the
-// framework calls) ship their reference on purpose: their solutions are left out.
+// framework calls) ship their reference on purpose: their solutions are left out, and their windows
+// are handed out as the stubs' are.
 class SolutionWindows {
 public:
     SolutionWindows(const SolutionWindows&) = delete; // the windows are views of its own texts
     SolutionWindows& operator=(const SolutionWindows&) = delete;
     SolutionWindows(const fs::path& solutions, const fs::path& stubs, const fs::path& given = {}) {
-        for (const auto& [relative, path] : filesUnder(stubs))
-            if (path.extension() == ".cpp" || path.extension() == ".h")
-                addWindows(m_stubs, m_texts.emplace_back(codeOnly(readFile(path))));
+        for (const fs::path& handedOut : {stubs, given}) {
+            if (handedOut.empty() || !fs::is_directory(handedOut)) continue;
+            for (const auto& [relative, path] : filesUnder(handedOut))
+                if (path.extension() == ".cpp" || path.extension() == ".h")
+                    addWindows(m_stubs, m_texts.emplace_back(codeOnly(readFile(path))));
+        }
         for (const auto& [relative, path] : filesUnder(solutions)) {
             if (path.extension() != ".cpp" && path.extension() != ".h") continue;
             if (!given.empty() && fs::is_directory(given / *fs::path(relative).begin())) continue;
