@@ -3,8 +3,9 @@
 // submissions of tests/ are patches against the solutions, which show their lines; the studies and tests that hold a lab's answer are
 // built only where solutions/ is). It builds, runs and self-grades on its own: the
 // labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's references (each
-// lab's framework/grader/labs/<lab>/references/) go with it. tests/grading/distribute_ships_no_solution.cpp
-// checks what it writes.
+// lab's framework/grader/labs/<lab>/references/) go with it, and the reference of each lab the course
+// gives (left out, the framework calls its functions) in framework/given/<lab>/.
+// tests/grading/distribute_ships_no_solution.cpp checks what it writes.
 #include "build_info.h"
 #include "commands.h"
 
@@ -147,6 +148,14 @@ int distribute(const fs::path& source, const fs::path& out) {
                                                    {"folder", out.string()},
                                                    {"build", kStudentsBuildCommand}})
                             .c_str());
+    const grader::LabCatalog course = courseCatalog(fs::canonical(source));
+    std::string given;
+    for (const grader::LabDescription& lab : course.given) given += (given.empty() ? "" : ", ") + std::to_string(lab.number);
+    if (!given.empty())
+        std::printf("%s\n", tr("distribute.given", {{"count", std::to_string(course.given.size())},
+                                                     {"labs", given},
+                                                     {"folder", out.string()}})
+                                .c_str());
     return 0;
 }
 

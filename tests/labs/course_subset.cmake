@@ -220,7 +220,11 @@ endfunction()
 # its own header) in framework/given/, of its grading folder only what registers it by name; nothing
 # of an absent lab; no solutions/.
 function(step_distribute)
-  run(output 0 ${bin}/raylab distribute ${students})
+  run(output 0 ${bin}/raylab --lang en distribute ${students})
+  if(given)
+    string(REPLACE ";" ", " given_list "${given}")
+    expect("${output}" "${given_list} given (course.toml leaves " "raylab distribute says which labs are given")
+  endif()
   folders_of(folders ${kept})
   expect_files(${students}/labs "${folders}" "the students' tree has the course's labs only")
   foreach(n IN LISTS given)
