@@ -89,21 +89,19 @@ void addGivenLabs(const fs::path& source, const grader::LabCatalog& course, std:
         std::error_code error;
         if (!fs::exists(source / "solutions" / lab.id, error) && fs::is_directory(source / "framework/given" / lab.id, error))
             continue; // a students' tree: its framework/given/ is copied as it is
-        std::size_t sources = 0;
-        for (const char* origin : {"solutions", "labs"}) {
-            std::error_code error;
-            for (const auto& entry : fs::directory_iterator(source / origin / lab.id, error)) {
-                const std::string extension = entry.path().extension().string();
-                if (!entry.is_regular_file() || (extension != ".cpp" && extension != ".h") ||
-                    (origin == std::string("labs") && extension == ".cpp"))
-                    continue;
-                files.push_back({fs::path("framework/given") / lab.id / entry.path().filename(), entry.path()});
-                sources += extension == ".cpp";
-            }
-        }
-        if (sources == 0)
+        const auto add = [&](const fs::path& folder, const std::string& extension) {
+            std::size_t added = 0;
+            for (const auto& entry : fs::directory_iterator(folder, error))
+                if (entry.is_regular_file() && entry.path().extension() == extension) {
+                    files.push_back({fs::path("framework/given") / lab.id / entry.path().filename(), entry.path()});
+                    ++added;
+                }
+            return added;
+        };
+        if (add(source / "solutions" / lab.id, ".cpp") == 0)
             throw std::runtime_error(tr("distribute.no_given_reference", {{"lab", std::to_string(lab.number)},
                                                                           {"folder", (source / "solutions" / lab.id).string()}}));
+        add(source / "labs" / lab.id, ".h");
     }
 }
 
