@@ -218,7 +218,7 @@ endfunction()
 
 # 4. The students' tree: the course's labs and list; a given lab's reference (its solutions' files and
 # its own header) in framework/given/, of its grading folder only what registers it by name; nothing
-# of an absent lab; no solutions/.
+# of an absent lab; no solutions/. GitHub Classroom's tree the same.
 function(step_distribute)
   run(output 0 ${bin}/raylab --lang en distribute ${students})
   if(given)
@@ -257,6 +257,23 @@ function(step_distribute)
   endif()
   file(READ ${students}/course.toml course)
   expect("${course}" "labs = [${kept_list}]" "the students' tree has the course's list")
+  # GitHub Classroom's tree is the same students' tree, its workflow a step per item of the course's labs.
+  run(output 0 ${bin}/raylab autograder github ${WORK}/classroom)
+  folders_of(folders ${kept})
+  expect_files(${WORK}/classroom/labs "${folders}" "the Classroom tree has the course's labs only")
+  folders_of(folders ${given})
+  expect_files(${WORK}/classroom/framework/given "${folders}" "the Classroom tree has the given labs' reference")
+  file(READ ${WORK}/classroom/.github/workflows/classroom.yml workflow)
+  expect_none_left_out("${workflow}" "classroom.yml")
+  foreach(n IN LISTS kept)
+    expect("${workflow}" "id: lab${n}-" "classroom.yml has lab ${n}'s steps")
+  endforeach()
+  foreach(n IN LISTS left_out)
+    string(FIND "${workflow}" "id: lab${n}-" at)
+    if(NOT at EQUAL -1)
+      message(FATAL_ERROR "course subset: classroom.yml has a step of lab ${n}, which the course leaves out")
+    endif()
+  endforeach()
 endfunction()
 
 # 5. The students' tree builds on its own (no solutions/: the given labs from framework/given/).
