@@ -14,11 +14,12 @@ packages=(g++ cmake make patch pkg-config libglm-dev libstb-dev zlib1g-dev docte
 # The test suite: python3 (the tests parse junit.xml with its XML parser), chromium (raylab report's
 # HTML in a headless browser, and its fonts), mmdebstrap (the Gradescope zip set up in a bare Debian),
 # similarity-tester (sim_c++: the class page's similar submissions, which grade-class finds with it
-# where it is installed). A test whose package is missing is skipped, saying so (tests/support/needs.h).
+# where it is installed; Debian 13 has no such package). A test whose package is missing is skipped,
+# saying so (tests/support/needs.h).
 test_packages=(python3 chromium fonts-dejavu-core mmdebstrap similarity-tester)
 # What some archives lack, which costs tests only (skipped): Ubuntu has no chromium package but a snap's
-# (chromium-browser, which a container cannot run).
-declare -A optional=([chromium]=1 [fonts-dejavu-core]=1)
+# (chromium-browser, which a container cannot run); Debian 13 has no similarity-tester.
+declare -A optional=([chromium]=1 [fonts-dejavu-core]=1 [similarity-tester]=1)
 # The workflow presets (README.md's commands) need CMake 3.25.
 cmake_needed=3.25
 # Headers that a tree made by `raylab autograder` carries in third_party/ where the distribution lacks
