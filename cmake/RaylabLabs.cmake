@@ -5,6 +5,11 @@
 # The labs are found, not listed: every labs/lab<N>_<name>/lab.toml is lab N, whose id is its
 # folder's name; those of the course's list (course.toml) are built. Sets RAYLAB_LAB_NUMBERS (the
 # course's, sorted), RAYLAB_LAB_FOLDER_<n> and RAYLAB_LABS (their folders, in the order of their numbers).
+# A lab the course leaves out whose functions the framework itself calls (lab.toml's `framework_calls =
+# true`: members of framework classes) is given: every program links its reference, as part of the
+# framework, and nothing grades it. RAYLAB_GIVEN_LAB_NUMBERS lists them. Its reference is solutions/<lab>/
+# where the tree has it, else framework/given/<lab>/, which `raylab distribute` writes for a students'
+# tree (there each folder of framework/given/ is a given lab: its lab.toml is not handed out).
 
 #
 # The reference labs are solutions/<lab folder>/*.cpp, or, in Gradescope's image, the objects compiled
@@ -52,6 +57,27 @@ function(raylab_course_labs out)
   set(${out} ${listed} PARENT_SCOPE)
 endfunction()
 
+# raylab_framework_calls(OUT FILE): whether lab.toml FILE says `framework_calls = true`, a key of its
+# heading (before its first [table]); the grader's catalogue reads the same key strictly. CMake cannot
+# parse TOML: the key is one line.
+function(raylab_framework_calls out file)
+  set_property(DIRECTORY ${CMAKE_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${file})
+  file(STRINGS ${file} lines REGEX "^[ \t]*(framework_calls[ \t]*=|\\[)")
+  set(value OFF)
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^[ \t]*\\[")
+      break()
+    endif()
+    if(NOT line MATCHES "^[ \t]*framework_calls[ \t]*=[ \t]*(true|false)[ \t]*(#.*)?$")
+      message(FATAL_ERROR "${file}: expected one line `framework_calls = true` (or false): ${line}")
+    endif()
+    if(CMAKE_MATCH_1 STREQUAL "true")
+      set(value ON)
+    endif()
+  endforeach()
+  set(${out} ${value} PARENT_SCOPE)
+endfunction()
+
 # A lab's number and id come from its folder's name, lab<N>_<name> (N without a leading zero), not
 # from lab.toml, which CMake cannot parse; the grader's catalogue (framework/grader/lab_catalog.cpp)
 # checks that lab.toml's `number` and `id` say the same.
@@ -69,7 +95,9 @@ foreach(file IN LISTS raylab_lab_files)
   endif()
   list(APPEND RAYLAB_LAB_NUMBERS ${number})
   set(RAYLAB_LAB_FOLDER_${number} ${folder})
+  raylab_framework_calls(RAYLAB_LAB_FRAMEWORK_CALLS_${number} ${file})
 endforeach()
+set(raylab_found_labs ${RAYLAB_LAB_NUMBERS})
 if(NOT RAYLAB_LAB_NUMBERS)
   message(FATAL_ERROR "no lab: there is no labs/lab*/lab.toml")
 endif()
@@ -80,6 +108,44 @@ foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
   list(APPEND RAYLAB_LABS ${RAYLAB_LAB_FOLDER_${n}})
 endforeach()
 message(STATUS "raylab labs: ${RAYLAB_LABS}")
+set(RAYLAB_GIVEN_LAB_NUMBERS "")
+foreach(n IN LISTS raylab_found_labs)
+  if(RAYLAB_LAB_FRAMEWORK_CALLS_${n} AND NOT n IN_LIST RAYLAB_LAB_NUMBERS)
+    list(APPEND RAYLAB_GIVEN_LAB_NUMBERS ${n})
+  endif()
+endforeach()
+# A students' tree has no lab.toml of a given lab, only its reference (raylab distribute).
+file(GLOB given_paths LIST_DIRECTORIES true ${CMAKE_SOURCE_DIR}/framework/given/lab*)
+foreach(path IN LISTS given_paths)
+  get_filename_component(folder ${path} NAME)
+  if(IS_DIRECTORY ${path} AND folder MATCHES "^lab([1-9][0-9]*)_.")
+    set(n ${CMAKE_MATCH_1})
+    if(NOT DEFINED RAYLAB_LAB_FOLDER_${n})
+      set(RAYLAB_LAB_FOLDER_${n} ${folder})
+      list(APPEND RAYLAB_GIVEN_LAB_NUMBERS ${n})
+    endif()
+  endif()
+endforeach()
+list(SORT RAYLAB_GIVEN_LAB_NUMBERS COMPARE NATURAL)
+set(given_folders "")
+foreach(n IN LISTS RAYLAB_GIVEN_LAB_NUMBERS)
+  list(APPEND given_folders ${RAYLAB_LAB_FOLDER_${n}})
+endforeach()
+if(given_folders)
+  message(STATUS "raylab labs given (their reference, part of the framework): ${given_folders}")
+endif()
+
+# raylab_lab_header_folder(OUT N): the folder of lab N's own header, labs/<lab>/<name>.h (it declares the
+# functions a student writes that no framework class declares: the stub, the solution and the lab's
+# grading folder include it); a given lab's in a students' tree is framework/given/<lab>/.
+function(raylab_lab_header_folder out n)
+  set(folder ${RAYLAB_LAB_FOLDER_${n}})
+  if(n IN_LIST RAYLAB_GIVEN_LAB_NUMBERS AND NOT EXISTS ${CMAKE_SOURCE_DIR}/labs/${folder})
+    set(${out} ${CMAKE_SOURCE_DIR}/framework/given/${folder} PARENT_SCOPE)
+  else()
+    set(${out} ${CMAKE_SOURCE_DIR}/labs/${folder} PARENT_SCOPE)
+  endif()
+endfunction()
 
 # raylab_lab_shadings(TARGET N): TARGET (lab N's code, from wherever) also brings what lab N registers
 # by name outside the student's files, from framework/grader/labs/<lab>/: shadings.cpp, the pictures
@@ -101,7 +167,8 @@ function(raylab_lab_shadings target n)
   if(NOT TARGET ${shadings})
     add_library(${shadings} OBJECT ${sources})
     target_link_libraries(${shadings} PRIVATE raylab_framework raylab_internals raylab_warnings)
-    target_include_directories(${shadings} PRIVATE ${CMAKE_SOURCE_DIR}/labs/${RAYLAB_LAB_FOLDER_${n}}) # the lab's header
+    raylab_lab_header_folder(header_folder ${n})
+    target_include_directories(${shadings} PRIVATE ${header_folder})
     # Its lab, for RAYLAB_REGISTER_FIGURE_STEP: the grading folder's name.
     target_compile_definitions(${shadings} PRIVATE RAYLAB_LAB_ID="${RAYLAB_LAB_FOLDER_${n}}")
   endif()
@@ -112,34 +179,44 @@ function(raylab_lab_shadings target n)
   endif()
 endfunction()
 
-# raylab_lab_target(OUT N ORIGIN): the object library of lab N from ORIGIN (labs or solutions).
+# raylab_lab_target(OUT N ORIGIN): the object library of lab N from ORIGIN: labs, solutions, or given (a
+# given lab's reference: solutions/ where the tree has it, else framework/given/).
 function(raylab_lab_target out n origin)
   set(folder ${RAYLAB_LAB_FOLDER_${n}})
   if(NOT folder)
     message(FATAL_ERROR "there is no lab ${n} (the labs are ${RAYLAB_LAB_NUMBERS})")
   endif()
+  set(dir ${origin}/${folder})
+  if(origin STREQUAL "given")
+    file(GLOB reference ${CMAKE_SOURCE_DIR}/solutions/${folder}/*)
+    if(reference)
+      raylab_lab_target(target ${n} solutions)
+      set(${out} ${target} PARENT_SCOPE)
+      return()
+    endif()
+    set(dir framework/given/${folder})
+  endif()
+  raylab_lab_header_folder(header_folder ${n})
   set(target raylab_lab${n}_${origin})
   if(NOT TARGET ${target})
-    file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/${origin}/${folder}/*.cpp)
-    file(GLOB objects ${CMAKE_SOURCE_DIR}/${origin}/${folder}/*${CMAKE_CXX_OUTPUT_EXTENSION})
+    file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/${dir}/*.cpp)
+    file(GLOB objects ${CMAKE_SOURCE_DIR}/${dir}/*${CMAKE_CXX_OUTPUT_EXTENSION})
     if(NOT sources AND objects AND origin STREQUAL "solutions")
       # The reference compiled by the zip's setup.sh, its sources deleted.
       add_library(${target} OBJECT IMPORTED GLOBAL)
       set_target_properties(${target} PROPERTIES IMPORTED_OBJECTS "${objects}")
       target_link_libraries(${target} INTERFACE raylab_framework)
-      target_include_directories(${target} INTERFACE ${CMAKE_SOURCE_DIR}/labs/${folder})
+      target_include_directories(${target} INTERFACE ${header_folder})
       raylab_lab_shadings(${target} ${n})
       set(${out} ${target} PARENT_SCOPE)
       return()
     endif()
     if(NOT sources)
-      message(FATAL_ERROR "${origin}/${folder} has no .cpp file")
+      message(FATAL_ERROR "${dir} has no .cpp file")
     endif()
     add_library(${target} OBJECT ${sources})
     target_link_libraries(${target} PUBLIC raylab_framework PRIVATE raylab_warnings)
-    # The lab's own header, labs/<lab>/<name>.h, declares the functions a student writes that no
-    # framework class declares: the stub, the solution and the lab's grading folder include it.
-    target_include_directories(${target} PUBLIC ${CMAKE_SOURCE_DIR}/labs/${folder})
+    target_include_directories(${target} PUBLIC ${header_folder}) # the lab's own header
     raylab_lab_shadings(${target} ${n})
     if(origin STREQUAL "labs")
       # A stub's one-line body ignores its parameters on purpose. On the sources, not the target: their
@@ -150,8 +227,17 @@ function(raylab_lab_target out n origin)
   set(${out} ${target} PARENT_SCOPE)
 endfunction()
 
-# raylab_link_labs(TARGET REFERENCE_LABS): links every lab, those listed from solutions/.
-# Sets RAYLAB_LAB_ORIGINS on the target's compile definitions ("lab1=labs lab2=solutions ...").
+# raylab_link_given_labs(TARGET): links the given labs' reference (none when the course hands out every
+# lab the framework calls).
+function(raylab_link_given_labs target)
+  foreach(n IN LISTS RAYLAB_GIVEN_LAB_NUMBERS)
+    raylab_lab_target(lab ${n} given)
+    target_link_libraries(${target} PRIVATE ${lab})
+  endforeach()
+endfunction()
+
+# raylab_link_labs(TARGET REFERENCE_LABS): links every lab, those listed from solutions/, and the given labs.
+# Sets RAYLAB_LAB_ORIGINS on the target's compile definitions ("lab1=labs lab2=solutions lab5=given ...").
 function(raylab_link_labs target)
   set(reference_labs ${ARGN})
   set(origins "")
@@ -167,6 +253,10 @@ function(raylab_link_labs target)
     raylab_lab_target(lab ${n} ${origin})
     target_link_libraries(${target} PRIVATE ${lab})
     string(APPEND origins "lab${n}=${origin} ")
+  endforeach()
+  raylab_link_given_labs(${target})
+  foreach(n IN LISTS RAYLAB_GIVEN_LAB_NUMBERS)
+    string(APPEND origins "lab${n}=given ")
   endforeach()
   string(STRIP "${origins}" origins)
   target_link_libraries(${target} PRIVATE raylab_framework)

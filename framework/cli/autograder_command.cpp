@@ -88,10 +88,10 @@ int writeGradescopeZip(const fs::path& zip, const Context& context) {
     std::vector<ZipEntry> entries{{"setup.sh", {}, gradescopeSetupScript(), true},
                                   {"run_autograder", {}, gradescopeRunScript(), true}};
     const fs::path source = fs::canonical(build::kSourceDir);
-    for (const fs::path& relative : studentTreeFiles(source)) {
-        if (relative.begin()->string() == "third_party") continue; // written again below
-        const fs::perms perms = fs::status(source / relative).permissions();
-        entries.push_back({"raylab/" + relative.generic_string(), source / relative, {},
+    for (const TreeFile& file : studentTreeFiles(source)) {
+        if (file.relative.begin()->string() == "third_party") continue; // written again below
+        const fs::perms perms = fs::status(file.source).permissions();
+        entries.push_back({"raylab/" + file.relative.generic_string(), file.source, {},
                            (perms & fs::perms::owner_exec) != fs::perms::none});
     }
     for (ZipEntry& e : thirdPartyEntries()) entries.push_back(std::move(e));

@@ -120,10 +120,17 @@ void remakeClassPage(const std::filesystem::path& out, const std::vector<grader:
 // --roster's file read, or an error naming it and the problem; nothing when `roster` is empty.
 std::vector<grader::RosterEntry> classRoster(const std::string& roster);
 
-// The files of the students' tree (relative to `source`): all but the solutions and what would give
-// them away. writeStudentTree copies them into `out` (new or empty), the students' README over the
-// instructors', and returns how many files it wrote.
-std::vector<std::filesystem::path> studentTreeFiles(const std::filesystem::path& source);
+// A file of the students' tree: where it goes in the tree, and the file of the source tree it is.
+struct TreeFile {
+    std::filesystem::path relative;
+    std::filesystem::path source;
+};
+
+// The files of the students' tree: all but the solutions and what would give them away, and the
+// reference of each given lab in framework/given/<lab>/ (its solutions' files and its own header: the
+// course leaves it out, and the framework calls its functions). writeStudentTree copies them into
+// `out` (new or empty), the students' README over the instructors', and returns how many files it wrote.
+std::vector<TreeFile> studentTreeFiles(const std::filesystem::path& source);
 int writeStudentTree(const std::filesystem::path& source, const std::filesystem::path& out);
 
 // The one command that builds the students' tree and runs its tests, as its README and `raylab

@@ -3,8 +3,9 @@
 // submissions of tests/ are patches against the solutions, which show their lines; the studies and tests that hold a lab's answer are
 // built only where solutions/ is). It builds, runs and self-grades on its own: the
 // labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's references (each
-// lab's framework/grader/labs/<lab>/references/) go with it. tests/grading/distribute_ships_no_solution.cpp
-// checks what it writes.
+// lab's framework/grader/labs/<lab>/references/) go with it, and the reference of each lab the course
+// gives (left out, the framework calls its functions) in framework/given/<lab>/.
+// tests/grading/distribute_ships_no_solution.cpp checks what it writes.
 #include "build_info.h"
 #include "commands.h"
 
@@ -51,15 +52,27 @@ const std::set<std::string> kWithheld{"solutions", "tests/variants", "tests/grad
 
 // The labs' folders that are not handed out: every lab's in solutions/ (kWithheld), its mistakes'
 // patches (against the solutions, they show their lines), and in labs/ and the grading folders those
-// of the labs the course's list (course.toml) leaves out: absent, not a zero.
+// of the labs the course's list (course.toml) leaves out: absent, not a zero. A given lab keeps, of its
+// grading folder, what registers it by name (its shadings and figure steps, cmake/RaylabLabs.cmake).
 std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::LabCatalog& course) {
     std::set<std::string> folders;
     for (const auto& entry : fs::directory_iterator(source / "labs")) {
         const std::string id = entry.path().filename().string();
-        folders.insert("framework/grader/labs/" + id + "/mistakes");
+        const std::string grading = "framework/grader/labs/" + id;
+        folders.insert(grading + "/mistakes");
         if (!entry.is_directory() || course.labOfId(id) != nullptr) continue;
         folders.insert("labs/" + id);
-        folders.insert("framework/grader/labs/" + id);
+        const bool given = std::any_of(course.given.begin(), course.given.end(),
+                                       [&](const grader::LabDescription& l) { return l.id == id; });
+        if (!given) {
+            folders.insert(grading);
+            continue;
+        }
+        std::error_code error;
+        for (const auto& part : fs::directory_iterator(source / grading, error)) {
+            const std::string name = part.path().filename().string();
+            if (name != "shadings.cpp" && name != "figure_steps.cpp") folders.insert(grading + "/" + name);
+        }
     }
     return folders;
 }
@@ -71,20 +84,45 @@ bool withheld(const fs::path& relative, const std::set<std::string>& labFolders)
     return top.rfind("build", 0) == 0; // build folders
 }
 
+// framework/given/<lab>/ of each given lab: its reference (solutions/<lab>/) and its own header
+// (labs/<lab>/*.h), which CMake compiles where the students' tree has no solutions/.
+void addGivenLabs(const fs::path& source, const grader::LabCatalog& course, std::vector<TreeFile>& files) {
+    for (const grader::LabDescription& lab : course.given) {
+        std::error_code error;
+        if (!fs::exists(source / "solutions" / lab.id, error) && fs::is_directory(source / "framework/given" / lab.id, error))
+            continue; // a students' tree: its framework/given/ is copied as it is
+        const auto add = [&](const fs::path& folder, const std::string& extension) {
+            std::size_t added = 0;
+            for (const auto& entry : fs::directory_iterator(folder, error))
+                if (entry.is_regular_file() && entry.path().extension() == extension) {
+                    files.push_back({fs::path("framework/given") / lab.id / entry.path().filename(), entry.path()});
+                    ++added;
+                }
+            return added;
+        };
+        if (add(source / "solutions" / lab.id, ".cpp") == 0)
+            throw std::runtime_error(tr("distribute.no_given_reference", {{"lab", std::to_string(lab.number)},
+                                                                          {"folder", (source / "solutions" / lab.id).string()}}));
+        add(source / "labs" / lab.id, ".h");
+    }
+}
+
 } // namespace
 
-std::vector<fs::path> studentTreeFiles(const fs::path& source) {
+std::vector<TreeFile> studentTreeFiles(const fs::path& source) {
     const fs::path sourceAbs = fs::canonical(source);
-    const std::set<std::string> labFolders = labFoldersWithheld(sourceAbs, courseCatalog(sourceAbs));
-    std::vector<fs::path> files;
+    const grader::LabCatalog course = courseCatalog(sourceAbs);
+    const std::set<std::string> labFolders = labFoldersWithheld(sourceAbs, course);
+    std::vector<TreeFile> files;
     for (auto it = fs::recursive_directory_iterator(sourceAbs); it != fs::recursive_directory_iterator(); ++it) {
         const fs::path relative = it->path().lexically_relative(sourceAbs); // fs::relative would follow links
         if (withheld(relative, labFolders) || it->is_symlink()) {
             if (it->is_directory()) it.disable_recursion_pending();
             continue;
         }
-        if (it->is_regular_file()) files.push_back(relative);
+        if (it->is_regular_file()) files.push_back({relative, it->path()});
     }
+    addGivenLabs(sourceAbs, course, files);
     return files;
 }
 
@@ -92,14 +130,13 @@ int writeStudentTree(const fs::path& source, const fs::path& out) {
     std::error_code error;
     if (fs::exists(out, error) && !fs::is_empty(out, error))
         throw std::invalid_argument(out.string() + " exists and is not empty; choose a new folder");
-    const std::vector<fs::path> files = studentTreeFiles(source); // before `out` exists: never inside it
-    const fs::path sourceAbs = fs::canonical(source);
-    for (const fs::path& relative : files) {
-        fs::create_directories((out / relative).parent_path());
-        fs::copy_file(sourceAbs / relative, out / relative, fs::copy_options::overwrite_existing);
+    const std::vector<TreeFile> files = studentTreeFiles(source); // before `out` exists: never inside it
+    for (const TreeFile& file : files) {
+        fs::create_directories((out / file.relative).parent_path());
+        fs::copy_file(file.source, out / file.relative, fs::copy_options::overwrite_existing);
     }
-    writeStudentsReadme(out, courseCatalog(sourceAbs));
-    const bool hadReadme = std::find(files.begin(), files.end(), fs::path("README.md")) != files.end();
+    writeStudentsReadme(out, courseCatalog(fs::canonical(source)));
+    const bool hadReadme = std::any_of(files.begin(), files.end(), [](const TreeFile& f) { return f.relative == "README.md"; });
     return int(files.size()) + (hadReadme ? 1 : 2); // LISEZMOI.md, and README.md where there was none
 }
 
@@ -111,6 +148,14 @@ int distribute(const fs::path& source, const fs::path& out) {
                                                    {"folder", out.string()},
                                                    {"build", kStudentsBuildCommand}})
                             .c_str());
+    const grader::LabCatalog course = courseCatalog(fs::canonical(source));
+    std::string given;
+    for (const grader::LabDescription& lab : course.given) given += (given.empty() ? "" : ", ") + std::to_string(lab.number);
+    if (!given.empty())
+        std::printf("%s\n", tr("distribute.given", {{"count", std::to_string(course.given.size())},
+                                                     {"labs", given},
+                                                     {"folder", out.string()}})
+                                .c_str());
     return 0;
 }
 

@@ -9,6 +9,7 @@
 #include "src/figure_steps.h"
 #include "src/messages.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
@@ -170,8 +171,12 @@ extern "C" void onCrash(int signal) {
 void callOneAtATime(const SceneDescription& d, const RenderOptions& options, const grader::LabCatalog& labs, int fd) {
     g_crashFd = fd;
     for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, onCrash);
+    std::vector<const grader::LabDescription*> inOrder; // a given lab's steps in its place (its camera makes the rays)
+    for (const auto* list : {&labs.labs, &labs.given})
+        for (const grader::LabDescription& lab : *list) inOrder.push_back(&lab);
+    std::sort(inOrder.begin(), inOrder.end(), [](const auto* a, const auto* b) { return a->number < b->number; });
     std::vector<std::string> order;
-    for (const grader::LabDescription& lab : labs.labs) order.push_back(lab.id);
+    for (const grader::LabDescription* lab : inOrder) order.push_back(lab->id);
     try {
         runFigureSteps(d, options, order, [](const std::string& function) { g_inFunction = function.c_str(); });
     } catch (...) { // a stub or an error: not a crash, and the figure's own result says it

@@ -101,6 +101,7 @@ void readHeading(const TomlReader& r, const toml::table& root, const fs::path& f
     std::tie(lab.titleEn, lab.titleFr) = inTwoLanguages(r, root, "", "title");
     lab.uses = labs(r, root, "").value_or(std::vector<int>{});
     if (contains(lab.uses, lab.number)) r.fail(root.get("uses"), "uses", "a lab does not use itself");
+    lab.frameworkCalls = r.boolean(root, "", "framework_calls").value_or(false);
 }
 
 std::vector<LabFunction> readFunctions(const TomlReader& r, const toml::table& root, const fs::path& file) {
@@ -166,6 +167,49 @@ void rejectDuplicateNames(const TomlReader& r, const toml::table& root, const La
         if (seen[f.id]++) r.fail(root.get("figure"), "figure", "the id " + f.id + " is there twice");
     for (const LabCheck& c : lab.checks)
         if (seen[c.name]++) r.fail(root.get("check"), "check", "the name \"" + c.name + "\" is there twice");
+}
+
+// A given lab is the framework's: what uses it uses the framework, not a lab graded on its own.
+void forgetGivenLabs(std::vector<int>& uses, const std::vector<LabDescription>& given) {
+    std::erase_if(uses, [&](int n) {
+        return std::any_of(given.begin(), given.end(), [&](const LabDescription& g) { return g.number == n; });
+    });
+}
+
+// Keeps the labs of the course's list; of the others, those whose functions the framework calls are given.
+void leaveOut(LabCatalog& catalog, const std::vector<int>& course) {
+    std::vector<LabDescription> kept;
+    for (LabDescription& lab : catalog.labs) {
+        if (contains(course, lab.number)) kept.push_back(std::move(lab));
+        else if (lab.frameworkCalls) catalog.given.push_back(std::move(lab));
+    }
+    catalog.labs = std::move(kept);
+}
+
+// A students' tree has no lab.toml of a given lab, only its reference, framework/given/<lab>/ (`raylab
+// distribute`), whose folder's name says its number and id. Then no lab's `uses` names a given lab.
+void addGivenReferences(LabCatalog& catalog, const fs::path& labs) {
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(labs.parent_path() / "framework" / "given", error)) {
+        const std::string id = entry.path().filename().string();
+        const std::optional<int> number = folderNumber(id);
+        const auto known = [&](const LabDescription& l) { return number && l.number == *number; };
+        if (!entry.is_directory() || !number || std::any_of(catalog.labs.begin(), catalog.labs.end(), known) ||
+            std::any_of(catalog.given.begin(), catalog.given.end(), known))
+            continue;
+        LabDescription lab;
+        lab.file = entry.path();
+        lab.number = *number;
+        lab.id = id;
+        lab.frameworkCalls = true;
+        catalog.given.push_back(std::move(lab));
+    }
+    std::sort(catalog.given.begin(), catalog.given.end(), [](const auto& a, const auto& b) { return a.number < b.number; });
+    for (LabDescription& lab : catalog.labs) {
+        forgetGivenLabs(lab.uses, catalog.given);
+        for (LabFigure& f : lab.figures) forgetGivenLabs(f.uses, catalog.given);
+        for (LabCheck& c : lab.checks) forgetGivenLabs(c.uses, catalog.given);
+    }
 }
 
 } // namespace
@@ -239,7 +283,7 @@ double LabCatalog::figurePoints(const std::string& id, double fallback) const {
 LabDescription loadLabDescription(const fs::path& file, const fs::path& scenes) {
     const toml::table root = parseTomlFile(file);
     const TomlReader r(file);
-    r.onlyKeys(root, "", {"number", "id", "title", "uses", "function", "figure", "check"});
+    r.onlyKeys(root, "", {"number", "id", "title", "uses", "framework_calls", "function", "figure", "check"});
     LabDescription lab;
     lab.file = file;
     readHeading(r, root, file, lab);
@@ -291,7 +335,8 @@ LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {
     std::sort(catalog.labs.begin(), catalog.labs.end(),
               [](const auto& a, const auto& b) { return a.number < b.number; });
     if (const std::optional<std::vector<int>> course = loadCourseList(courseFile(labs), catalog.numbers()))
-        std::erase_if(catalog.labs, [&](const LabDescription& l) { return !contains(*course, l.number); });
+        leaveOut(catalog, *course);
+    addGivenReferences(catalog, labs);
     std::map<std::string, const LabDescription*> figureOwner, fileOwner;
     for (std::size_t k = 0; k < catalog.labs.size(); ++k) {
         const LabDescription& lab = catalog.labs[k];

@@ -42,6 +42,9 @@ struct LabDescription {
     std::string titleEn, titleFr;
     std::vector<LabFunction> functions;
     std::vector<int> uses; // every lab a figure or a check of this one uses
+    // The framework itself calls its functions (members of framework classes): a course that leaves it
+    // out links its reference instead, "given" (lab.toml's framework_calls).
+    bool frameworkCalls = false;
     std::vector<LabFigure> figures;
     std::vector<LabCheck> checks;
 
@@ -55,6 +58,10 @@ struct LabDescription {
 
 struct LabCatalog {
     std::vector<LabDescription> labs; // by number
+    // The labs the course leaves out whose functions the framework calls: every program links their
+    // reference, and nothing grades, draws or reports them (by number). No lab's `uses` names them. In
+    // a students' tree, only their number and id, from framework/given/<lab>/.
+    std::vector<LabDescription> given;
 
     const LabDescription* lab(int number) const;
     const LabDescription* labOfId(const std::string& id) const; // by its folder's name
@@ -87,8 +94,9 @@ std::vector<SceneDescription> loadFiguresInLabOrder(const std::filesystem::path&
 std::vector<std::filesystem::path> sceneFolders(const LabCatalog& labs);
 
 // Every <labs>/lab*/lab.toml, checked together (numbers and figure ids unique, `uses` names labs
-// that exist), those of the course's list (course.toml beside <labs>, course_list.h) kept; throws
-// std::runtime_error naming the file, line and key.
+// that exist), those of the course's list (course.toml beside <labs>, course_list.h) kept, those it
+// leaves out whose functions the framework calls given; throws std::runtime_error naming the file,
+// line and key.
 LabCatalog loadLabCatalog(const std::filesystem::path& labs, const std::filesystem::path& scenes = {});
 
 } // namespace raylab::grader

@@ -86,16 +86,23 @@ std::map<std::string, fs::path> filesUnder(const fs::path& folder) {
 }
 
 // The windows of solutions/ code that the stubs do not share, and the solution file each comes from.
+// The labs of `given` (a students' tree's framework/given/: the labs its course leaves out and the
+// framework calls) ship their reference on purpose: their solutions are left out, and their windows
+// are handed out as the stubs' are.
 class SolutionWindows {
 public:
     SolutionWindows(const SolutionWindows&) = delete; // the windows are views of its own texts
     SolutionWindows& operator=(const SolutionWindows&) = delete;
-    SolutionWindows(const fs::path& solutions, const fs::path& stubs) {
-        for (const auto& [relative, path] : filesUnder(stubs))
-            if (path.extension() == ".cpp" || path.extension() == ".h")
-                addWindows(m_stubs, m_texts.emplace_back(codeOnly(readFile(path))));
+    SolutionWindows(const fs::path& solutions, const fs::path& stubs, const fs::path& given = {}) {
+        for (const fs::path& handedOut : {stubs, given}) {
+            if (handedOut.empty() || !fs::is_directory(handedOut)) continue;
+            for (const auto& [relative, path] : filesUnder(handedOut))
+                if (path.extension() == ".cpp" || path.extension() == ".h")
+                    addWindows(m_stubs, m_texts.emplace_back(codeOnly(readFile(path))));
+        }
         for (const auto& [relative, path] : filesUnder(solutions)) {
             if (path.extension() != ".cpp" && path.extension() != ".h") continue;
+            if (!given.empty() && fs::is_directory(given / *fs::path(relative).begin())) continue;
             const std::string& code = m_texts.emplace_back(codeOnly(readFile(path)));
             for (std::size_t k = 0; k + kWindow <= code.size(); ++k) {
                 const std::string_view window = std::string_view(code).substr(k, kWindow);
@@ -192,8 +199,11 @@ TEST_SUITE("distribute") {
         REQUIRE_MESSAGE(
             fs::exists(kTree / "labs/lab3_sphere/sphere_geometry.cpp"),
             kTree.string() << " holds no students' tree: run this test through ctest, whose fixture writes it");
-        const std::vector<std::string> found = leaks(kTree, SolutionWindows(kSource / "solutions", kSource / "labs"));
+        const fs::path given = kTree / "framework/given";
+        const std::vector<std::string> found = leaks(kTree, SolutionWindows(kSource / "solutions", kSource / "labs", given));
         CHECK_MESSAGE(found.empty(), found.size() << " files of the students' tree hold solution code:" << lines(found));
+        for (const auto& entry : fs::directory_iterator(kTree / "labs")) // a lab handed out is never given
+            CHECK_MESSAGE(!fs::exists(given / entry.path().filename()), entry.path().filename() << " is handed out and given");
     }
 
 } // TEST_SUITE

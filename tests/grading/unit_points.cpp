@@ -172,6 +172,43 @@ TEST_CASE("a lab's files: each declared once, in order, and no two labs share a 
     CHECK(real.lab(3)->files() == std::vector<std::string>{"sphere_geometry.cpp", "ray_cast_integrator.cpp"});
 }
 
+TEST_CASE("a lab the course leaves out is given when the framework calls its functions, else absent") {
+    const Course course;
+    course.scene("lab2_picture");
+    course.lab("lab1_first", kLab1 + "framework_calls = true\n");
+    course.lab("lab2_rays", kLab2);
+    std::ofstream(course.root / "course.toml") << "labs = [2]\n";
+    const LabCatalog catalog = course.load();
+    CHECK(catalog.numbers() == std::vector<int>{2});
+    REQUIRE(catalog.given.size() == 1);
+    CHECK(catalog.given[0].number == 1);
+    CHECK(catalog.given[0].frameworkCalls);
+    CHECK(catalog.lab(1) == nullptr); // not graded
+    CHECK(catalog.lab(2)->uses.empty()); // the given lab is the framework's
+    CHECK(catalog.figure("lab2_picture")->uses.empty());
+    CHECK(catalog.lab(2)->check("trace: another check")->uses.empty());
+    CHECK_FALSE(catalog.lab(2)->frameworkCalls);
+
+    course.lab("lab1_first", kLab1); // its own functions only: left out, it is absent, and lab 2 cannot use it
+    CHECK_THROWS_WITH_AS(course.load(), doctest::Contains("uses: there is no lab 1"), std::runtime_error);
+    course.lab("lab1_first", kLab1 + "framework_calls = \"yes\"\n");
+    CHECK_THROWS_WITH_AS(course.load(), doctest::Contains("lab.toml:4: framework_calls: expected true or false"), std::runtime_error);
+    std::ofstream(course.root / "course.toml") << "labs = [1, 2]\n";
+    course.lab("lab1_first", kLab1 + "framework_calls = true\n");
+    CHECK(course.load().given.empty()); // handed out: graded as any lab
+
+    // A students' tree: no lab.toml of the given lab, its reference in framework/given/<lab>/.
+    fs::remove_all(course.root / "labs" / "lab1_first");
+    fs::create_directories(course.root / "framework" / "given" / "lab1_first");
+    std::ofstream(course.root / "course.toml") << "labs = [2]\n";
+    const LabCatalog students = course.load();
+    CHECK(students.numbers() == std::vector<int>{2});
+    REQUIRE(students.given.size() == 1);
+    CHECK(students.given[0].number == 1);
+    CHECK(students.given[0].id == "lab1_first");
+    CHECK(students.lab(2)->uses.empty());
+}
+
 TEST_CASE("the course's descriptions agree with the references and the scene files") {
     const LabCatalog catalog = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs");
     std::vector<fs::path> folders;

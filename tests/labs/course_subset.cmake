@@ -1,14 +1,17 @@
-# A course that hands out fewer labs: in a copy of the tree whose course.toml leaves out its first lab,
-# CMake builds the others only, the figures and the grade are theirs alone, and `raylab distribute`
-# writes a students' tree without the left-out lab's folders (absent, not a zero). The labs are
-# whichever the tree has: the test reads labs/, never a list of its own.
-# The first lab, because a lab whose functions the framework itself calls (a member of the camera, the
-# sphere, the integrator or the renderer: labs 2 to 5 today) cannot be left out yet: nothing else
-# would define them, and the programs do not link (docs/instructors.md, "Adding a lab").
+# A course that hands out its first three labs only: in a copy of the tree whose course.toml lists
+# them, CMake builds those labs; of the labs left out, one whose functions the framework itself calls
+# (lab.toml's `framework_calls = true`: a member of the camera, the sphere or the renderer) is given,
+# its reference linked into every program, and any other is simply absent. The figures and the grade
+# are the course's labs' alone (every point of theirs to the reference, the totals of their lab.toml);
+# `raylab distribute` writes a students' tree without the left-out labs' folders, the given labs'
+# reference in framework/given/ and no other solution; that tree builds, its stubs get no point, and
+# the solutions written into its labs get them all. Gradescope's zip builds and grades the course the
+# same way. The labs are whichever the tree has: the test reads labs/, never a list of its own.
 #
 #   cmake -DSTEP=<step> -DSOURCE=<tree> -DWORK=<scratch folder> [-DGENERATOR=Ninja] [-DCCACHE=<ccache>]
 #         -P tests/labs/course_subset.cmake
-# Steps (one ctest test each, in the tree the steps before left): copy, build, figures, grade, distribute.
+# Steps (one ctest test each, in the trees the steps before left): copy, build, figures, grade,
+# distribute, students-build, students-stubs, students-written, gradescope-setup, gradescope-run.
 
 foreach(var STEP SOURCE WORK)
   if(NOT ${var})
@@ -18,10 +21,12 @@ endforeach()
 set(tree ${WORK}/tree)
 set(build ${tree}/build) # inside the tree, as build/ is: the compiler cache sees the same paths
 set(bin ${build}/bin)
+set(students ${WORK}/students)
 set(STEP_PREFIX "course subset")
 include(${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake)
 
-# The labs of the source tree by number; the course leaves out the first.
+# The labs of the source tree by number; the course keeps the first three, and of the others gives
+# those whose functions the framework calls (the line CMake reads too, cmake/RaylabLabs.cmake).
 file(GLOB lab_files RELATIVE ${SOURCE}/labs ${SOURCE}/labs/lab*/lab.toml)
 set(numbers "")
 foreach(file IN LISTS lab_files)
@@ -32,14 +37,32 @@ foreach(file IN LISTS lab_files)
 endforeach()
 list(SORT numbers COMPARE NATURAL)
 list(LENGTH numbers count)
-if(count LESS 2)
-  message(FATAL_ERROR "course subset: the tree has ${count} lab; a course needs one")
+if(count LESS 4)
+  message(FATAL_ERROR "course subset: the tree has ${count} labs; a course of three needs a fourth to leave out")
 endif()
-list(SUBLIST numbers 0 1 left_out)
-list(SUBLIST numbers 1 -1 kept)
+list(SUBLIST numbers 0 3 kept)
+list(SUBLIST numbers 3 -1 left_out)
+set(given "")
+set(absent "")
+foreach(n IN LISTS left_out)
+  file(STRINGS ${SOURCE}/labs/${folder_${n}}/lab.toml calls REGEX "^[ \t]*framework_calls[ \t]*=[ \t]*true")
+  if(calls)
+    list(APPEND given ${n})
+  else()
+    list(APPEND absent ${n})
+  endif()
+endforeach()
 string(REPLACE ";" ", " kept_list "${kept}")
 
-# The figure ids of a left-out lab (its scene files' names).
+function(folders_of out)
+  set(folders "")
+  foreach(n IN LISTS ARGN)
+    list(APPEND folders ${folder_${n}})
+  endforeach()
+  set(${out} ${folders} PARENT_SCOPE)
+endfunction()
+
+# The figure ids of the labs left out (their scene files' names).
 function(left_out_figures out)
   set(ids "")
   foreach(n IN LISTS left_out)
@@ -69,16 +92,58 @@ function(expect_none_left_out text what)
   endforeach()
 endfunction()
 
-# 1. The copy (no tests/: the programs only), its course.toml without the first lab, configured.
-function(step_copy)
-  file(REMOVE_RECURSE ${WORK})
-  file(MAKE_DIRECTORY ${tree})
-  foreach(part framework labs solutions scenes cmake)
-    file(COPY ${SOURCE}/${part} DESTINATION ${tree})
+# A lab's points as its lab.toml gives them (every `points = x` of its figures and checks), in
+# thousandths, and as the grader prints a number (no trailing zero).
+function(lab_points out n)
+  file(STRINGS ${SOURCE}/labs/${folder_${n}}/lab.toml lines REGEX "^[ \t]*points[ \t]*=")
+  set(sum 0)
+  foreach(line IN LISTS lines)
+    if(NOT line MATCHES "^[ \t]*points[ \t]*=[ \t]*([0-9]+)(\\.([0-9]?[0-9]?[0-9]?))?[ \t]*(#.*)?$")
+      message(FATAL_ERROR "course subset: lab ${n}: `${line}`: expected points = <number, at most 3 decimals>")
+    endif()
+    set(thousandths "${CMAKE_MATCH_3}000")
+    string(SUBSTRING ${thousandths} 0 3 thousandths)
+    math(EXPR sum "${sum} + ${CMAKE_MATCH_1} * 1000 + 1${thousandths} - 1000")
   endforeach()
-  file(COPY ${SOURCE}/CMakeLists.txt ${SOURCE}/CMakePresets.json DESTINATION ${tree})
-  file(WRITE ${tree}/course.toml "# A course without its first lab (tests/labs/course_subset.cmake).\nlabs = [${kept_list}]\n")
-  set(configure ${CMAKE_COMMAND} -S ${tree} -B ${build} -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DRAYLAB_LTO=OFF)
+  set(${out} ${sum} PARENT_SCOPE)
+endfunction()
+function(printed out thousandths)
+  math(EXPR whole "${thousandths} / 1000")
+  math(EXPR rest "${thousandths} % 1000 + 1000")
+  string(SUBSTRING ${rest} 1 3 rest)
+  string(REGEX REPLACE "0+$" "" rest "${rest}")
+  if(rest STREQUAL "")
+    set(${out} ${whole} PARENT_SCOPE)
+  else()
+    set(${out} ${whole}.${rest} PARENT_SCOPE)
+  endif()
+endfunction()
+
+# GRADE_OUTPUT has each lab of the course at `earned` (all: its every point; none: 0), and the total.
+function(expect_grade text earned)
+  set(total 0)
+  foreach(n IN LISTS kept)
+    lab_points(max ${n})
+    math(EXPR total "${total} + ${max}")
+    printed(shown ${max})
+    set(points 0)
+    if(earned STREQUAL "all")
+      set(points ${shown})
+    endif()
+    expect("${text}" "lab ${n}: ${points} / ${shown} " "lab ${n} graded, its points those of its lab.toml")
+  endforeach()
+  printed(shown ${total})
+  set(points 0)
+  if(earned STREQUAL "all")
+    set(points ${shown})
+  endif()
+  expect("${text}" "total: ${points} / ${shown}" "the total is the course's labs'")
+  expect_none_left_out("${text}" "raylab grade")
+endfunction()
+
+function(configure source_tree build_folder)
+  set(configure ${CMAKE_COMMAND} -S ${source_tree} -B ${build_folder} -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF
+                -DRAYLAB_LTO=OFF)
   if(GENERATOR)
     list(APPEND configure -G ${GENERATOR})
   endif()
@@ -86,11 +151,27 @@ function(step_copy)
     list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CCACHE})
   endif()
   run(output 0 ${configure})
-  set(folders "")
-  foreach(n IN LISTS kept)
-    list(APPEND folders ${folder_${n}})
+  set(output "${output}" PARENT_SCOPE)
+endfunction()
+
+# 1. The copy (no tests/: the programs only), its course.toml listing the first three labs, configured.
+function(step_copy)
+  file(REMOVE_RECURSE ${WORK})
+  file(MAKE_DIRECTORY ${tree})
+  foreach(part framework labs solutions scenes cmake)
+    file(COPY ${SOURCE}/${part} DESTINATION ${tree})
   endforeach()
+  file(COPY ${SOURCE}/CMakeLists.txt ${SOURCE}/CMakePresets.json DESTINATION ${tree})
+  file(WRITE ${tree}/course.toml "# A course of the first three labs (tests/labs/course_subset.cmake).\nlabs = [${kept_list}]\n")
+  configure(${tree} ${build})
+  folders_of(folders ${kept})
   expect("${output}" "raylab labs: ${folders}\n" "CMake builds the course's labs only")
+  if(given)
+    folders_of(folders ${given})
+    expect("${output}" "raylab labs given (their reference, part of the framework): ${folders}\n"
+           "CMake gives the labs left out whose functions the framework calls")
+  endif()
+  message(STATUS "course subset: labs ${kept_list} handed out; given: ${given}; absent: ${absent}")
 endfunction()
 
 function(step_build)
@@ -102,41 +183,167 @@ function(step_build)
   endforeach()
 endfunction()
 
-# 2. The figures are the course's labs'.
+# 2. The figures are the course's labs', every one of them.
 function(step_figures)
   run(output 0 ${bin}/raylab-reference figures --out ${WORK}/figures)
   expect_none_left_out("${output}" "raylab-reference figures")
+  foreach(n IN LISTS kept)
+    file(GLOB scenes ${SOURCE}/labs/${folder_${n}}/scenes/*.toml)
+    foreach(scene IN LISTS scenes)
+      get_filename_component(id ${scene} NAME_WE)
+      if(NOT EXISTS ${WORK}/figures/${id}.png)
+        message(FATAL_ERROR "course subset: raylab-reference figures drew no ${id}.png, a figure of lab ${n}:\n${output}")
+      endif()
+    endforeach()
+  endforeach()
 endfunction()
 
 # 3. The reference gets every point of the course's labs, the others are not graded at all.
 function(step_grade)
-  run(output 0 ${bin}/raylab grade --agent ${bin}/raylab-agent-reference --report ${WORK}/grade)
-  foreach(n IN LISTS kept)
-    expect("${output}" "lab ${n}: " "lab ${n} is graded")
-  endforeach()
-  expect_none_left_out("${output}" "raylab grade")
+  run(output 0 ${bin}/raylab --lang en grade --agent ${bin}/raylab-agent-reference --report ${WORK}/grade)
+  expect_grade("${output}" all)
   file(READ ${WORK}/grade/results.json results)
   expect_none_left_out("${results}" "results.json")
 endfunction()
 
-# 4. The students' tree has the course's labs only, and its course.toml.
+# Fails unless FOLDER holds exactly the files EXPECTED (names).
+function(expect_files folder expected what)
+  file(GLOB found RELATIVE ${folder} ${folder}/*)
+  list(SORT found)
+  list(SORT expected)
+  if(NOT found STREQUAL expected)
+    message(FATAL_ERROR "course subset: ${what}: ${folder} holds `${found}`, expected `${expected}`")
+  endif()
+endfunction()
+
+# 4. The students' tree: the course's labs and list; a given lab's reference (its solutions' files and
+# its own header) in framework/given/, of its grading folder only what registers it by name; nothing
+# of an absent lab; no solutions/. GitHub Classroom's tree the same.
 function(step_distribute)
-  run(output 0 ${bin}/raylab distribute ${WORK}/students)
-  foreach(n IN LISTS kept)
-    if(NOT EXISTS ${WORK}/students/labs/${folder_${n}}/lab.toml)
-      message(FATAL_ERROR "course subset: the students' tree lacks lab ${n}")
-    endif()
+  run(output 0 ${bin}/raylab --lang en distribute ${students})
+  if(given)
+    string(REPLACE ";" ", " given_list "${given}")
+    expect("${output}" "${given_list} given (course.toml leaves " "raylab distribute says which labs are given")
+  endif()
+  folders_of(folders ${kept})
+  expect_files(${students}/labs "${folders}" "the students' tree has the course's labs only")
+  foreach(n IN LISTS given)
+    set(folder ${folder_${n}})
+    file(GLOB reference RELATIVE ${SOURCE}/solutions/${folder} ${SOURCE}/solutions/${folder}/*.cpp)
+    file(GLOB header RELATIVE ${SOURCE}/labs/${folder} ${SOURCE}/labs/${folder}/*.h)
+    expect_files(${students}/framework/given/${folder} "${reference};${header}" "lab ${n} is given")
+    foreach(file IN LISTS reference)
+      file(READ ${SOURCE}/solutions/${folder}/${file} expected)
+      file(READ ${students}/framework/given/${folder}/${file} written)
+      if(NOT written STREQUAL expected)
+        message(FATAL_ERROR "course subset: framework/given/${folder}/${file} is not solutions/${folder}/${file}")
+      endif()
+    endforeach()
+    file(GLOB registrations RELATIVE ${SOURCE}/framework/grader/labs/${folder}
+         ${SOURCE}/framework/grader/labs/${folder}/shadings.cpp ${SOURCE}/framework/grader/labs/${folder}/figure_steps.cpp)
+    expect_files(${students}/framework/grader/labs/${folder} "${registrations}" "lab ${n}'s grading folder")
   endforeach()
-  foreach(n IN LISTS left_out)
-    foreach(where labs framework/grader/labs)
-      if(EXISTS ${WORK}/students/${where}/${folder_${n}})
+  foreach(n IN LISTS absent)
+    foreach(where framework/grader/labs framework/given)
+      if(EXISTS ${students}/${where}/${folder_${n}})
         message(FATAL_ERROR "course subset: the students' tree has ${where}/${folder_${n}}, which the course leaves out")
       endif()
     endforeach()
   endforeach()
-  file(READ ${WORK}/students/course.toml course)
+  folders_of(folders ${given})
+  expect_files(${students}/framework/given "${folders}" "framework/given/ holds the given labs only")
+  if(EXISTS ${students}/solutions)
+    message(FATAL_ERROR "course subset: the students' tree has solutions/")
+  endif()
+  file(READ ${students}/course.toml course)
   expect("${course}" "labs = [${kept_list}]" "the students' tree has the course's list")
-  message(STATUS "course subset: labs ${kept_list} built, drawn, graded and handed out; ${left_out} left out")
+  # GitHub Classroom's tree is the same students' tree, its workflow a step per item of the course's labs.
+  run(output 0 ${bin}/raylab autograder github ${WORK}/classroom)
+  folders_of(folders ${kept})
+  expect_files(${WORK}/classroom/labs "${folders}" "the Classroom tree has the course's labs only")
+  folders_of(folders ${given})
+  expect_files(${WORK}/classroom/framework/given "${folders}" "the Classroom tree has the given labs' reference")
+  file(READ ${WORK}/classroom/.github/workflows/classroom.yml workflow)
+  expect_none_left_out("${workflow}" "classroom.yml")
+  foreach(n IN LISTS kept)
+    expect("${workflow}" "id: lab${n}-" "classroom.yml has lab ${n}'s steps")
+  endforeach()
+  foreach(n IN LISTS left_out)
+    string(FIND "${workflow}" "id: lab${n}-" at)
+    if(NOT at EQUAL -1)
+      message(FATAL_ERROR "course subset: classroom.yml has a step of lab ${n}, which the course leaves out")
+    endif()
+  endforeach()
+endfunction()
+
+# 5. The students' tree builds on its own (no solutions/: the given labs from framework/given/).
+function(step_students_build)
+  set(build ${students}/build)
+  configure(${students} ${build})
+  build(raylab raylab-agents)
+endfunction()
+
+# 6. Its stubs: each lab says it is not done yet, no crash, and no point.
+function(step_students_stubs)
+  foreach(n IN LISTS kept)
+    run(output 0 ${students}/build/bin/raylab --lang en lab ${n})
+    expect("${output}" "TODO    lab ${n}" "raylab lab ${n} in the students' tree says what to write")
+    expect("${output}" " 0 rendered, " "raylab lab ${n}: a stub draws nothing")
+    expect("${output}" ", 0 failed" "raylab lab ${n}: nothing crashed")
+  endforeach()
+  run(output 3 ${students}/build/bin/raylab --lang en grade --report ${WORK}/students-grade)
+  expect_grade("${output}" none)
+endfunction()
+
+# 7. The solutions written into its labs (anew: newer than the build): raylab grade rebuilds, and every
+# point of the course's labs is theirs, over the given labs' reference.
+function(step_students_written)
+  foreach(n IN LISTS kept)
+    file(GLOB files ${SOURCE}/solutions/${folder_${n}}/*.cpp)
+    foreach(file IN LISTS files)
+      get_filename_component(name ${file} NAME)
+      file(READ ${file} text)
+      file(WRITE ${students}/labs/${folder_${n}}/${name} "${text}")
+    endforeach()
+  endforeach()
+  run(output 0 ${students}/build/bin/raylab --lang en grade --report ${WORK}/students-written)
+  expect_grade("${output}" all)
+  message(STATUS "course subset: labs ${kept_list} built, drawn, graded and handed out; given ${given}; absent ${absent}")
+endfunction()
+
+# 8. Gradescope's zip: the students' tree (the given labs' reference in framework/given/) and the
+# course's labs' reference in solutions/, which its setup.sh compiles once and deletes; unpacked as
+# Gradescope does, its setup.sh run without its package installation.
+set(autograder ${WORK}/autograder)
+function(step_gradescope_setup)
+  file(REMOVE_RECURSE ${autograder})
+  file(MAKE_DIRECTORY ${autograder}/source)
+  run(output 0 ${bin}/raylab autograder gradescope ${WORK}/autograder.zip)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E tar xf ${WORK}/autograder.zip WORKING_DIRECTORY ${autograder}/source
+                  RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "course subset: ${WORK}/autograder.zip does not unpack: ${status}")
+  endif()
+  folders_of(folders ${kept})
+  expect_files(${autograder}/source/raylab/solutions "${folders}" "the zip carries the course's labs' reference")
+  folders_of(folders ${given})
+  expect_files(${autograder}/source/raylab/framework/given "${folders}" "the zip carries the given labs' reference")
+  run(output 0 ${CMAKE_COMMAND} -E env RAYLAB_AUTOGRADER_ROOT=${autograder} RAYLAB_SKIP_PACKAGES=1
+      bash ${autograder}/source/setup.sh)
+endfunction()
+
+# 9. run_autograder on the solutions of the course's labs, handed in as labs/<lab>/: every point.
+function(step_gradescope_run)
+  file(REMOVE_RECURSE ${autograder}/submission ${autograder}/results)
+  foreach(n IN LISTS kept)
+    file(COPY ${SOURCE}/solutions/${folder_${n}} DESTINATION ${autograder}/submission/labs)
+  endforeach()
+  run(output 0 ${CMAKE_COMMAND} -E env RAYLAB_AUTOGRADER_ROOT=${autograder} LANG=C
+      bash ${autograder}/source/run_autograder)
+  file(READ ${autograder}/results/results.json results)
+  string(JSON text GET "${results}" output)
+  expect_grade("${text}" all)
+  message(STATUS "course subset: Gradescope's zip built and graded labs ${kept_list}, given ${given}")
 endfunction()
 
 run_step()

@@ -1,6 +1,7 @@
 # No code of framework/ or cmake/ names a lab: a lab is its folders (labs/<lab>/, solutions/<lab>/ and
-# its grading folder framework/grader/labs/<lab>/), and everything else takes the labs from the
-# catalogue and the course's list. Finds every lab<N>_<name> in the code outside the grading folders.
+# its grading folder framework/grader/labs/<lab>/; in a students' tree, a given lab's reference,
+# framework/given/<lab>/), and everything else takes the labs from the catalogue and the course's list.
+# Finds every lab<N>_<name> in the code outside the labs' folders.
 #
 #   cmake -DSOURCE=<tree> -P tests/labs/no_lab_named.cmake
 
@@ -10,7 +11,7 @@ endif()
 file(GLOB_RECURSE files RELATIVE ${SOURCE}
      ${SOURCE}/framework/*.cpp ${SOURCE}/framework/*.h ${SOURCE}/framework/*.in ${SOURCE}/framework/*.txt
      ${SOURCE}/framework/*.cmake ${SOURCE}/cmake/*)
-list(FILTER files EXCLUDE REGEX "^framework/grader/labs/")
+list(FILTER files EXCLUDE REGEX "^framework/(grader/labs|given)/")
 set(found "")
 foreach(file IN LISTS files)
   file(STRINGS ${SOURCE}/${file} lines REGEX "lab[0-9]+_[a-z]")
