@@ -19,6 +19,8 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -386,6 +388,23 @@ fs::path minimalDebian() {
     return root;
 }
 
+// The fixture is one folder for every tree of this machine (clones, worktrees, and the bare roots of
+// scripts/bare_machine_check.sh, which mount it): one run at a time unpacks and grades in it, the
+// others wait for its lock.
+class FixtureLock {
+public:
+    explicit FixtureLock(const fs::path& root) : m_fd(open((root / ".raylab-lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644)) {
+        REQUIRE_MESSAGE(m_fd >= 0, "cannot open " << (root / ".raylab-lock"));
+        REQUIRE(flock(m_fd, LOCK_EX) == 0);
+    }
+    ~FixtureLock() { close(m_fd); }
+    FixtureLock(const FixtureLock&) = delete;
+    FixtureLock& operator=(const FixtureLock&) = delete;
+
+private:
+    int m_fd;
+};
+
 // `command` run inside `root` (chroot, as root), with an environment of its own.
 int inChroot(const fs::path& root, const std::string& command, const fs::path& log) {
     return run("chroot \"" + root.string() + "\" /usr/bin/env -i PATH=/usr/bin:/bin HOME=/root LANG=C.UTF-8 " +
@@ -401,6 +420,7 @@ TEST_CASE("Debian 12 with only g++-11, cmake, make and zlib: setup.sh builds, ru
     }
     if (raylab::test::neededProgram("mmdebstrap", "mmdebstrap").empty()) return;
     const fs::path root = minimalDebian();
+    const FixtureLock lock(root);
     // What the system offers is what the zip may count on: no library but zlib, no c++ but g++-11.
     CHECK_FALSE(fs::exists(root / "usr/include/glm"));
     CHECK_FALSE(fs::exists(root / "usr/include/toml++"));
