@@ -140,7 +140,7 @@ TEST_CASE("lab 2: sx and sy swapped is not blamed on the position of a camera aw
 
 }
 
-TEST_SUITE("hints, lab 4") {
+TEST_SUITE("hints: lab 4") {
 
 TEST_CASE("lab 4: u and v made rightly from an unnormalized w are sent to w, and so is the screen") {
     if (!raylab::test::labInCourse(std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs", 4)) return;

@@ -291,7 +291,7 @@ TEST_CASE("--lang fr: French headings, grade lines and typography") {
 }
 
 // Its own suite: skipped without chromium (support/needs.h).
-TEST_SUITE("report, lab 5") { // the reference kit the suite "report" made; skipped in a course without lab 5
+TEST_SUITE("report: lab 5") { // the reference kit the suite "report" made; skipped in a course without lab 5
 
 TEST_CASE("the antialiasing section: both renders' cost, the close-up's place and zoom; the noisy figure's reading") {
     if (!raylab::test::labInCourse(RAYLAB_LABS_DIR, 5)) return;

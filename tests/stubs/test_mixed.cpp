@@ -24,7 +24,7 @@ TEST_CASE("a lab not done yet stops only the figures that need it") {
 
 }
 
-TEST_SUITE("stubs, lab 5") { // a given lab 5 is its reference
+TEST_SUITE("stubs: lab 5") { // a given lab 5 is its reference
 
 TEST_CASE("lab 5 not done yet stops its figure at its own stub") {
     if (!labInCourse(RAYLAB_LABS_DIR, 5)) return;

@@ -308,7 +308,7 @@ TEST_SUITE("messages") {
     }
 }
 
-TEST_SUITE("messages, lab 4") {
+TEST_SUITE("messages: lab 4") {
     TEST_CASE("not-done-yet says lab 4's lookAt constructor, a function named in words, in French") {
         if (!test::labInCourse(test::kLabsDir, 4)) return;
         const LanguageScope french(Language::Fr);

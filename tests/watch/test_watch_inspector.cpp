@@ -117,7 +117,7 @@ TEST_CASE("every row links a section of its handout, in English and in French") 
 
 } // TEST_SUITE
 
-TEST_SUITE("watch inspector, lab 4") {
+TEST_SUITE("watch inspector: lab 4") {
 
 TEST_CASE("the rows of a lab 4 pixel") {
     if (!labInCourse(4)) return;
@@ -138,7 +138,7 @@ TEST_CASE("a mirrored lookAt basis differs first at u, with its formula") {
 
 } // TEST_SUITE
 
-TEST_SUITE("watch inspector, lab 5") {
+TEST_SUITE("watch inspector: lab 5") {
 
 TEST_CASE("one offset for every sample differs first at the second sample") {
     if (!labInCourse(5)) return;
