@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cctype>
+#include <cstdlib>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -22,9 +23,11 @@ using nlohmann::json;
 
 namespace {
 
-// The inspector's answer for a pixel, `program` standing as the students' tree's one agent.
+// The inspector's answer for a pixel, `program` standing as the students' tree's one agent. The
+// folder is the sandbox's own: ctest runs the suite under each sandbox at once.
 json inspect(const std::string& program, const std::string& figure, int x, int y) {
-    const fs::path bin = raylab::test::freshFolder("watch-inspector-" + program);
+    const char* sandbox = std::getenv("RAYLAB_SANDBOX");
+    const fs::path bin = raylab::test::freshFolder("watch-inspector-" + std::string(sandbox ? sandbox : "any") + "-" + program);
     fs::copy_file(fs::path(RAYLAB_BIN_DIR) / program, bin / "raylab-agent");
     raylab::watch::WatchSettings settings;
     settings.binDir = bin;
