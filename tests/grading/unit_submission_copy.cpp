@@ -190,17 +190,22 @@ TEST_CASE("nothing is followed: a labs/ link, a linked submission, a linked file
         fs::create_symlink(solution, u.submission / "lab3_sphere/sphere_geometry.cpp");
         REQUIRE(::mkfifo((u.submission / "lab3_sphere/ray_cast_integrator.cpp").c_str(), 0600) == 0); // would block a read
         fs::create_directories(u.root / "elsewhere");
-        std::ofstream(u.root / "elsewhere/look_at.cpp") << "// a classmate's\n";
-        fs::create_hard_link(u.root / "elsewhere/look_at.cpp", u.submission / "look_at.cpp");
-        u.write("lab5_antialiasing/pixel_samples.cpp", std::string((1 << 20) + 1, 'x'));
+        std::ofstream(u.root / "elsewhere/perspective_camera.cpp") << "// a classmate's\n";
+        fs::create_hard_link(u.root / "elsewhere/perspective_camera.cpp", u.submission / "perspective_camera.cpp");
         const SubmissionCopy copy = u.make();
         CHECK(u.copied() == std::vector<std::string>{"lab1_first_image/gradient.cpp"});
         CHECK(copy.labs == std::vector<int>{1});
         CHECK(listed(copy, "lab3_sphere/sphere_geometry.cpp: a symbolic link, not followed"));
         CHECK(listed(copy, "lab3_sphere/ray_cast_integrator.cpp: not a regular file"));
-        CHECK(listed(copy, "look_at.cpp: a file with other names (a hard link), not read"));
-        CHECK(listed(copy, "lab5_antialiasing/pixel_samples.cpp: larger than 1048576 bytes"));
-        CHECK(copy.ignored.size() == 4);
+        CHECK(listed(copy, "perspective_camera.cpp: a file with other names (a hard link), not read"));
+        CHECK(copy.ignored.size() == 3);
+    }
+    SUBCASE("a file over the size limit") {
+        const Upload u;
+        u.write("lab1_first_image/gradient.cpp", std::string((1 << 20) + 1, 'x'));
+        const SubmissionCopy copy = u.make();
+        CHECK(u.copied().empty());
+        CHECK_MESSAGE(listed(copy, "lab1_first_image/gradient.cpp: larger than 1048576 bytes"), copy.ignored.size());
     }
     SUBCASE("the copy's folder a link: it is replaced, its target untouched") {
         const Upload u;
