@@ -76,17 +76,25 @@ TEST_CASE("--timeout: a positive number of seconds; 0, -5, nan and inf are refus
 }
 
 TEST_CASE("grade --images reads regular files only: a pipe or a device is refused at once") {
+    // The course's first figure a picture, its last a pipe, the one before a link to a device.
+    std::vector<std::string> ids;
+    for (const LabDescription& lab : loadLabCatalog(sourceDir() / "labs").labs)
+        for (const LabFigure& figure : lab.figures) ids.push_back(figure.id);
+    REQUIRE(ids.size() >= 3);
+    const std::string& good = ids.front();
+    const std::string& pipe = ids.back();
+    const std::string& device = ids[ids.size() - 2];
     const fs::path dir = freshFolder("raylab-images-special");
-    REQUIRE(mkfifo((dir / "lab4_d.png").c_str(), 0600) == 0);
-    fs::create_symlink("/dev/zero", dir / "lab4_b.png");
-    fs::copy_file(referencePicture("lab1_gradient"), dir / "lab1_gradient.png");
+    REQUIRE(mkfifo((dir / (pipe + ".png")).c_str(), 0600) == 0);
+    fs::create_symlink("/dev/zero", dir / (device + ".png"));
+    fs::copy_file(referencePicture(good), dir / (good + ".png"));
     const Finished f = run("raylab", {"grade", "--images", dir.string(), "--report", (dir / "report").string()});
     REQUIRE_MESSAGE(f.status != -1, "still running after a minute: it blocked on the pipe");
     CHECK(f.status == 1);
-    CHECK_MESSAGE(has(f, "FAIL  lab4_d"), f.output);
-    CHECK_MESSAGE(has(f, (dir / "lab4_d.png").string() + " is not a regular file"), f.output);
-    CHECK_MESSAGE(has(f, (dir / "lab4_b.png").string() + " is not a regular file"), f.output);
-    CHECK_MESSAGE(has(f, "PASS  lab1_gradient"), f.output);
+    CHECK_MESSAGE(has(f, "FAIL  " + pipe), f.output);
+    CHECK_MESSAGE(has(f, (dir / (pipe + ".png")).string() + " is not a regular file"), f.output);
+    CHECK_MESSAGE(has(f, (dir / (device + ".png")).string() + " is not a regular file"), f.output);
+    CHECK_MESSAGE(has(f, "PASS  " + good), f.output);
 }
 
 #ifdef __linux__

@@ -2,6 +2,7 @@
 // parent judges, so forged answers, answers learnt by heart and pictures rewritten after the
 // render earn nothing.
 #include "grading_support.h"
+#include "support/course.h"
 
 #include "grader/judge/checks/checks.h"
 #include "grader/protocol/protocol.h"
@@ -95,8 +96,6 @@ TEST_SUITE("protocol") {
                         .message);
         CHECK_FALSE(protocol::outputsValid(*protocol::probeNamed("fillGradient"), std::vector<double>{2., 2.},
                                            std::vector<double>(11)));
-        CHECK(protocol::outputsValid(*protocol::probeNamed("renderPixel"), std::vector<double>(6),
-                                     std::vector<double>{1., 0., 0., 0., 0.5, 0.5}));
     }
 
     TEST_CASE("drawn cases change from one grading to the next, fixed cases stay") {
@@ -114,7 +113,7 @@ TEST_SUITE("protocol") {
                 same = a[k].calls[c].inputs == b[k].calls[c].inputs;
             differing += !same;
         }
-        CHECK(differing >= 20); // all but the few checks that are hard cases only
+        CHECK(3 * differing >= 2 * int(a.size())); // all but the few checks that are hard cases only
     }
 
     TEST_CASE("forged results in the channel, before the hello and from inside a check, earn nothing") {
@@ -160,6 +159,17 @@ TEST_SUITE("protocol") {
         CHECK(raylab::readImage(f->studentImage).rgb != raylab::readImage(reference).rgb);
         fs::remove_all(setup.scratch);
         expectLabPoints(r, 3, r.labs[2].maxPoints);
+    }
+
+} // TEST_SUITE
+
+TEST_SUITE("protocol: lab 5") { // skipped where the course does not hand lab 5 out (its probes are not built)
+
+    TEST_CASE("a lab 5 probe's outputs of the right count are valid") {
+        if (!labInCourse(sourceDir() / "labs", 5)) return;
+        const protocol::ProbeSpec* renderPixel = protocol::probeNamed("renderPixel");
+        REQUIRE(renderPixel);
+        CHECK(protocol::outputsValid(*renderPixel, std::vector<double>(6), std::vector<double>{1., 0., 0., 0., 0.5, 0.5}));
     }
 
 } // TEST_SUITE

@@ -95,7 +95,7 @@ TEST_SUITE("uploads") {
 TEST_CASE("extra files named x;y.cpp, ${HOME}x.cpp or it's a \"file\".cpp cost nothing: listed, never given to CMake") {
     fs::create_directories(kRoot);
     const fs::path folder = submission("odd-names");
-    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+    copyCourseSolutions(folder);
     for (const char* name : {"x;y.cpp", "${HOME}x.cpp", "it's a \"file\".cpp"})
         write(folder / "lab3_sphere" / name, "this is not C++\n");
     const Graded g = grade(folder);
@@ -146,15 +146,16 @@ TEST_CASE("a labs/ folder that is a link to solutions/ earns 0 and says why") {
 
 TEST_CASE("a lab file that is a link to its solution is not read: that lab is graded as not written") {
     const fs::path folder = submission("linked-file");
-    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
-    fs::remove(folder / "lab4_lookat_camera" / "look_at.cpp");
-    fs::create_symlink(sourceDir() / "solutions" / "lab4_lookat_camera" / "look_at.cpp",
-                       folder / "lab4_lookat_camera" / "look_at.cpp");
+    copyCourseSolutions(folder);
+    const LabDescription lab = usedLab(loadLabCatalog(sourceDir() / "labs"));
+    const std::string file = lab.id + "/" + lab.files().front();
+    fs::remove(folder / file);
+    fs::create_symlink(sourceDir() / "solutions" / file, folder / file);
     const Graded g = grade(folder);
-    CHECK_MESSAGE(g.labs.count(4) == 1, g.output);
-    CHECK(g.labs.at(4) == expectedLabs({4}).at(4));
-    CHECK(g.total == expectedTotal({4}));
-    CHECK(g.output.find("lab4_lookat_camera/look_at.cpp: a symbolic link, not followed") != std::string::npos);
+    CHECK_MESSAGE(g.labs.count(lab.number) == 1, g.output);
+    CHECK(g.labs.at(lab.number) == expectedLabs({lab.number}).at(lab.number));
+    CHECK(g.total == expectedTotal({lab.number}));
+    CHECK(g.output.find(file + ": a symbolic link, not followed") != std::string::npos);
 }
 
 TEST_CASE("a folder with no lab file says what to upload, never that the code does not build") {
@@ -166,25 +167,22 @@ TEST_CASE("a folder with no lab file says what to upload, never that the code do
     CHECK(g.output.find("does not build") == std::string::npos);
 }
 
-TEST_CASE("a missing ';' in lab 4 costs lab 4 only: the other labs keep their points") {
-    const fs::path folder = submission("lab4-broken");
-    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
-    const fs::path lookAt = folder / "lab4_lookat_camera" / "look_at.cpp";
-    std::string code = readFile(lookAt);
-    const std::size_t semicolon = code.find("m_position = position;");
-    REQUIRE(semicolon != std::string::npos);
-    code.erase(semicolon + std::string("m_position = position").size(), 1);
-    write(lookAt, code);
+TEST_CASE("a lab that does not build, one other labs use, costs that lab only: the other labs keep their points") {
+    const fs::path folder = submission("used-lab-broken");
+    copyCourseSolutions(folder);
+    const LabDescription lab = usedLab(loadLabCatalog(sourceDir() / "labs"));
+    const fs::path source = folder / lab.id / lab.files().front();
+    write(source, "this line is not C++\n" + readFile(source));
     const Graded g = grade(folder);
-    CHECK_MESSAGE(g.total == expectedTotal({4}), g.output);
-    CHECK(g.labs == expectedLabs({4}));
-    CHECK(g.output.find("lab 4: the code does not build") != std::string::npos);
-    CHECK(g.output.find("look_at.cpp") != std::string::npos); // the compiler's message names the file
+    CHECK_MESSAGE(g.total == expectedTotal({lab.number}), g.output);
+    CHECK(g.labs == expectedLabs({lab.number}));
+    CHECK(g.output.find("lab " + std::to_string(lab.number) + ": the code does not build") != std::string::npos);
+    CHECK(g.output.find(lab.files().front()) != std::string::npos); // the compiler's message names the file
 }
 
 TEST_CASE("a submission folder named with a newline and an escape sequence: one printable line on the console, every point") {
     const fs::path folder = submission("new\nline\x1B[2J");
-    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+    copyCourseSolutions(folder);
     const Graded g = grade(folder);
     CHECK_MESSAGE(g.total == expectedTotal(), g.output);
     CHECK_MESSAGE(g.output.find("building " + (kRoot / "submissions").generic_string() + "/new\\nline\\x1B[2J in ") !=
@@ -212,12 +210,13 @@ TEST_CASE("a lab file that makes a 100 MB object costs its lab, the 32 MB limit 
     for (const std::string& sandbox : sandboxes()) {
         CAPTURE(sandbox);
         const fs::path folder = submission("big-object");
-        fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
-        const fs::path samples = folder / "lab5_antialiasing" / "pixel_samples.cpp";
-        write(samples, readFile(samples) + "asm(\".section .rodata\\n.fill 100000000, 1, 1\\n.text\");\n");
+        copyCourseSolutions(folder);
+        const LabDescription lab = loadLabCatalog(sourceDir() / "labs").labs.back();
+        const fs::path source = folder / lab.id / lab.files().front();
+        write(source, readFile(source) + "asm(\".section .rodata\\n.fill 100000000, 1, 1\\n.text\");\n");
         const Graded g = grade(folder, sandbox);
-        CHECK_MESSAGE(g.total == expectedTotal({5}), g.output);
-        CHECK(g.labs.at(5) == expectedLabs({5}).at(5));
+        CHECK_MESSAGE(g.total == expectedTotal({lab.number}), g.output);
+        CHECK(g.labs.at(lab.number) == expectedLabs({lab.number}).at(lab.number));
         CHECK_MESSAGE(g.output.find("the compiler stopped at the 32 MB limit on each file it writes") != std::string::npos, g.output);
         CHECK(g.output.find("File size limit exceeded") == std::string::npos); // the build tool's words, replaced
         const auto files = largestFiles(kBuild);
@@ -230,7 +229,7 @@ TEST_CASE("two lab files of 33 MB objects each make a program over 64 MB: refuse
     for (const std::string& sandbox : sandboxes()) {
         CAPTURE(sandbox);
         const fs::path folder = submission("big-program");
-        fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
+        copyCourseSolutions(folder);
         for (const char* file : {"ray_cast_integrator.cpp", "sphere_geometry.cpp"}) {
             const fs::path source = folder / "lab3_sphere" / file;
             write(source, readFile(source) + "asm(\".section .rodata\\n.fill 33300000, 1, 1\\n.text\");\n");
@@ -245,29 +244,30 @@ TEST_CASE("two lab files of 33 MB objects each make a program over 64 MB: refuse
 }
 
 // The students' tree has no solutions/: no reference lab stands in for a broken one. The grader's
-// build of a submission there (buildSubmission on a copy of the tree without solutions/) gives each lab
+// build of a submission there (buildSubmission in the tree `raylab distribute` writes) gives each lab
 // an agent with the labs it uses from the submission and the others' stubs.
-TEST_CASE("in the students' tree, a missing ';' in lab 4 costs lab 4 and the labs that use it only: the others keep "
-          "their points") {
+TEST_CASE("in the students' tree, a lab that does not build costs that lab and the labs that use it only: the others "
+          "keep their points") {
     const fs::path tree = kRoot / "students-tree";
     fs::remove_all(tree);
-    fs::create_directories(tree);
-    for (const char* part : {"framework", "labs", "scenes", "cmake", "CMakeLists.txt", "CMakePresets.json"})
-        fs::copy(sourceDir() / part, tree / part, fs::copy_options::recursive);
+    const ProgramRun distributed = runProgram({(binDir() / "raylab").string(), "distribute", tree.string(), "--lang", "en"},
+                                              kRoot / "distribute.txt");
+    REQUIRE_MESSAGE(distributed.status == 0, distributed.output);
     REQUIRE_FALSE(fs::exists(tree / "solutions"));
-    const fs::path folder = submission("students-tree-lab4-broken");
-    fs::copy(sourceDir() / "solutions", folder, fs::copy_options::recursive);
-    const fs::path lookAt = folder / "lab4_lookat_camera" / "look_at.cpp";
-    write(lookAt, "this line is not C++\n" + readFile(lookAt));
+    const fs::path folder = submission("students-tree-lab-broken");
+    copyCourseSolutions(folder);
+    const GradeSetup setup = courseSetup();
+    const LabDescription lab = usedLab(setup.labs);
+    const fs::path source = folder / lab.id / lab.files().front();
+    write(source, "this line is not C++\n" + readFile(source));
 
     const raylab::grader::Toolchain tools{RAYLAB_CMAKE_COMMAND, RAYLAB_CMAKE_GENERATOR, raylab::grader::findProgram("ccache")};
-    const GradeSetup setup = courseSetup();
     const raylab::grader::SubmissionBuild b =
         raylab::grader::buildSubmission(tools, tree, folder, tree / "build", setup.labs);
     CHECK_FALSE(b.isolated);
-    const std::vector<int> broken = labAndItsUsers(setup.labs, 4);
+    const std::vector<int> broken = labAndItsUsers(setup.labs, lab.number);
     CHECK(b.brokenLabs == broken);
-    CHECK(b.compilerMessage.find("look_at.cpp") != std::string::npos);
+    CHECK(b.compilerMessage.find(lab.files().front()) != std::string::npos);
     const GradeResult result = gradeCode(setup, b.agents, b.isolated, b.brokenLabs, b.compilerMessage);
     fs::remove_all(setup.scratch);
     std::map<int, std::string> points;

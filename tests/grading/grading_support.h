@@ -77,6 +77,20 @@ inline std::vector<int> labAndItsUsers(const LabCatalog& catalog, int lab) {
     return labs;
 }
 
+// The last lab of the course that another lab of it uses (where no reference stands in for it, its
+// breaking costs its users too); the last lab when none is used.
+inline LabDescription usedLab(const LabCatalog& catalog) {
+    for (auto lab = catalog.labs.rbegin(); lab != catalog.labs.rend(); ++lab)
+        if (labAndItsUsers(catalog, lab->number).size() > 1) return *lab;
+    return catalog.labs.back();
+}
+
+// The course's labs of solutions/ copied into `to` (<lab>/<files>), as a student uploads them.
+inline void copyCourseSolutions(const fs::path& to) {
+    for (const LabDescription& lab : loadLabCatalog(sourceDir() / "labs").labs)
+        fs::copy(sourceDir() / "solutions" / lab.id, to / lab.id, fs::copy_options::recursive);
+}
+
 // grades.csv's header as the catalogue makes it.
 inline std::vector<std::string> expectedCsvHeader() {
     std::vector<std::string> header{"student"};

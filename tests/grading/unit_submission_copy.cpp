@@ -99,9 +99,14 @@ TEST_CASE("lab folders: the declared files are copied under their lab's id; odd 
 
 TEST_CASE("uploads as students make them: the files flat, folders named otherwise, labs/, a wrapping folder; "
           "__MACOSX and hidden files ignored") {
-    const std::vector<std::string> all{"lab1_first_image/gradient.cpp", "lab2_primary_rays/perspective_camera.cpp",
-                                       "lab3_sphere/ray_cast_integrator.cpp", "lab3_sphere/sphere_geometry.cpp",
-                                       "lab4_lookat_camera/look_at.cpp", "lab5_antialiasing/pixel_samples.cpp"};
+    // The course's lab files, <lab>/<file>, in its order, and their labs' numbers.
+    std::vector<std::string> all;
+    std::vector<int> numbers;
+    for (const LabDescription& lab : loadLabCatalog(kSource / "labs").labs) {
+        numbers.push_back(lab.number);
+        for (const std::string& file : lab.files()) all.push_back(lab.id + "/" + file);
+    }
+    std::sort(all.begin(), all.end()); // as copied() lists them
     SUBCASE("flat") {
         const Upload u;
         for (const std::string& file : all) u.write(fs::path(file).filename(), file);
@@ -112,15 +117,21 @@ TEST_CASE("uploads as students make them: the files flat, folders named otherwis
         const SubmissionCopy copy = u.make();
         CHECK(u.copied() == all);
         for (const std::string& file : all) CHECK(readFile(u.copy / file) == file);
-        CHECK(copy.labs == std::vector<int>{1, 2, 3, 4, 5});
+        CHECK(copy.labs == numbers);
         CHECK(copy.ignored.empty());
     }
     SUBCASE("folders named otherwise, inside a wrapping folder") {
         const Upload u;
-        const std::vector<std::string> folders{"tp1", "TP 2", "Lab 3", "Lab 3", "lab4-final", "tp_5"};
-        for (std::size_t k = 0; k < all.size(); ++k) u.write(fs::path("my work") / folders[k] / fs::path(all[k]).filename(), all[k]);
+        // Lab N's files in tp1/, "TP 2/", "Lab 3/", lab4-final/, tp_5/... by its number.
+        const std::vector<std::string> forms{"tp_#", "tp#", "TP #", "Lab #", "lab#-final"};
+        for (std::size_t k = 0; k < all.size(); ++k) {
+            const int lab = std::stoi(all[k].substr(3)); // lab<N>_<name>/<file>
+            std::string folder = forms[std::size_t(lab) % forms.size()];
+            folder.replace(folder.find('#'), 1, std::to_string(lab));
+            u.write(fs::path("my work") / folder / fs::path(all[k]).filename(), all[k]);
+        }
         u.write("__MACOSX/my work/Lab 3/._sphere_geometry.cpp", "resource fork");
-        CHECK(u.make().labs == std::vector<int>{1, 2, 3, 4, 5});
+        CHECK(u.make().labs == numbers);
         CHECK(u.copied() == all);
         CHECK(readFile(u.copy / "lab3_sphere/sphere_geometry.cpp") == "lab3_sphere/sphere_geometry.cpp");
     }
@@ -179,17 +190,22 @@ TEST_CASE("nothing is followed: a labs/ link, a linked submission, a linked file
         fs::create_symlink(solution, u.submission / "lab3_sphere/sphere_geometry.cpp");
         REQUIRE(::mkfifo((u.submission / "lab3_sphere/ray_cast_integrator.cpp").c_str(), 0600) == 0); // would block a read
         fs::create_directories(u.root / "elsewhere");
-        std::ofstream(u.root / "elsewhere/look_at.cpp") << "// a classmate's\n";
-        fs::create_hard_link(u.root / "elsewhere/look_at.cpp", u.submission / "look_at.cpp");
-        u.write("lab5_antialiasing/pixel_samples.cpp", std::string((1 << 20) + 1, 'x'));
+        std::ofstream(u.root / "elsewhere/perspective_camera.cpp") << "// a classmate's\n";
+        fs::create_hard_link(u.root / "elsewhere/perspective_camera.cpp", u.submission / "perspective_camera.cpp");
         const SubmissionCopy copy = u.make();
         CHECK(u.copied() == std::vector<std::string>{"lab1_first_image/gradient.cpp"});
         CHECK(copy.labs == std::vector<int>{1});
         CHECK(listed(copy, "lab3_sphere/sphere_geometry.cpp: a symbolic link, not followed"));
         CHECK(listed(copy, "lab3_sphere/ray_cast_integrator.cpp: not a regular file"));
-        CHECK(listed(copy, "look_at.cpp: a file with other names (a hard link), not read"));
-        CHECK(listed(copy, "lab5_antialiasing/pixel_samples.cpp: larger than 1048576 bytes"));
-        CHECK(copy.ignored.size() == 4);
+        CHECK(listed(copy, "perspective_camera.cpp: a file with other names (a hard link), not read"));
+        CHECK(copy.ignored.size() == 3);
+    }
+    SUBCASE("a file over the size limit") {
+        const Upload u;
+        u.write("lab1_first_image/gradient.cpp", std::string((1 << 20) + 1, 'x'));
+        const SubmissionCopy copy = u.make();
+        CHECK(u.copied().empty());
+        CHECK_MESSAGE(listed(copy, "lab1_first_image/gradient.cpp: larger than 1048576 bytes"), copy.ignored.size());
     }
     SUBCASE("the copy's folder a link: it is replaced, its target untouched") {
         const Upload u;

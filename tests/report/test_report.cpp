@@ -9,6 +9,7 @@
 
 #include "grader/lab_catalog.h"
 #include "raylab/image_io.h"
+#include "support/course.h"
 #include "support/needs.h"
 #include "support/run_program.h"
 
@@ -135,31 +136,10 @@ TEST_CASE("the reference build's kit: every figure, its number, its pictures and
     CHECK(md.find("FAIL  lab") == std::string::npos);
     // Each difference map has its scale and its reading.
     CHECK(count(md, "](diff/scale.png) dark: within tolerance") == figures.size());
-    CHECK(md.find("A noisy figure: a pixel is within tolerance") != std::string::npos);
-    // The antialiasing section: both renders' cost, the close-up's place and zoom.
-    CHECK(md.find("Antialiasing: aliased against antialiased") != std::string::npos);
-    CHECK(md.find("zoom/lab3_cosine.png") != std::string::npos);
-    CHECK(md.find("zoom/lab5_antialiased.png") != std::string::npos);
-    CHECK(std::regex_search(md, std::regex(R"(aliased \(figure 3\(c\)\): 1 sample per pixel, [0-9]+ rays, [0-9.]+ s)")));
-    CHECK(std::regex_search(md, std::regex(R"(antialiased \(figure 6\): [0-9]+ samples per pixel, [0-9]+ rays, [0-9.]+ s)")));
-    CHECK(std::regex_search(md, std::regex(R"(Close-up: pixels x [0-9]+ to [0-9]+, y [0-9]+ to [0-9]+ of the [0-9]+ x [0-9]+ picture, each enlarged 10 times)")));
     CHECK(md.find("render time: ") != std::string::npos);
     CHECK(md.find("not done yet") == std::string::npos);
     CHECK(html.find("<pre id=\"image-check\" hidden>image check: not run</pre>") != std::string::npos);
     checkImagesExist(dir, md, html);
-}
-
-TEST_CASE("the difference map of a passing noisy render (lab 5) is dark: within tolerance") {
-    const fs::path dir = fs::path(RAYLAB_REPORT_TEST_DIR) / "reference";
-    REQUIRE(fs::exists(dir / "diff" / "lab5_antialiased.png"));
-    const raylab::Image8 map = raylab::readImage(dir / "diff" / "lab5_antialiased.png");
-    std::size_t dark = 0;
-    for (int j = 0; j < map.height; ++j)
-        for (int i = 0; i < map.width; ++i) {
-            const std::uint8_t* p = map.pixel(i, j);
-            if (p[0] == p[1] && p[1] == p[2] && p[0] <= 40) ++dark;
-        }
-    CHECK(double(dark) >= 0.999 * double(map.width) * double(map.height));
 }
 
 TEST_CASE("the grade block's total is `raylab grade`'s: the reference agent, and the student's stubs") {
@@ -311,6 +291,36 @@ TEST_CASE("--lang fr: French headings, grade lines and typography") {
 }
 
 // Its own suite: skipped without chromium (support/needs.h).
+TEST_SUITE("report: lab 5") { // the reference kit the suite "report" made; skipped in a course without lab 5
+
+TEST_CASE("the antialiasing section: both renders' cost, the close-up's place and zoom; the noisy figure's reading") {
+    if (!raylab::test::labInCourse(RAYLAB_LABS_DIR, 5)) return;
+    const std::string md = readFile(fs::path(RAYLAB_REPORT_TEST_DIR) / "reference" / "report.md");
+    CHECK(md.find("A noisy figure: a pixel is within tolerance") != std::string::npos);
+    CHECK(md.find("Antialiasing: aliased against antialiased") != std::string::npos);
+    CHECK(md.find("zoom/lab3_cosine.png") != std::string::npos);
+    CHECK(md.find("zoom/lab5_antialiased.png") != std::string::npos);
+    CHECK(std::regex_search(md, std::regex(R"(aliased \(figure 3\(c\)\): 1 sample per pixel, [0-9]+ rays, [0-9.]+ s)")));
+    CHECK(std::regex_search(md, std::regex(R"(antialiased \(figure 6\): [0-9]+ samples per pixel, [0-9]+ rays, [0-9.]+ s)")));
+    CHECK(std::regex_search(md, std::regex(R"(Close-up: pixels x [0-9]+ to [0-9]+, y [0-9]+ to [0-9]+ of the [0-9]+ x [0-9]+ picture, each enlarged 10 times)")));
+}
+
+TEST_CASE("the difference map of a passing noisy render (lab 5) is dark: within tolerance") {
+    if (!raylab::test::labInCourse(RAYLAB_LABS_DIR, 5)) return;
+    const fs::path dir = fs::path(RAYLAB_REPORT_TEST_DIR) / "reference";
+    REQUIRE(fs::exists(dir / "diff" / "lab5_antialiased.png"));
+    const raylab::Image8 map = raylab::readImage(dir / "diff" / "lab5_antialiased.png");
+    std::size_t dark = 0;
+    for (int j = 0; j < map.height; ++j)
+        for (int i = 0; i < map.width; ++i) {
+            const std::uint8_t* p = map.pixel(i, j);
+            if (p[0] == p[1] && p[1] == p[2] && p[0] <= 40) ++dark;
+        }
+    CHECK(double(dark) >= 0.999 * double(map.width) * double(map.height));
+}
+
+} // TEST_SUITE
+
 TEST_SUITE("report pdf") {
 
 TEST_CASE("--pdf: a PDF with chromium") {

@@ -1,5 +1,6 @@
 // The figure steps the labs register for the crash finder (src/figure_steps.h): each is a function
-// its lab's lab.toml declares, and they run in the order a ray needs them, labs in order.
+// its lab's lab.toml declares (a course's lab or a given one, whose reference registers its steps too),
+// and they run in the order a ray needs them, labs in order.
 #include "support/scene_files.h"
 #include "grader/lab_catalog.h"
 #include "src/figure_steps.h"
@@ -36,9 +37,10 @@ TEST_SUITE("figure steps") {
         for (const std::string& name : names) {
             const FigureStep& step = figureSteps().find(name)->value;
             CHECK(step.function == name);
-            const auto lab = std::find_if(labs.labs.begin(), labs.labs.end(),
-                                          [&](const grader::LabDescription& l) { return l.id == step.lab; });
-            REQUIRE_MESSAGE(lab != labs.labs.end(), "the step " << name << " is of no lab: " << step.lab);
+            std::vector<grader::LabDescription> all = labs.labs;
+            all.insert(all.end(), labs.given.begin(), labs.given.end());
+            const auto lab = std::find_if(all.begin(), all.end(), [&](const grader::LabDescription& l) { return l.id == step.lab; });
+            REQUIRE_MESSAGE(lab != all.end(), "the step " << name << " is of no lab: " << step.lab);
             CHECK_MESSAGE(std::any_of(lab->functions.begin(), lab->functions.end(),
                                       [&](const grader::LabFunction& f) { return f.name == name; }),
                           name << " is not a [[function]] of " << lab->file.string());

@@ -1,11 +1,14 @@
 // The pixel inspector against agents of known code (built by tests/grading from solutions/ and the
 // mistakes' patches): the reference's own agent agrees on every value of a pixel of labs 2 to 5; a
 // mirrored lookAt basis (mistake M4.1) differs first at the camera's u; the same sample offset for
-// every sample (lab 5) first at the second sample. Run under each sandbox (ctest's RAYLAB_SANDBOX).
+// every sample (lab 5) first at the second sample. Run under each sandbox (ctest's RAYLAB_SANDBOX). The
+// pixels are those of the course's labs; a lab's own cases, a suite each, are skipped where the course
+// does not hand it out (support/course.h).
 #include "watch/pixel_inspector.h"
 
 #include "grader/lab_catalog.h"
 #include "src/messages.h"
+#include "support/course.h"
 #include "support/files.h"
 
 #include <doctest/doctest.h>
@@ -56,6 +59,23 @@ bool handoutSectionExists(const std::string& link) {
     return false;
 }
 
+struct Pixel {
+    std::string figure;
+    int x, y;
+};
+
+// The pixels of `pixels` whose figure is of a lab of the course.
+std::vector<Pixel> inCourse(const std::vector<Pixel>& pixels) {
+    const raylab::grader::LabCatalog labs = raylab::grader::loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs");
+    std::vector<Pixel> kept;
+    for (const Pixel& p : pixels)
+        if (labs.labNumberOfFigure(p.figure) != 0) kept.push_back(p);
+    REQUIRE_MESSAGE(!kept.empty(), "no pixel of a lab of this course");
+    return kept;
+}
+
+bool labInCourse(int number) { return raylab::test::labInCourse(fs::path(RAYLAB_SOURCE_DIR) / "labs", number); }
+
 std::vector<std::string> names(const json& answer) {
     std::vector<std::string> all;
     for (const json& row : answer["rows"]) all.push_back(row["name"]);
@@ -67,9 +87,9 @@ std::vector<std::string> names(const json& answer) {
 TEST_SUITE("watch inspector") {
 
 TEST_CASE("the reference's agent agrees with the reference on every value") {
-    for (const auto& [figure, x, y] : {std::tuple{"lab2_directions", 10, 390}, std::tuple{"lab3_cosine", 300, 150},
-                                       std::tuple{"lab3_placeholder_normal", 250, 180}, std::tuple{"lab4_d", 150, 100},
-                                       std::tuple{"lab5_antialiased", 300, 100}}) {
+    for (const auto& [figure, x, y] : inCourse({{"lab2_directions", 10, 390}, {"lab3_cosine", 300, 150},
+                                                {"lab3_placeholder_normal", 250, 180}, {"lab4_d", 150, 100},
+                                                {"lab5_antialiased", 300, 100}})) {
         const json answer = inspect("raylab-agent-reference", figure, x, y);
         INFO(answer.dump(1));
         CHECK(answer["note"] == "");
@@ -78,34 +98,18 @@ TEST_CASE("the reference's agent agrees with the reference on every value") {
         for (const json& row : answer["rows"]) // but the pictures' pixel: nothing was graded into settings.out here
             if (row["name"] != "pixel colour") CHECK(!row["student"].is_null());
     }
-    CHECK(names(inspect("raylab-agent-reference", "lab4_d", 150, 100)) ==
-          std::vector<std::string>{"(sx, sy)", "camera u", "camera v", "camera w", "topLeft", "hit", "t", "hit position",
-                                   "normal", "colour"});
 }
 
-TEST_CASE("a mirrored lookAt basis differs first at u, with its formula") {
-    const json answer = inspect("raylab-mistake-mirrored_basis", "lab4_d", 150, 100);
-    INFO(answer.dump(1));
-    REQUIRE(answer["first"] == 1);
-    CHECK(answer["rows"][1]["name"] == "camera u");
-    CHECK(answer["rows"][1]["formula"] == "u = normalize(cross(up, w))");
-    CHECK(answer["rows"][1]["handout"] == "labs/lab4_lookat_camera/README.md#the-maths");
-}
-
-TEST_CASE("one offset for every sample differs first at the second sample") {
-    const json answer = inspect("raylab-mistake-same_offset_every_sample", "lab5_antialiased", 300, 100);
-    INFO(answer.dump(1));
-    CHECK(answer["rows"][0]["name"] == "samples traced");
-    CHECK(answer["rows"][0]["differs"] == false);
-    REQUIRE(answer["first"] == 2);
-    CHECK(answer["rows"][2]["name"] == "sample 2 (sx, sy)");
+TEST_CASE("a pixel outside the picture, a figure of no lab: said, nothing run") {
+    CHECK(inspect("raylab-agent-reference", "lab3_cosine", 600, 0)["note"] == "pixel (600, 0) is outside the picture (600 x 400)");
+    CHECK(inspect("raylab-agent-reference", "../secret", 1, 1)["note"] == "no figure ../secret in this lab");
+    CHECK(inspect("raylab-agent-reference", "lab1_gradient", 1, 1)["rows"].empty());
 }
 
 TEST_CASE("every row links a section of its handout, in English and in French") {
     for (const raylab::Language language : {raylab::Language::En, raylab::Language::Fr}) {
         raylab::setLanguage(language);
-        for (const auto& [figure, x, y] : {std::tuple{"lab3_cosine", 300, 150}, std::tuple{"lab4_d", 150, 100},
-                                           std::tuple{"lab5_antialiased", 300, 100}}) {
+        for (const auto& [figure, x, y] : inCourse({{"lab3_cosine", 300, 150}, {"lab4_d", 150, 100}, {"lab5_antialiased", 300, 100}})) {
             const json answer = inspect("raylab-agent-reference", figure, x, y); // kept: the loop reads inside it
             for (const json& row : answer["rows"]) CHECK_MESSAGE(handoutSectionExists(row["handout"]), row["handout"]);
         }
@@ -114,10 +118,39 @@ TEST_CASE("every row links a section of its handout, in English and in French") 
     raylab::setLanguage(raylab::Language::En);
 }
 
-TEST_CASE("a pixel outside the picture, a figure of no lab: said, nothing run") {
-    CHECK(inspect("raylab-agent-reference", "lab3_cosine", 600, 0)["note"] == "pixel (600, 0) is outside the picture (600 x 400)");
-    CHECK(inspect("raylab-agent-reference", "../secret", 1, 1)["note"] == "no figure ../secret in this lab");
-    CHECK(inspect("raylab-agent-reference", "lab1_gradient", 1, 1)["rows"].empty());
+} // TEST_SUITE
+
+TEST_SUITE("watch inspector: lab 4") {
+
+TEST_CASE("the rows of a lab 4 pixel") {
+    if (!labInCourse(4)) return;
+    CHECK(names(inspect("raylab-agent-reference", "lab4_d", 150, 100)) ==
+          std::vector<std::string>{"(sx, sy)", "camera u", "camera v", "camera w", "topLeft", "hit", "t", "hit position",
+                                   "normal", "colour"});
+}
+
+TEST_CASE("a mirrored lookAt basis differs first at u, with its formula") {
+    if (!labInCourse(4)) return;
+    const json answer = inspect("raylab-mistake-mirrored_basis", "lab4_d", 150, 100);
+    INFO(answer.dump(1));
+    REQUIRE(answer["first"] == 1);
+    CHECK(answer["rows"][1]["name"] == "camera u");
+    CHECK(answer["rows"][1]["formula"] == "u = normalize(cross(up, w))");
+    CHECK(answer["rows"][1]["handout"] == "labs/lab4_lookat_camera/README.md#the-maths");
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("watch inspector: lab 5") {
+
+TEST_CASE("one offset for every sample differs first at the second sample") {
+    if (!labInCourse(5)) return;
+    const json answer = inspect("raylab-mistake-same_offset_every_sample", "lab5_antialiased", 300, 100);
+    INFO(answer.dump(1));
+    CHECK(answer["rows"][0]["name"] == "samples traced");
+    CHECK(answer["rows"][0]["differs"] == false);
+    REQUIRE(answer["first"] == 2);
+    CHECK(answer["rows"][2]["name"] == "sample 2 (sx, sy)");
 }
 
 } // TEST_SUITE
