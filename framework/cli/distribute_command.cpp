@@ -10,13 +10,17 @@
 #include "commands.h"
 
 #include "grader/lab_catalog.h"
+#include "src/atomic_file.h"
 #include "src/messages.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <regex>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -107,6 +111,37 @@ void addGivenLabs(const fs::path& source, const grader::LabCatalog& course, std:
     }
 }
 
+// A Markdown file of the students' tree, its links into the folder of a lab the course leaves out (a
+// handout's "next: lab 4" in a course of labs 1 to 3) made their text alone, and its pictures from
+// there dropped: they would lead nowhere. Links elsewhere, web addresses and anchors are kept.
+std::string withoutLinksToAbsentLabs(const std::string& text, const fs::path& relative, const std::set<std::string>& labFolders) {
+    static const std::regex link(R"((!?)\[([^\]]*)\]\(([^)\s#]*)([^)\s]*)\))");
+    const auto intoAbsentLab = [&](const std::string& target) {
+        if (target.empty() || target.find("://") != std::string::npos) return false;
+        const std::string path = (relative.parent_path() / target).lexically_normal().generic_string();
+        return std::any_of(labFolders.begin(), labFolders.end(), [&](const std::string& folder) {
+            return folder.rfind("labs/", 0) == 0 && (path == folder || path.rfind(folder + "/", 0) == 0);
+        });
+    };
+    std::string out;
+    auto last = text.cbegin();
+    for (std::sregex_iterator it(text.begin(), text.end(), link), end; it != end; ++it) {
+        const std::smatch& m = *it;
+        out.append(last, m[0].first);
+        out += !intoAbsentLab(m[3].str()) ? m[0].str() : m[1].length() ? std::string() : m[2].str();
+        last = m[0].second;
+    }
+    return out.append(last, text.cend());
+}
+
+std::string fileText(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) throw std::runtime_error("cannot read " + file.string());
+    return text.str();
+}
+
 } // namespace
 
 std::vector<TreeFile> studentTreeFiles(const fs::path& source) {
@@ -131,11 +166,16 @@ int writeStudentTree(const fs::path& source, const fs::path& out) {
     if (fs::exists(out, error) && !fs::is_empty(out, error))
         throw std::invalid_argument(out.string() + " exists and is not empty; choose a new folder");
     const std::vector<TreeFile> files = studentTreeFiles(source); // before `out` exists: never inside it
+    const fs::path sourceAbs = fs::canonical(source);
+    const std::set<std::string> labFolders = labFoldersWithheld(sourceAbs, courseCatalog(sourceAbs));
     for (const TreeFile& file : files) {
         fs::create_directories((out / file.relative).parent_path());
-        fs::copy_file(file.source, out / file.relative, fs::copy_options::overwrite_existing);
+        if (file.relative.extension() == ".md")
+            writeFileAtomically(out / file.relative, withoutLinksToAbsentLabs(fileText(file.source), file.relative, labFolders));
+        else
+            fs::copy_file(file.source, out / file.relative, fs::copy_options::overwrite_existing); // its permissions too
     }
-    writeStudentsReadme(out, courseCatalog(fs::canonical(source)));
+    writeStudentsReadme(out, courseCatalog(sourceAbs));
     const bool hadReadme = std::any_of(files.begin(), files.end(), [](const TreeFile& f) { return f.relative == "README.md"; });
     return int(files.size()) + (hadReadme ? 1 : 2); // LISEZMOI.md, and README.md where there was none
 }
