@@ -2,6 +2,7 @@
 // solutions or out/reference/, every lab's handout, and every command they show exists: each fenced
 // command is run with --help (raylab's), found as a workflow preset of the tree (cmake's), or is an
 // executable file of the tree (scripts/setup.sh). The build command is the one distribute prints.
+#include "grader/lab_catalog.h"
 #include "support/files.h"
 #include "support/run_program.h"
 
@@ -97,8 +98,8 @@ TEST_CASE("the students' README and LISEZMOI: their tree, their commands, no sol
         CHECK_MESSAGE(readme.find("solutions") == std::string::npos, name << ":\n" << readme);
         CHECK_MESSAGE(readme.find("out/reference") == std::string::npos, name << ":\n" << readme);
         // Every lab's handout, and every link, is a file of the tree.
-        for (const char* lab : {"lab1_first_image", "lab3_sphere", "lab5_antialiasing"})
-            CHECK_MESSAGE(readme.find(std::string("](labs/") + lab + "/README") != std::string::npos, name << ": " << lab);
+        for (const raylab::grader::LabDescription& lab : raylab::grader::loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs").labs)
+            CHECK_MESSAGE(readme.find("](labs/" + lab.id + "/README") != std::string::npos, name << ": " << lab.id);
         CHECK_MESSAGE(readme.find("|---|---|---|\n| 1 | [") != std::string::npos, name << ": the labs' table"); // one table
         const std::regex link(R"(\]\(([^)#]+)\))");
         int links = 0;
