@@ -1,6 +1,7 @@
 // The commands as a user runs them: raylab grade --images, raylab grade (reports), raylab distribute.
 #include "support/files.h"
 #include "grading_support.h"
+#include "support/course.h"
 
 #include "raylab/image_io.h"
 
@@ -64,30 +65,36 @@ void checkFrenchOnly(const ProgramRun& run) {
 TEST_SUITE("commands") {
 
 TEST_CASE("grade --images: a line per figure, a clear FAIL for each bad file, the rest still graded") {
+    // The course's figures (the catalogue's, in order): the first and the last right, the second
+    // missing; then the second not a PNG, the third cut short, the fourth of another size.
+    std::vector<std::string> figures;
+    for (const LabDescription& lab : loadLabCatalog(sourceDir() / "labs").labs)
+        for (const LabFigure& figure : lab.figures) figures.push_back(figure.id);
+    REQUIRE(figures.size() >= 5);
     const fs::path dir = freshFolder("raylab-images-test");
     const fs::path report = dir / "report";
-    for (const char* id : {"lab1_gradient", "lab3_flat", "lab5_antialiased"})
-        fs::copy_file(referencePicture(id), dir / (std::string(id) + ".png"));
+    for (const std::string& id : {figures[0], figures.back()})
+        fs::copy_file(referencePicture(id), dir / (id + ".png"));
     ProgramRun run = runRaylab({"grade", "--images", dir.string(), "--report", report.string()});
     CHECK_MESSAGE(run.status == 0, run.output);
-    CHECK(hasLine(run.output, "PASS  lab5_antialiased", "unbiased"));
-    CHECK(hasLine(run.output, "FAIL  lab4_a", "missing"));
+    CHECK(hasLine(run.output, "PASS  " + figures.back(), ""));
+    CHECK(hasLine(run.output, "FAIL  " + figures[1], "missing"));
 
-    std::ofstream(dir / "lab2_directions.png") << "this is text, not a picture";
+    std::ofstream(dir / (figures[1] + ".png")) << "this is text, not a picture";
     {
-        std::ifstream whole(referencePicture("lab3_cosine"), std::ios::binary);
+        std::ifstream whole(referencePicture(figures[2]), std::ios::binary);
         std::string bytes((std::istreambuf_iterator<char>(whole)), {});
-        std::ofstream(dir / "lab3_cosine.png", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+        std::ofstream(dir / (figures[2] + ".png"), std::ios::binary) << bytes.substr(0, bytes.size() / 2);
     }
-    raylab::Image8 small{300, 200, std::vector<std::uint8_t>(300 * 200 * 3, 128)};
-    raylab::writePng(dir / "lab4_b.png", small);
+    raylab::Image8 small{7, 5, std::vector<std::uint8_t>(7 * 5 * 3, 128)}; // no figure's size
+    raylab::writePng(dir / (figures[3] + ".png"), small);
     run = runRaylab({"grade", "--images", dir.string(), "--report", report.string()});
     CHECK(run.status == 1);
-    CHECK_MESSAGE(hasLine(run.output, "FAIL  lab2_directions", "not a PNG"), run.output);
-    CHECK_MESSAGE(hasLine(run.output, "FAIL  lab3_cosine", "unreadable"), run.output);
-    CHECK_MESSAGE(hasLine(run.output, "FAIL  lab4_b", "300 x 200"), run.output);
-    CHECK(hasLine(run.output, "PASS  lab1_gradient", ""));
-    CHECK(hasLine(run.output, "PASS  lab3_flat", ""));
+    CHECK_MESSAGE(hasLine(run.output, "FAIL  " + figures[1], "not a PNG"), run.output);
+    CHECK_MESSAGE(hasLine(run.output, "FAIL  " + figures[2], "unreadable"), run.output);
+    CHECK_MESSAGE(hasLine(run.output, "FAIL  " + figures[3], "7 x 5"), run.output);
+    CHECK(hasLine(run.output, "PASS  " + figures[0], ""));
+    CHECK(hasLine(run.output, "PASS  " + figures.back(), ""));
     CHECK(fs::exists(report / "index.html"));
 }
 
@@ -103,23 +110,6 @@ TEST_CASE("grade --images names the mistake a picture shows") {
     const ProgramRun run = runRaylab({"grade", "--images", (dir / "figures").string(), "--report", (dir / "report").string()});
     CHECK(run.status == 1);
     CHECK_MESSAGE(run.output.find("your image matches M2.3 'v flipped (upside-down image)'") != std::string::npos, run.output);
-}
-
-TEST_CASE("grade writes index.html, results.json and junit.xml that agree") {
-    const fs::path dir = freshFolder("raylab-grade-report");
-    const ProgramRun run = runRaylab({"grade", "--agent", (binDir() / "raylab-mistake-samples_not_divided").string(),
-                                      "--report", (dir / "report").string()},
-                                     dir);
-    CHECK(run.status == 1);
-    CHECK(hasLine(run.output, "  FAIL  lab5  renderPixel: N rays and their average", ""));
-    std::ifstream in(dir / "report" / "results.json");
-    const nlohmann::json j = nlohmann::json::parse(in);
-    double sum = 0.;
-    for (const auto& t : j["tests"]) sum += t["score"].get<double>();
-    CHECK(j["score"].get<double>() == doctest::Approx(sum));
-    CHECK(j["score"].get<double>() < j["extra_data"]["max_score"].get<double>());
-    CHECK(fs::exists(dir / "report" / "junit.xml"));
-    CHECK(fs::exists(dir / "report" / "index.html"));
 }
 
 TEST_CASE("distribute writes a tree without the solutions, with the references") {
@@ -184,13 +174,17 @@ TEST_CASE("references for one figure's scene touch that figure alone: every othe
 
 
 TEST_CASE("grade --lab N grades that lab alone") {
+    // The course's last lab, with a mistake of lab 1, which no lab uses.
+    const LabDescription last = loadLabCatalog(sourceDir() / "labs").labs.back();
+    REQUIRE(last.number != 1);
     const fs::path dir = freshFolder("raylab-grade-lab");
-    const ProgramRun run = runRaylab({"grade", "--lab", "5", "--agent", (binDir() / "raylab-mistake-i_j_swapped").string(),
-                                      "--report", (dir / "report").string()},
+    const ProgramRun run = runRaylab({"grade", "--lab", std::to_string(last.number), "--agent",
+                                      (binDir() / "raylab-mistake-i_j_swapped").string(), "--report", (dir / "report").string()},
                                      dir);
-    CHECK_MESSAGE(run.status == 0, run.output); // the mistake is in lab 1
+    CHECK_MESSAGE(run.status == 0, run.output);
     CHECK(run.output.find("lab1") == std::string::npos);
-    CHECK(hasLine(run.output, "  total: 13 / 13", ""));
+    const std::string points = raylab::formatNumber(labPoints(last));
+    CHECK_MESSAGE(hasLine(run.output, "  total: " + points + " / " + points, ""), run.output);
 }
 
 TEST_CASE("a French grade speaks French only: the reference, the stubs and a mistake") {
@@ -231,3 +225,34 @@ TEST_CASE("LANG=fr_FR.UTF-8 gives French without --lang, and --lang en overrides
 }
 
 } // TEST_SUITE
+
+TEST_SUITE("commands: lab 5") {
+
+TEST_CASE("grade --images compares lab 5's random picture with its converged reference") {
+    if (!raylab::test::labInCourse(sourceDir() / "labs", 5)) return;
+    const fs::path dir = freshFolder("raylab-images-lab5");
+    fs::copy_file(referencePicture("lab5_antialiased"), dir / "lab5_antialiased.png");
+    const ProgramRun run = runRaylab({"grade", "--images", dir.string(), "--report", (dir / "report").string()});
+    CHECK_MESSAGE(hasLine(run.output, "PASS  lab5_antialiased", "unbiased"), run.output);
+}
+
+TEST_CASE("grade writes index.html, results.json and junit.xml that agree") {
+    if (!raylab::test::labInCourse(sourceDir() / "labs", 5)) return;
+    const fs::path dir = freshFolder("raylab-grade-report");
+    const ProgramRun run = runRaylab({"grade", "--agent", (binDir() / "raylab-mistake-samples_not_divided").string(),
+                                      "--report", (dir / "report").string()},
+                                     dir);
+    CHECK(run.status == 1);
+    CHECK(hasLine(run.output, "  FAIL  lab5  renderPixel: N rays and their average", ""));
+    std::ifstream in(dir / "report" / "results.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    double sum = 0.;
+    for (const auto& t : j["tests"]) sum += t["score"].get<double>();
+    CHECK(j["score"].get<double>() == doctest::Approx(sum));
+    CHECK(j["score"].get<double>() < j["extra_data"]["max_score"].get<double>());
+    CHECK(fs::exists(dir / "report" / "junit.xml"));
+    CHECK(fs::exists(dir / "report" / "index.html"));
+}
+
+} // TEST_SUITE
+
