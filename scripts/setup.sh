@@ -11,12 +11,13 @@ set -euo pipefail
 packages=(g++ cmake make patch pkg-config libglm-dev libstb-dev zlib1g-dev doctest-dev libtomlplusplus-dev
           libcli11-dev nlohmann-json3-dev libzip-dev libcmark-dev libyaml-cpp-dev libcpp-httplib-dev bubblewrap
           libseccomp-dev ccache)
-# The test suite: python3 (the tests parse junit.xml with its XML parser), chromium (raylab report's
+# The test suite: git (the toy-lab test copies the tree as `git ls-files` lists it), python3 (the tests
+# parse junit.xml with its XML parser), chromium (raylab report's
 # HTML in a headless browser, and its fonts), mmdebstrap (the Gradescope zip set up in a bare Debian),
 # similarity-tester (sim_c++: the class page's similar submissions, which grade-class finds with it
 # where it is installed; Debian 13 has no such package). A test whose package is missing is skipped,
 # saying so (tests/support/needs.h).
-test_packages=(python3 chromium fonts-dejavu-core mmdebstrap similarity-tester)
+test_packages=(git python3 chromium fonts-dejavu-core mmdebstrap similarity-tester)
 # What some archives lack, which costs tests only (skipped): Ubuntu has no chromium package but a snap's
 # (chromium-browser, which a container cannot run); Debian 13 has no similarity-tester.
 declare -A optional=([chromium]=1 [fonts-dejavu-core]=1 [similarity-tester]=1)

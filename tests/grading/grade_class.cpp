@@ -28,19 +28,32 @@ int gradeClass(const fs::path& classDir, const fs::path& out, const fs::path& bu
     return runProgram(argv, out.parent_path() / "class-output.txt", classDir.parent_path()).status;
 }
 
+// Bob's two broken labs, the course's last two: the last does not compile, the one before is the
+// reference, included from the grader's tree.
+const LabDescription& notCompiling() { static const LabDescription lab = loadLabCatalog(sourceDir() / "labs").labs.back(); return lab; }
+const LabDescription& includingReference() {
+    static const LabDescription lab = [] {
+        const LabCatalog course = loadLabCatalog(sourceDir() / "labs");
+        REQUIRE(course.labs.size() >= 2);
+        return course.labs[course.labs.size() - 2];
+    }();
+    return lab;
+}
+// The file of `lab` bob breaks: its first.
+std::string firstFile(const LabDescription& lab) { return lab.files().at(0); }
+
 fs::path makeClass(const std::string& name) {
     const fs::path root = raylab::test::scratchPath(name);
     fs::remove_all(root);
     fs::create_directories(root / "class");
-    fs::copy(sourceDir() / "solutions", root / "class" / "alice", fs::copy_options::recursive);
-    fs::copy(sourceDir() / "solutions", root / "class" / "bob", fs::copy_options::recursive);
-    std::ofstream(root / "class" / "bob" / "lab3_sphere" / "sphere_geometry.cpp", std::ios::app) << "\nnot C++ at all\n";
-    // Bob's lab 4 is the reference, included from the grader's tree through the framework's include
-    // folder (raylab/../../../ is the tree's root): it must not build.
-    std::ofstream(root / "class" / "bob" / "lab4_lookat_camera" / "look_at.cpp")
-        << "#if __has_include(\"raylab/../../../solutions/lab4_lookat_camera/look_at.cpp\")\n"
-           "#include \"raylab/../../../solutions/lab4_lookat_camera/look_at.cpp\"\n"
-           "#endif\n";
+    copyCourseSolutions(root / "class" / "alice");
+    copyCourseSolutions(root / "class" / "bob");
+    std::ofstream(root / "class" / "bob" / notCompiling().id / firstFile(notCompiling()), std::ios::app) << "\nnot C++ at all\n";
+    // The reference, through the framework's include folder (raylab/../../../ is the tree's root): it
+    // must not build.
+    const std::string reference = "raylab/../../../solutions/" + includingReference().id + "/" + firstFile(includingReference());
+    std::ofstream(root / "class" / "bob" / includingReference().id / firstFile(includingReference()))
+        << "#if __has_include(\"" << reference << "\")\n#include \"" << reference << "\"\n#endif\n";
     return root;
 }
 
@@ -88,8 +101,7 @@ const std::vector<std::string> kHostileNames{"-dollar$(touch PWNED) back`touch P
 TEST_CASE("grade-class builds the framework once and grades each student in its own folder: hostile names are never "
           "run as commands, each correct solution gets full points, a compile error costs only its labs") {
     const fs::path root = makeClass("raylab-class-full");
-    for (const std::string& name : kHostileNames)
-        fs::copy(sourceDir() / "solutions", root / "class" / name, fs::copy_options::recursive);
+    for (const std::string& name : kHostileNames) copyCourseSolutions(root / "class" / name);
     const int status = gradeClass(root / "class", root / "out");
     const std::string output = readFile(root / "class-output.txt");
     REQUIRE_MESSAGE(status == 0, output);
@@ -110,16 +122,17 @@ TEST_CASE("grade-class builds the framework once and grades each student in its 
         REQUIRE(row.size() == rows[0].size());
         if (row[0] == "student") continue;
         if (row[0] == "bob") {
-            // A compile error in lab 3; lab 4 reads the reference: neither builds, and the problems say why.
-            // Under bubblewrap the compiler does not see the reference (lab 4 is empty and does not link);
-            // without it, raylab-build-guard refuses what the compiler read.
-            CHECK(std::vector<std::string>(row.begin() + 1, row.end() - 1) == expectedPointsCells({3, 4}));
+            // A compile error in one lab, the reference read in the other: neither builds, and the problems
+            // say why. Under bubblewrap the compiler does not see the reference (the lab is empty and does
+            // not link); without it, raylab-build-guard refuses what the compiler read.
+            CHECK(std::vector<std::string>(row.begin() + 1, row.end() - 1) ==
+                  expectedPointsCells({notCompiling().number, includingReference().number}));
             if (bubblewrapMissing().empty())
                 CHECK_MESSAGE(row[problems].find("outside your submission") == std::string::npos, row[problems]);
             else
-                CHECK(row[problems].find("solutions/lab4_lookat_camera/look_at.cpp, outside your submission") !=
-                      std::string::npos);
-            CHECK(row[problems].find("sphere_geometry.cpp") != std::string::npos); // the compiler's message
+                CHECK(row[problems].find("solutions/" + includingReference().id + "/" + firstFile(includingReference()) +
+                                         ", outside your submission") != std::string::npos);
+            CHECK(row[problems].find(firstFile(notCompiling())) != std::string::npos); // the compiler's message
         } else {
             CHECK_MESSAGE(row[total] == row[max], "total " << row[total] << " of " << row[max] << ": " << row[problems]);
             CHECK(row[problems].empty());
@@ -137,7 +150,7 @@ TEST_CASE("grade-class builds the framework once and grades each student in its 
         const std::string log = readFile(root / "out" / "students" / name / "build.log");
         CHECK(log.find("raylab_framework.dir") == std::string::npos);
         CHECK(log.find("raylab_grader.dir") == std::string::npos);
-        CHECK(log.find("look_at.cpp") != std::string::npos);
+        CHECK(log.find(firstFile(includingReference())) != std::string::npos);
         CHECK_FALSE(fs::exists(root / "out" / "students" / name / "build"));
     }
     CHECK(output.find("once for the class") == output.rfind("once for the class")); // built once
@@ -152,17 +165,18 @@ TEST_CASE("grade-class takes uploads as students make them: the files flat, odd 
     const fs::path flat = root / "class" / "flat", odd = root / "class" / "odd", linked = root / "class" / "linked",
                    broken = root / "class" / "broken";
     fs::create_directories(flat);
-    for (const auto& entry : fs::recursive_directory_iterator(sourceDir() / "solutions"))
+    copyCourseSolutions(root / "course");
+    for (const auto& entry : fs::recursive_directory_iterator(root / "course"))
         if (entry.is_regular_file()) fs::copy_file(entry.path(), flat / entry.path().filename());
     fs::create_directories(flat / "__MACOSX");
-    std::ofstream(flat / "__MACOSX" / "._look_at.cpp") << "resource fork";
-    fs::copy(sourceDir() / "solutions", odd, fs::copy_options::recursive);
+    std::ofstream(flat / "__MACOSX" / ("._" + firstFile(notCompiling()))) << "resource fork";
+    fs::copy(root / "course", odd, fs::copy_options::recursive);
     for (const char* name : {"x;y.cpp", "${HOME}x.cpp", "it's a \"file\".cpp"})
-        std::ofstream(odd / "lab3_sphere" / name) << "not C++\n";
+        std::ofstream(odd / notCompiling().id / name) << "not C++\n";
     fs::create_directories(linked);
     fs::create_directory_symlink(sourceDir() / "solutions", linked / "labs");
-    fs::copy(sourceDir() / "solutions", broken, fs::copy_options::recursive);
-    std::ofstream(broken / "lab4_lookat_camera" / "look_at.cpp", std::ios::app) << "\nint missing_semicolon = 1\n";
+    fs::copy(root / "course", broken, fs::copy_options::recursive);
+    std::ofstream(broken / includingReference().id / firstFile(includingReference()), std::ios::app) << "\nint missing_semicolon = 1\n";
 
     const int status = gradeClass(root / "class", root / "out");
     REQUIRE_MESSAGE(status == 0, readFile(root / "class-output.txt"));
@@ -179,7 +193,7 @@ TEST_CASE("grade-class takes uploads as students make them: the files flat, odd 
     CHECK(points("linked") == expectedPointsCells(everyLab()));
     CHECK(problems("linked").find("no lab file found") != std::string::npos);
     CHECK(problems("linked").find("labs: a symbolic link, not followed") != std::string::npos);
-    CHECK(points("broken") == expectedPointsCells({4}));
+    CHECK(points("broken") == expectedPointsCells({includingReference().number}));
 }
 
 } // TEST_SUITE

@@ -87,6 +87,7 @@ inline LabDescription usedLab(const LabCatalog& catalog) {
 
 // The course's labs of solutions/ copied into `to` (<lab>/<files>), as a student uploads them.
 inline void copyCourseSolutions(const fs::path& to) {
+    fs::create_directories(to);
     for (const LabDescription& lab : loadLabCatalog(sourceDir() / "labs").labs)
         fs::copy(sourceDir() / "solutions" / lab.id, to / lab.id, fs::copy_options::recursive);
 }
