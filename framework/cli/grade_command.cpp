@@ -232,6 +232,7 @@ int gradeClass(ClassRunOptions run, const GradeOptions& o, const Context& contex
 #if defined(__unix__) || defined(__APPLE__)
     if (o.noSandbox) setenv("RAYLAB_SANDBOX", "none", 1);
 #endif
+    const StopSignals stopSignals; // a stop from here on ends the run cleanly, scratch removal included
     const RunScratch scratch("class"); // removed at its end, even on an exception
     noteRemovedScratch(scratch, "grade-class");
     run.runOnlyDescriptors.push_back(scratch.lockDescriptor());

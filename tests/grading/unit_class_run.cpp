@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 #if defined(__unix__) || defined(__APPLE__)
+#include <csignal>
 #include <cstdio>
 #include <fcntl.h>
 #include <sys/file.h>
@@ -188,6 +189,45 @@ TEST_CASE("a class run prepares once, before the first student it grades, and no
     CHECK_FALSE(fs::exists(steps));
     fs::remove_all(root);
 }
+
+#if defined(__unix__) || defined(__APPLE__)
+// grade-class holds StopSignals from before its run until its scratch folder is removed: a stop that
+// comes before the run stops it before anyone is graded; one that comes after it kills nothing.
+TEST_CASE("a stop signal while a command holds StopSignals: before the run, it stops the run; after it, nothing") {
+    const fs::path root = raylab::test::freshFolder("raylab-unit-stop-signals");
+    fs::create_directories(root / "class" / "alice");
+    std::ofstream(root / "class" / "alice" / "gradient.cpp") << "// work\n";
+    raylab::grader::ClassRunOptions options;
+    options.classFolder = root / "class";
+    options.out = root / "out";
+    const auto grade = [](const raylab::grader::StudentWork& work) { // in a process of its own
+        return raylab::grader::StudentRecord{work.name, {{"total", "1"}}};
+    };
+    const auto graded = [&] { return raylab::grader::readStudentResult(root / "out" / "students" / "alice").has_value(); };
+    const auto handler = [] {
+        struct sigaction current {};
+        ::sigaction(SIGTERM, nullptr, &current);
+        return current.sa_handler;
+    };
+    const auto before = handler();
+    {
+        const raylab::grader::StopSignals command;
+        ::raise(SIGTERM); // caught: only asks the run to stop
+        CHECK(raylab::grader::runClass(options, grade) == 128 + SIGTERM);
+        CHECK_FALSE(graded());
+    }
+    CHECK((handler() == before));
+    {
+        const raylab::grader::StopSignals command;
+        CHECK(raylab::grader::runClass(options, grade) == 0);
+        CHECK(graded());
+        ::raise(SIGTERM); // this process would die here if the run had given the signal back
+        CHECK((handler() != before));
+    }
+    CHECK((handler() == before));
+    fs::remove_all(root);
+}
+#endif
 
 #ifdef __linux__
 

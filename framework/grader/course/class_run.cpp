@@ -166,45 +166,15 @@ ClassEntries listClass(const fs::path& classFolder, const fs::path& out) {
 // ---- stopping: SIGINT and SIGTERM only set a flag; the run stops the student's process itself ----
 
 volatile std::sig_atomic_t g_stopSignal = 0;
+int g_stopSignalsDepth = 0; // StopSignals alive: the outermost installs the handlers and restores them
+#ifdef RAYLAB_POSIX_CLASS_RUN
+struct sigaction g_previousInt {}, g_previousTerm {};
+#else
+void (*g_previousInt)(int) = nullptr;
+void (*g_previousTerm)(int) = nullptr;
+#endif
 
 extern "C" void onStopSignal(int signal) { g_stopSignal = signal; }
-
-class StopSignals {
-public:
-    StopSignals() {
-        g_stopSignal = 0;
-#ifdef RAYLAB_POSIX_CLASS_RUN
-        struct sigaction action {};
-        action.sa_handler = onStopSignal;
-        sigemptyset(&action.sa_mask);
-        action.sa_flags = 0; // no SA_RESTART: a wait for the lock returns at once
-        sigaction(SIGINT, &action, &m_previousInt);
-        sigaction(SIGTERM, &action, &m_previousTerm);
-#else
-        m_previousInt = std::signal(SIGINT, onStopSignal);
-        m_previousTerm = std::signal(SIGTERM, onStopSignal);
-#endif
-    }
-    ~StopSignals() {
-#ifdef RAYLAB_POSIX_CLASS_RUN
-        sigaction(SIGINT, &m_previousInt, nullptr);
-        sigaction(SIGTERM, &m_previousTerm, nullptr);
-#else
-        std::signal(SIGINT, m_previousInt);
-        std::signal(SIGTERM, m_previousTerm);
-#endif
-    }
-    StopSignals(const StopSignals&) = delete;
-    StopSignals& operator=(const StopSignals&) = delete;
-
-private:
-#ifdef RAYLAB_POSIX_CLASS_RUN
-    struct sigaction m_previousInt {}, m_previousTerm {};
-#else
-    void (*m_previousInt)(int) = nullptr;
-    void (*m_previousTerm)(int) = nullptr;
-#endif
-};
 
 // ---- one run per OUT ----------------------------------------------------------------------------
 
@@ -485,14 +455,43 @@ int endOfRun(const fs::path& out, const std::vector<std::string>& unfinished) {
     }
     std::printf("%s\n", tr("grade.class_outputs", {{"grades", printablePath(out / "grades.csv")},
                                                     {"students", printablePath(studentsFolder(out))}}).c_str());
-    if (unfinished.empty()) return 0;
-    std::string names;
-    for (const std::string& n : unfinished) names += (names.empty() ? "" : ", ") + n;
-    std::printf("%s\n", tr("grade.class_unfinished", {{"names", names}}).c_str());
-    return 1;
+    if (!unfinished.empty()) {
+        std::string names;
+        for (const std::string& n : unfinished) names += (names.empty() ? "" : ", ") + n;
+        std::printf("%s\n", tr("grade.class_unfinished", {{"names", names}}).c_str());
+    }
+    std::fflush(stdout); // said, even if a signal kills the process on its way out
+    return unfinished.empty() ? 0 : 1;
 }
 
 } // namespace
+
+StopSignals::StopSignals() {
+    if (g_stopSignalsDepth++ > 0) return; // already caught: a signal received so far is kept
+    g_stopSignal = 0;
+#ifdef RAYLAB_POSIX_CLASS_RUN
+    struct sigaction action {};
+    action.sa_handler = onStopSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = 0; // no SA_RESTART: a wait for the lock returns at once
+    sigaction(SIGINT, &action, &g_previousInt);
+    sigaction(SIGTERM, &action, &g_previousTerm);
+#else
+    g_previousInt = std::signal(SIGINT, onStopSignal);
+    g_previousTerm = std::signal(SIGTERM, onStopSignal);
+#endif
+}
+
+StopSignals::~StopSignals() {
+    if (--g_stopSignalsDepth > 0) return;
+#ifdef RAYLAB_POSIX_CLASS_RUN
+    sigaction(SIGINT, &g_previousInt, nullptr);
+    sigaction(SIGTERM, &g_previousTerm, nullptr);
+#else
+    std::signal(SIGINT, g_previousInt);
+    std::signal(SIGTERM, g_previousTerm);
+#endif
+}
 
 int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
     const fs::path& out = options.out;

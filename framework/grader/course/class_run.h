@@ -58,6 +58,17 @@ struct ClassRunOptions {
     std::function<void()> afterLastStudent;
 };
 
+// While one lives, SIGINT and SIGTERM only ask the class run to stop (runClass holds one). A command
+// with work after the run (removing its scratch folder) holds one across it too: a signal that comes
+// once the run has ended then changes nothing, instead of killing the process halfway out.
+class StopSignals {
+public:
+    StopSignals();
+    ~StopSignals();
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+};
+
 // Grades every student of the class not graded yet. Returns the exit status: 0; 1 when OUT is held
 // by another run, a student's grading did not finish, or a disk was full (the run stopped there);
 // 128 + the signal when interrupted (130 for SIGINT, 143 for SIGTERM).
