@@ -10,6 +10,7 @@
 #include "grader/sandbox/process.h"
 #include "grader/sandbox/sandbox.h"
 #include "support/files.h"
+#include "support/run_program.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -51,10 +52,11 @@ TEST_CASE("a read-only tree under a folder of mode 0700 grades the same under bu
     if (sandboxes.empty()) return;
 
     const fs::path home = freshFolder("raylab-closed-tree") / "home", tree = home / "tree", build = home / "build";
-    fs::create_directories(tree);
+    fs::create_directories(home);
     fs::permissions(home, fs::perms::owner_all); // closed to every other user
-    for (const char* part : {"framework", "labs", "scenes", "cmake", "CMakeLists.txt", "CMakePresets.json"})
-        fs::copy(sourceDir() / part, tree / part, fs::copy_options::recursive);
+    const ProgramRun distributed =
+        runProgram({(binDir() / "raylab").string(), "distribute", tree.string(), "--lang", "en"}, home / "distribute.txt");
+    REQUIRE_MESSAGE(distributed.status == 0, distributed.output);
     const bool readOnly = mountReadOnly(tree);
     if (readOnly) CHECK_FALSE(std::ofstream(tree / "written").is_open()); // root too
     else MESSAGE("no mount namespace here: the tree is not read-only in this test");
@@ -64,13 +66,10 @@ TEST_CASE("a read-only tree under a folder of mode 0700 grades the same under bu
     for (const std::string& sandbox : sandboxes) {
         CAPTURE(sandbox);
         setenv("RAYLAB_SANDBOX", sandbox.c_str(), 1); // the grader's and the build guard's (CMake starts it)
-        // The solutions, lab 4 broken: a submission of its own for each sandbox, so each compiles it.
+        // The course's solutions, one lab that another uses broken: a submission of its own for each
+        // sandbox, so each compiles it.
         const fs::path submission = home / "submissions" / sandbox;
-        fs::create_directories(submission.parent_path());
-        fs::copy(sourceDir() / "solutions", submission, fs::copy_options::recursive);
-        const fs::path lookAt = submission / "lab4_lookat_camera" / "look_at.cpp";
-        const std::string code = readFile(lookAt);
-        std::ofstream(lookAt) << "this line is not C++\n" << code;
+        copyCourseSolutions(submission);
 
         std::vector<fs::path> references;
         for (const LabDescription& lab : loadLabCatalog(tree / "labs").labs)
@@ -78,21 +77,25 @@ TEST_CASE("a read-only tree under a folder of mode 0700 grades the same under bu
         GradeSetup setup = loadGradeSetup(references, tree / "labs", {}, home / ("scratch-" + sandbox));
         setup.limits.wallSeconds = 60.;
         setup.threads = 2;
+        const LabDescription lab = usedLab(setup.labs);
+        const fs::path source = submission / lab.id / lab.files().front();
+        const std::string code = readFile(source);
+        std::ofstream(source) << "this line is not C++\n" << code;
         CHECK(sandboxKind(setup.limits).rfind(sandbox == "fallback" ? "unprivileged user" : "bubblewrap", 0) == 0);
         const raylab::grader::SubmissionBuild b =
             raylab::grader::buildSubmission(tools, tree, submission, build, setup.labs);
-        CHECK_MESSAGE(b.brokenLabs == labAndItsUsers(setup.labs, 4), b.compilerMessage);
-        CHECK_MESSAGE(b.compilerMessage.find(lookAt.string() + ":1") != std::string::npos, b.compilerMessage);
+        const std::vector<int> broken = labAndItsUsers(setup.labs, lab.number);
+        CHECK_MESSAGE(b.brokenLabs == broken, b.compilerMessage);
+        CHECK_MESSAGE(b.compilerMessage.find(source.string() + ":1") != std::string::npos, b.compilerMessage);
         CHECK(b.compilerMessage.find("raylab-compile") == std::string::npos);
         const GradeResult result = gradeCode(setup, b.agents, b.isolated, b.brokenLabs, b.compilerMessage);
         fs::remove_all(setup.scratch);
-        // Lab 4 and the labs that use it score 0 (no solutions/ to stand in), every other lab all its points.
+        // The broken lab and the labs that use it score 0 (no solutions/ to stand in), every other lab all its points.
         REQUIRE(!result.labs.empty());
-        const std::vector<int> broken = labAndItsUsers(setup.labs, 4);
-        for (const LabOutcome& lab : result.labs) {
-            CAPTURE(lab.lab);
-            const bool isBroken = std::find(broken.begin(), broken.end(), lab.lab) != broken.end();
-            CHECK_MESSAGE(lab.points == (isBroken ? 0. : lab.maxPoints), failures(result));
+        for (const LabOutcome& outcome : result.labs) {
+            CAPTURE(outcome.lab);
+            const bool isBroken = std::find(broken.begin(), broken.end(), outcome.lab) != broken.end();
+            CHECK_MESSAGE(outcome.points == (isBroken ? 0. : outcome.maxPoints), failures(result));
         }
     }
     unsetenv("RAYLAB_SANDBOX");
