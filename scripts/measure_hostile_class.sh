@@ -4,7 +4,7 @@
 # three more that break the rules:
 #   a staller  tests/grading/bad_submissions/stops_itself.patch  lab 1 raises SIGSTOP (held until lab 1's time budget)
 #   a forker   tests/grading/bad_submissions/forks.patch         lab 3 forks 100,000 sleeping children a call
-#   a flood    tests/grading/bad_builds/huge_error.patch         lab 5's compile error is about 1 GB
+#   a flood    tests/grading/bad_builds/huge_error.patch         lab 2's compile error is about 1 GB
 # and prints each run's wall and CPU time, the disk its results take (out/ without the class's build
 # folder) and its largest file, the hostile students' rows of grades.csv, and whether every other
 # student got full points.

@@ -284,23 +284,24 @@ TEST_CASE("run_autograder: a catalogued mistake in a wrapping folder loses its p
 }
 
 TEST_CASE("run_autograder: a lab that does not compile costs that lab alone") {
-    // Each lab is linked with the others' reference (compiled by setup.sh): lab 5, which uses lab 4,
-    // keeps its points.
-    const fs::path submission = kRoot / "hand-in-lab4-broken";
+    // Each lab is linked with the others' reference (compiled by setup.sh): the labs that use the
+    // broken one keep their points.
+    const fs::path submission = kRoot / "hand-in-lab-broken";
     fs::remove_all(submission);
-    fs::create_directories(submission);
-    fs::copy(sourceDir() / "solutions", submission / "labs", fs::copy_options::recursive);
-    const fs::path lookAt = submission / "labs" / "lab4_lookat_camera" / "look_at.cpp";
-    std::ofstream(lookAt, std::ios::app) << "\nint missing_semicolon = 1\n";
+    copyCourseSolutions(submission / "labs");
+    const LabDescription broken = usedLab(courseSetup().labs);
+    const std::string file = broken.files().front();
+    std::ofstream(submission / "labs" / broken.id / file, std::ios::app) << "\nint missing_semicolon = 1\n";
     const nlohmann::json j = gradeOnGradescope(submission);
-    const double lab4 = labPoints(*courseSetup().labs.lab(4));
-    REQUIRE(lab4 > 0.);
-    CHECK(j["score"].get<double>() == doctest::Approx(catalogTotal() - lab4));
+    const double lost = labPoints(broken);
+    REQUIRE(lost > 0.);
+    CHECK(j["score"].get<double>() == doctest::Approx(catalogTotal() - lost));
+    const std::string prefix = "lab" + std::to_string(broken.number) + ": ";
     for (const nlohmann::json& t : j["tests"]) {
-        const bool ofLab4 = t["name"].get<std::string>().rfind("lab4: ", 0) == 0;
-        CHECK_MESSAGE(t["status"] == (ofLab4 ? "failed" : "passed"), t.dump());
+        const bool ofBroken = t["name"].get<std::string>().rfind(prefix, 0) == 0;
+        CHECK_MESSAGE(t["status"] == (ofBroken ? "failed" : "passed"), t.dump());
     }
-    CHECK(j["output"].get<std::string>().find("look_at.cpp") != std::string::npos); // the compiler's message
+    CHECK(j["output"].get<std::string>().find(file) != std::string::npos); // the compiler's message
 }
 
 TEST_CASE("run_autograder: a submission that crashes is graded, the crash costing only its items") {
@@ -323,7 +324,7 @@ TEST_CASE("run_autograder: where bubblewrap cannot start, a submission that forg
     fs::permissions(failing / "bwrap", fs::perms(0755));
     const fs::path submission = kRoot / "hand-in-forges-results";
     fs::remove_all(submission);
-    patchedSolutions("bad", "forges_results", submission); // lab 1 forges and kills; labs 2 to 5 are right
+    patchedSolutions("bad", "forges_results", submission); // lab 1 forges and kills; the other labs are right
     const nlohmann::json j = gradeOnGradescope(submission, "PATH=\"" + failing.string() + ":$PATH\"");
     CHECK(j["output"].get<std::string>().find("forged") == std::string::npos);
     double lab1 = 0.;

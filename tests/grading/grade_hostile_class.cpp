@@ -1,6 +1,6 @@
 // A class with three hostile students (issue 34's "done when", small): two honest students, a staller
 // (bad_submissions/stops_itself: lab 1 stops itself with SIGSTOP), a forker (bad_submissions/forks: lab 3
-// forks 100,000 children a call) and a flood (bad_builds/huge_error: lab 5's compile error is about
+// forks 100,000 children a call) and a flood (bad_builds/huge_error: lab 2's compile error is about
 // 1 GB), graded end to end by `raylab grade-class` at its default limits, under bubblewrap and under
 // the fallback. The honest students get every point; each hostile one loses its lab (the forker, the
 // points of the function that forks), with the limit it hit named; the results stay small.
@@ -106,7 +106,7 @@ TEST_CASE("a staller, a forker and a 1 GB compile error in a class: each loses i
         };
         lost("staller", "lab1", "lab 1 used its", true);
         if (cgroup) lost("forker", "lab3", "too many processes (more than 256", false);
-        lost("flood", "lab5", "the compiler's output was cut to 128 KB", true);
+        lost("flood", "lab2", "the compiler's output was cut to 128 KB", true);
         // A gigabyte of compiler output costs its build log 128 KB; every student's results together a few MB.
         CHECK(fs::file_size(out / "students" / "flood" / "build.log") < (std::uintmax_t(256) << 10));
         CHECK(folderBytes(out) < (std::uintmax_t(16) << 20));
