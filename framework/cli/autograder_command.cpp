@@ -23,7 +23,6 @@
 #include <filesystem>
 #include <memory>
 #include <random>
-#include <sstream>
 #include <stdexcept>
 #include <stdlib.h> // mkdtemp
 #include <string>
@@ -167,14 +166,6 @@ private:
     fs::path m_folder;
 };
 
-std::string readWholeFile(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) throw std::runtime_error(tr("autograder.no_results"));
-    return text.str();
-}
-
 // raylab grade's results count only when it exited on its own: 0 (all passed), 1 (not all), 3
 // (nothing written yet). Killed, crashed or stopped with an error: whatever is on disk is no result.
 std::string whyNoResult(const ProcessResult& ran) {
@@ -210,7 +201,9 @@ int runGradescope(const Context& context) {
                                               handOver.folder().string()});
         why = whyNoResult(ran);
         if (why.empty() && fs::exists(handed, error) && addGradescopeFields(handed, elapsed())) {
-            writeFileAtomically(results / "results.json", readWholeFile(handed));
+            const std::optional<std::string> graded = readWholeFile(handed);
+            if (!graded) throw std::runtime_error(tr("autograder.no_results"));
+            writeFileAtomically(results / "results.json", *graded);
             return 0;
         }
         if (why.empty()) why = tr("autograder.no_results");

@@ -12,15 +12,14 @@
 #include "grader/lab_catalog.h"
 #include "src/atomic_file.h"
 #include "src/messages.h"
+#include "src/text.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -135,11 +134,9 @@ std::string withoutLinksToAbsentLabs(const std::string& text, const fs::path& re
 }
 
 std::string fileText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) throw std::runtime_error("cannot read " + file.string());
-    return text.str();
+    std::optional<std::string> text = readWholeFile(file);
+    if (!text) throw std::runtime_error("cannot read " + printablePath(file));
+    return std::move(*text);
 }
 
 } // namespace

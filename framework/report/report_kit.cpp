@@ -6,6 +6,7 @@
 #include "grader/sandbox/install_command.h"
 #include "src/atomic_file.h"
 #include "src/figure.h"
+#include "src/text.h"
 #include "raylab/image_io.h"
 #include "report/difference_map.h"
 #include "report/pdf.h"
@@ -13,10 +14,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <random>
-#include <sstream>
 #include <stdexcept>
 
 namespace raylab::report {
@@ -25,13 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace raylab::grader;
-
-std::string readFile(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 // The kit's picture folders, without an earlier run's pictures.
 void prepareFolders(const fs::path& out) {
@@ -155,7 +147,9 @@ void writePages(const KitContent& content, const fs::path& out) {
     const fs::path markdown = out / "report.md";
     PreviousText previous;
     if (fs::exists(markdown)) {
-        const std::string old = readFile(markdown);
+        const std::optional<std::string> read = readWholeFile(markdown);
+        if (!read) throw std::runtime_error("cannot read " + printablePath(markdown));
+        const std::string& old = *read;
         writeFileAtomically(out / "report.previous.md", old); // one undo, whatever happens next
         previous = readPreviousText(old, content.words);
     }

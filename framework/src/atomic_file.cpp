@@ -151,15 +151,22 @@ void writeFileAtomically(const fs::path& file, std::string_view bytes) {
     writeReplacing(target, bytes);
 }
 
-void copyFileAtomically(const fs::path& from, const fs::path& to) {
-    std::error_code error;
-    if (!fs::is_regular_file(from, error)) throw std::runtime_error("cannot read " + from.string() + ": not a regular file");
-    std::ifstream in(from, std::ios::binary);
+std::optional<std::string> readWholeFile(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return std::nullopt;
     std::string bytes;
     char buffer[1 << 16];
     while (in.read(buffer, sizeof buffer) || in.gcount() > 0) bytes.append(buffer, std::size_t(in.gcount()));
-    if (in.bad() || !in.eof()) throw std::runtime_error("cannot read " + from.string());
-    writeFileAtomically(to, bytes);
+    if (in.bad() || !in.eof()) return std::nullopt;
+    return bytes;
+}
+
+void copyFileAtomically(const fs::path& from, const fs::path& to) {
+    std::error_code error;
+    if (!fs::is_regular_file(from, error)) throw std::runtime_error("cannot read " + from.string() + ": not a regular file");
+    const std::optional<std::string> bytes = readWholeFile(from);
+    if (!bytes) throw std::runtime_error("cannot read " + from.string());
+    writeFileAtomically(to, *bytes);
 }
 
 } // namespace raylab

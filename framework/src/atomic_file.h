@@ -1,9 +1,10 @@
 #pragma once
-// Files written whole or not at all: every output of raylab (PNG, CSV, JSON, HTML, Markdown, SVG,
-// TOML) goes through here, so a full disk, a read-only folder or an interrupted run never leaves a
-// truncated file behind or passes unnoticed.
+// Files read whole, and written whole or not at all: every output of raylab (PNG, CSV, JSON, HTML,
+// Markdown, SVG, TOML) goes through here, so a full disk, a read-only folder or an interrupted run
+// never leaves a truncated file behind or passes unnoticed.
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -28,6 +29,10 @@ private:
 // file (a device such as /dev/null, a pipe) is written in place, every step checked. Throws
 // WriteError, after removing the temporary file, when any step fails; the old file is then intact.
 void writeFileAtomically(const std::filesystem::path& file, std::string_view bytes);
+
+// The bytes of `file`; nothing when it cannot be opened or read to its end (each caller says why
+// in its own words).
+std::optional<std::string> readWholeFile(const std::filesystem::path& file);
 
 // Copies a regular file to `to` as writeFileAtomically writes it; throws std::runtime_error naming
 // `from` when it cannot be read, WriteError when `to` cannot be written.

@@ -3,15 +3,14 @@
 #include "watch/http_rules.h"
 #include "watch/templates.h"
 
+#include "src/atomic_file.h"
 #include "src/messages.h"
 
 #include <httplib.h>
 
 #include <atomic>
-#include <fstream>
 #include <mutex>
 #include <thread>
-#include <sstream>
 #include <stdexcept>
 
 namespace raylab::watch {
@@ -29,13 +28,6 @@ std::string contentType(const fs::path& file) {
     if (extension == ".json") return "application/json";
     if (extension == ".html") return "text/html; charset=utf-8";
     return "application/octet-stream";
-}
-
-std::string fileBytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return bytes.str();
 }
 
 int integerParam(const httplib::Request& request, const char* name) {
@@ -80,8 +72,9 @@ struct WatchServer::Impl {
                                  "application/json");
         } else if (asked.starts_with("files/")) {
             const auto file = servedFile(root, std::string_view(asked).substr(6));
-            if (!file) return false;
-            response.set_content(fileBytes(*file), contentType(*file).c_str());
+            const std::optional<std::string> bytes = file ? readWholeFile(*file) : std::nullopt;
+            if (!bytes) return false;
+            response.set_content(*bytes, contentType(*file).c_str());
         } else {
             return false;
         }

@@ -56,6 +56,21 @@ TEST_CASE("a file is written whole, replaces the old one, and leaves nothing els
     fs::remove_all(folder);
 }
 
+TEST_CASE("a file is read whole, every byte (NUL, CR, beyond one buffer); a missing file or a folder reads nothing") {
+    const fs::path folder = freshFolder("raylab-read-whole");
+    std::string bytes(200000, 'a'); // more than the 64 KB read at a time
+    bytes[7] = '\0';
+    bytes[100] = '\r';
+    bytes.back() = '\n';
+    raylab::writeFileAtomically(folder / "data.bin", bytes);
+    CHECK(raylab::readWholeFile(folder / "data.bin") == bytes);
+    raylab::writeFileAtomically(folder / "empty.txt", "");
+    CHECK(raylab::readWholeFile(folder / "empty.txt") == std::string());
+    CHECK_FALSE(raylab::readWholeFile(folder / "absent.txt"));
+    CHECK_FALSE(raylab::readWholeFile(folder));
+    fs::remove_all(folder);
+}
+
 TEST_CASE("a folder in the way, or a file where a folder should be, is an error naming the file") {
     const fs::path folder = freshFolder("raylab-atomic-notdir");
     std::ofstream(folder / "a_regular_file") << "old";

@@ -5,7 +5,6 @@
 #include "src/text.h"
 
 #include <algorithm>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <set>
@@ -55,13 +54,11 @@ std::vector<std::string> gradeItems(const std::vector<int>& labs, const ClassMem
 } // namespace
 
 std::vector<RosterEntry> readRoster(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read the roster " + printablePath(file));
-    std::stringstream text;
-    text << in.rdbuf();
+    const std::optional<std::string> text = readWholeFile(file);
+    if (!text) throw std::runtime_error("cannot read the roster " + printablePath(file));
     std::vector<std::vector<std::string>> rows;
     try {
-        rows = csvRows(text.str());
+        rows = csvRows(*text);
     } catch (const std::exception& e) {
         throw std::runtime_error(printablePath(file) + ": " + e.what());
     }

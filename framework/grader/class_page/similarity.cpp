@@ -2,6 +2,7 @@
 
 #include "grader/sandbox/install_command.h"
 #include "grader/sandbox/process.h"
+#include "src/atomic_file.h"
 #include "src/messages.h"
 #include "src/text.h"
 
@@ -28,19 +29,11 @@ std::string trimmed(const std::string& line) {
     return line.substr(first, line.find_last_not_of(" \t\r") - first + 1);
 }
 
-std::optional<std::string> readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // The stub's lines of a lab, trimmed: what every student was given, never evidence of anything.
 std::set<std::string> stubLinesOf(const LabDescription& lab, const fs::path& labsFolder) {
     std::set<std::string> lines;
     for (const std::string& name : lab.files())
-        if (const std::optional<std::string> text = readText(labsFolder / lab.id / name)) {
+        if (const std::optional<std::string> text = readWholeFile(labsFolder / lab.id / name)) {
             std::istringstream in(*text);
             for (std::string line; std::getline(in, line);)
                 if (!trimmed(line).empty()) lines.insert(trimmed(line));
@@ -59,7 +52,7 @@ struct JoinedCode {
 std::optional<JoinedCode> joinedCode(const LabDescription& lab, const fs::path& copy, const std::set<std::string>& stubLines) {
     JoinedCode code;
     for (const std::string& name : lab.files()) {
-        const std::optional<std::string> text = readText(copy / lab.id / name);
+        const std::optional<std::string> text = readWholeFile(copy / lab.id / name);
         if (!text) continue;
         code.lines.push_back("// " + name);
         code.given.push_back(true);
@@ -104,7 +97,7 @@ std::optional<std::string> runSim(const fs::path& sim, const fs::path& folder, c
     options.timeLimit = kSimSeconds;
     options.output = folder / "sim-errors.txt";
     const ProcessResult result = runProcess(argv, options);
-    std::optional<std::string> text = readText(output);
+    std::optional<std::string> text = readWholeFile(output);
     if (!result.succeeded() || !text) {
         why = tr("class_page.sim_failed", {{"program", sim.string()}, {"folder", printablePath(folder)}});
         return std::nullopt;

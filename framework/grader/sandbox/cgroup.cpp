@@ -1,6 +1,7 @@
 #include "grader/sandbox/cgroup.h"
 
 #include "grader/sandbox/sandbox_internal.h"
+#include "src/atomic_file.h"
 
 #ifdef RAYLAB_POSIX_SANDBOX
 
@@ -32,12 +33,8 @@ bool writeFile(const fs::path& file, const std::string& text) {
     return bool(out);
 }
 
-std::string readFile(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+// A cgroup file's text; empty where it is absent (no cgroup, no such controller).
+std::string readFile(const fs::path& file) { return readWholeFile(file).value_or(""); }
 
 // The number after `key` in a flat keyed file ("max 3\n", "oom_kill 1\n"); 0 when absent.
 long long keyed(const fs::path& file, const std::string& key) {
