@@ -20,6 +20,7 @@
 #include <memory>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -53,18 +54,43 @@ const std::set<std::string> kWithheld{"solutions", "tests/variants", "tests/grad
                                       // the toy lab's answer, a lab's solution in the toy-lab test's tree
                                       "tests/labs/toy/solution"};
 
-// The labs' folders that are not handed out: every lab's in solutions/ (kWithheld), its mistakes'
-// patches (against the solutions, they show their lines), and in labs/ and the grading folders those
-// of the labs the course's list (course.toml) leaves out: absent, not a zero. A given lab keeps, of its
-// grading folder, what registers it by name (its shadings and figure steps, cmake/RaylabLabs.cmake).
+// The pictures under docs/ that the handouts of `lab` (labs/<lab>/*.md) show, Markdown's ![...](...)
+// or HTML's <img src="...">, as paths from the top of the tree.
+void handoutPictures(const fs::path& source, const std::string& lab, std::set<std::string>& pictures) {
+    static const std::regex picture(R"re(!\[[^\]]*\]\(([^)\s#]+)|<img[^>]*\ssrc="([^"]+)")re");
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(source / lab, error)) {
+        if (entry.path().extension() != ".md") continue;
+        const std::optional<std::string> text = readWholeFile(entry.path());
+        if (!text) continue;
+        for (std::sregex_iterator it(text->begin(), text->end(), picture), end; it != end; ++it) {
+            const std::string target = (*it)[1].matched ? (*it)[1].str() : (*it)[2].str();
+            const std::string path = (fs::path(lab) / target).lexically_normal().generic_string();
+            if (path.rfind("docs/", 0) == 0) pictures.insert(path);
+        }
+    }
+}
+
+// The labs' folders and files that are not handed out: every lab's in solutions/ (kWithheld), its
+// mistakes' patches (against the solutions, they show their lines), and of the labs the course's list
+// (course.toml) leaves out, their folders in labs/ and the grading folders and their pictures in
+// docs/figures/: absent, not a zero. A given lab keeps, of its grading folder, what registers it by
+// name (its shadings and figure steps, cmake/RaylabLabs.cmake).
 std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::LabCatalog& course) {
-    std::set<std::string> folders;
+    std::set<std::string> folders, absentPictures, coursePictures;
     for (const auto& entry : fs::directory_iterator(source / "labs")) {
         const std::string id = entry.path().filename().string();
         const std::string grading = "framework/grader/labs/" + id;
         folders.insert(grading + "/mistakes");
-        if (!entry.is_directory() || course.labOfId(id) != nullptr) continue;
+        if (!entry.is_directory()) continue;
+        if (course.labOfId(id) != nullptr) {
+            handoutPictures(source, "labs/" + id, coursePictures);
+            continue;
+        }
         folders.insert("labs/" + id);
+        for (const grader::LabFigure& figure : grader::loadLabDescription(entry.path() / "lab.toml").figures)
+            absentPictures.insert("docs/figures/" + figure.id + ".png");
+        handoutPictures(source, "labs/" + id, absentPictures);
         const bool given = std::any_of(course.given.begin(), course.given.end(),
                                        [&](const grader::LabDescription& l) { return l.id == id; });
         if (!given) {
@@ -77,6 +103,8 @@ std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::L
             if (name != "shadings.cpp" && name != "figure_steps.cpp") folders.insert(grading + "/" + name);
         }
     }
+    for (const std::string& picture : absentPictures) // a picture a handed-out lab shows too stays
+        if (!coursePictures.count(picture)) folders.insert(picture);
     return folders;
 }
 
@@ -110,27 +138,38 @@ void addGivenLabs(const fs::path& source, const grader::LabCatalog& course, std:
     }
 }
 
-// A Markdown file of the students' tree, its links into the folder of a lab the course leaves out (a
-// handout's "next: lab 4" in a course of labs 1 to 3) made their text alone, and its pictures from
-// there dropped: they would lead nowhere. Links elsewhere, web addresses and anchors are kept.
+// A Markdown file of the students' tree without what leads to a lab the course leaves out: a table
+// row that links there is dropped (docs/figures/README.md's row of an absent figure), another link
+// is made its text alone (a handout's "next: lab 4" in a course of labs 1 to 3) and a picture from
+// there is dropped. Links elsewhere, web addresses and anchors are kept.
 std::string withoutLinksToAbsentLabs(const std::string& text, const fs::path& relative, const std::set<std::string>& labFolders) {
     static const std::regex link(R"((!?)\[([^\]]*)\]\(([^)\s#]*)([^)\s]*)\))");
     const auto intoAbsentLab = [&](const std::string& target) {
         if (target.empty() || target.find("://") != std::string::npos) return false;
         const std::string path = (relative.parent_path() / target).lexically_normal().generic_string();
         return std::any_of(labFolders.begin(), labFolders.end(), [&](const std::string& folder) {
-            return folder.rfind("labs/", 0) == 0 && (path == folder || path.rfind(folder + "/", 0) == 0);
+            return (folder.rfind("labs/", 0) == 0 || folder.rfind("docs/", 0) == 0) &&
+                   (path == folder || path.rfind(folder + "/", 0) == 0);
         });
     };
+    const auto linksIntoAbsentLab = [&](const std::string& line) {
+        for (std::sregex_iterator it(line.begin(), line.end(), link), end; it != end; ++it)
+            if (intoAbsentLab((*it)[3].str())) return true;
+        return false;
+    };
+    std::string kept; // the table rows first, line by line; then the links, which may span lines
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind('|', 0) != 0 || !linksIntoAbsentLab(line)) kept += line + (lines.eof() ? "" : "\n");
     std::string out;
-    auto last = text.cbegin();
-    for (std::sregex_iterator it(text.begin(), text.end(), link), end; it != end; ++it) {
+    auto last = kept.cbegin();
+    for (std::sregex_iterator it(kept.begin(), kept.end(), link), end; it != end; ++it) {
         const std::smatch& m = *it;
         out.append(last, m[0].first);
         out += !intoAbsentLab(m[3].str()) ? m[0].str() : m[1].length() ? std::string() : m[2].str();
         last = m[0].second;
     }
-    return out.append(last, text.cend());
+    return out.append(last, kept.cend());
 }
 
 std::string fileText(const fs::path& file) {
