@@ -10,7 +10,9 @@
 #include "commands.h"
 
 #include "grader/lab_catalog.h"
+#include "raylab/image_io.h"
 #include "src/atomic_file.h"
+#include "src/contact_sheet.h"
 #include "src/messages.h"
 #include "src/text.h"
 
@@ -172,6 +174,27 @@ std::string withoutLinksToAbsentLabs(const std::string& text, const fs::path& re
     return out.append(last, kept.cend());
 }
 
+// docs/figures/contact_sheet.png shows every figure of the repository's labs: where the course leaves a
+// lab out, the students' sheet is made anew from the course's figures in docs/figures/, in lab order.
+void writeCourseContactSheet(const fs::path& source, const fs::path& out, const grader::LabCatalog& course,
+                             const std::set<std::string>& withheld) {
+    const fs::path sheet = "docs/figures/contact_sheet.png";
+    std::error_code error;
+    const bool figureWithheld = std::any_of(withheld.begin(), withheld.end(), [](const std::string& path) {
+        return path.rfind("docs/figures/", 0) == 0 && fs::path(path).extension() == ".png";
+    });
+    if (!figureWithheld || !fs::is_regular_file(out / sheet, error)) return;
+    std::vector<ContactSheetItem> items;
+    for (const grader::LabDescription& lab : course.labs)
+        for (const grader::LabFigure& figure : lab.figures) {
+            const fs::path picture = source / "docs/figures" / (figure.id + ".png");
+            if (fs::is_regular_file(picture, error)) items.push_back({figure.id, readImage(picture), ""});
+            else items.push_back({figure.id, std::nullopt, "absent"});
+        }
+    if (items.empty()) fs::remove(out / sheet);
+    else writePng(out / sheet, makeContactSheet(items));
+}
+
 std::string fileText(const fs::path& file) {
     std::optional<std::string> text = readWholeFile(file);
     if (!text) throw std::runtime_error("cannot read " + printablePath(file));
@@ -211,6 +234,7 @@ int writeStudentTree(const fs::path& source, const fs::path& out) {
         else
             fs::copy_file(file.source, out / file.relative, fs::copy_options::overwrite_existing); // its permissions too
     }
+    writeCourseContactSheet(sourceAbs, out, courseCatalog(sourceAbs), labFolders);
     writeStudentsReadme(out, courseCatalog(sourceAbs));
     const bool hadReadme = std::any_of(files.begin(), files.end(), [](const TreeFile& f) { return f.relative == "README.md"; });
     return int(files.size()) + (hadReadme ? 1 : 2); // LISEZMOI.md, and README.md where there was none

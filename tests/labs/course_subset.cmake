@@ -262,6 +262,12 @@ function(step_distribute)
       endif()
     endforeach()
   endforeach()
+  # Its contact sheet is the course's, made anew: not the source's, which shows every lab's figures.
+  file(SHA256 ${tree}/docs/figures/contact_sheet.png every_lab)
+  file(SHA256 ${students}/docs/figures/contact_sheet.png course_sheet)
+  if(course_sheet STREQUAL every_lab)
+    message(FATAL_ERROR "course subset: the students' contact sheet is the source's, with the labs left out")
+  endif()
   # The handouts link to no lab left out ("next: lab 4" is text there): a link into its folder would
   # lead nowhere. The source's handouts do link forward, so this holds only if distribute unlinks them.
   file(GLOB_RECURSE handouts ${students}/labs/*.md)
