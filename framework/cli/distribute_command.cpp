@@ -203,39 +203,51 @@ std::string fileText(const fs::path& file) {
 
 } // namespace
 
-std::vector<TreeFile> studentTreeFiles(const fs::path& source) {
-    const fs::path sourceAbs = fs::canonical(source);
-    const grader::LabCatalog course = courseCatalog(sourceAbs);
-    const std::set<std::string> labFolders = labFoldersWithheld(sourceAbs, course);
+namespace {
+
+// What a students' tree is made from: the source (absolute), its course, and what it withholds.
+struct TreeSource {
+    fs::path source;
+    grader::LabCatalog course;
+    std::set<std::string> withheld;
+
+    explicit TreeSource(const fs::path& tree)
+        : source(fs::canonical(tree)), course(courseCatalog(source)), withheld(labFoldersWithheld(source, course)) {}
+};
+
+std::vector<TreeFile> treeFiles(const TreeSource& tree) {
     std::vector<TreeFile> files;
-    for (auto it = fs::recursive_directory_iterator(sourceAbs); it != fs::recursive_directory_iterator(); ++it) {
-        const fs::path relative = it->path().lexically_relative(sourceAbs); // fs::relative would follow links
-        if (withheld(relative, labFolders) || it->is_symlink()) {
+    for (auto it = fs::recursive_directory_iterator(tree.source); it != fs::recursive_directory_iterator(); ++it) {
+        const fs::path relative = it->path().lexically_relative(tree.source); // fs::relative would follow links
+        if (withheld(relative, tree.withheld) || it->is_symlink()) {
             if (it->is_directory()) it.disable_recursion_pending();
             continue;
         }
         if (it->is_regular_file()) files.push_back({relative, it->path()});
     }
-    addGivenLabs(sourceAbs, course, files);
+    addGivenLabs(tree.source, tree.course, files);
     return files;
 }
+
+} // namespace
+
+std::vector<TreeFile> studentTreeFiles(const fs::path& source) { return treeFiles(TreeSource(source)); }
 
 int writeStudentTree(const fs::path& source, const fs::path& out) {
     std::error_code error;
     if (fs::exists(out, error) && !fs::is_empty(out, error))
         throw std::invalid_argument(out.string() + " exists and is not empty; choose a new folder");
-    const std::vector<TreeFile> files = studentTreeFiles(source); // before `out` exists: never inside it
-    const fs::path sourceAbs = fs::canonical(source);
-    const std::set<std::string> labFolders = labFoldersWithheld(sourceAbs, courseCatalog(sourceAbs));
+    const TreeSource tree(source);
+    const std::vector<TreeFile> files = treeFiles(tree); // before `out` exists: never inside it
     for (const TreeFile& file : files) {
         fs::create_directories((out / file.relative).parent_path());
         if (file.relative.extension() == ".md")
-            writeFileAtomically(out / file.relative, withoutLinksToAbsentLabs(fileText(file.source), file.relative, labFolders));
+            writeFileAtomically(out / file.relative, withoutLinksToAbsentLabs(fileText(file.source), file.relative, tree.withheld));
         else
             fs::copy_file(file.source, out / file.relative, fs::copy_options::overwrite_existing); // its permissions too
     }
-    writeCourseContactSheet(sourceAbs, out, courseCatalog(sourceAbs), labFolders);
-    writeStudentsReadme(out, courseCatalog(sourceAbs));
+    writeCourseContactSheet(tree.source, out, tree.course, tree.withheld);
+    writeStudentsReadme(out, tree.course);
     const bool hadReadme = std::any_of(files.begin(), files.end(), [](const TreeFile& f) { return f.relative == "README.md"; });
     return int(files.size()) + (hadReadme ? 1 : 2); // LISEZMOI.md, and README.md where there was none
 }
