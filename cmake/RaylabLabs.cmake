@@ -78,6 +78,24 @@ function(raylab_framework_calls out file)
   set(${out} ${value} PARENT_SCOPE)
 endfunction()
 
+# raylab_lab_uses(OUT FILE): the labs that lab.toml FILE says its lab uses (`uses = [2, 3]`, a key of
+# its heading, before its first [table]); the grader's catalogue reads the same key strictly. A lab's
+# own agent in a tree without the reference links these labs' code from labs/ (framework/grader/).
+function(raylab_lab_uses out file)
+  file(STRINGS ${file} lines REGEX "^[ \t]*(uses[ \t]*=|\\[)")
+  set(uses "")
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^[ \t]*\\[")
+      break()
+    endif()
+    if(NOT line MATCHES "^[ \t]*uses[ \t]*=[ \t]*\\[([0-9, \t]*)\\][ \t]*(#.*)?$")
+      message(FATAL_ERROR "${file}: expected one line `uses = [2, 3]` (the labs whose code this lab's figures run): ${line}")
+    endif()
+    string(REGEX MATCHALL "[0-9]+" uses "${CMAKE_MATCH_1}")
+  endforeach()
+  set(${out} ${uses} PARENT_SCOPE)
+endfunction()
+
 # A lab's number and id come from its folder's name, lab<N>_<name> (N without a leading zero), not
 # from lab.toml, which CMake cannot parse; the grader's catalogue (framework/grader/lab_catalog.cpp)
 # checks that lab.toml's `number` and `id` say the same.
@@ -96,6 +114,11 @@ foreach(file IN LISTS raylab_lab_files)
   list(APPEND RAYLAB_LAB_NUMBERS ${number})
   set(RAYLAB_LAB_FOLDER_${number} ${folder})
   raylab_framework_calls(RAYLAB_LAB_FRAMEWORK_CALLS_${number} ${file})
+  if(NOT DEFINED RAYLAB_LAB_USES_${number}) # the grader gives them when it configures a submission's build
+    raylab_lab_uses(RAYLAB_LAB_DECLARED_USES_${number} ${file})
+  else()
+    set(RAYLAB_LAB_DECLARED_USES_${number} ${RAYLAB_LAB_USES_${number}})
+  endif()
 endforeach()
 set(raylab_found_labs ${RAYLAB_LAB_NUMBERS})
 if(NOT RAYLAB_LAB_NUMBERS)
@@ -179,14 +202,24 @@ function(raylab_lab_shadings target n)
   endif()
 endfunction()
 
-# raylab_lab_target(OUT N ORIGIN): the object library of lab N from ORIGIN: labs, solutions, or given (a
-# given lab's reference: solutions/ where the tree has it, else framework/given/).
+# raylab_lab_target(OUT N ORIGIN): the object library of lab N from ORIGIN: labs, solutions, given (a
+# given lab's reference: solutions/ where the tree has it, else framework/given/), or stubs (the lab as
+# handed out, whatever the student wrote since: framework/stubs/, which `raylab distribute` writes for
+# a students' tree, else labs/, which are the stubs in the instructors' tree).
 function(raylab_lab_target out n origin)
   set(folder ${RAYLAB_LAB_FOLDER_${n}})
   if(NOT folder)
     message(FATAL_ERROR "there is no lab ${n} (the labs are ${RAYLAB_LAB_NUMBERS})")
   endif()
   set(dir ${origin}/${folder})
+  if(origin STREQUAL "stubs")
+    if(NOT IS_DIRECTORY ${CMAKE_SOURCE_DIR}/framework/stubs/${folder})
+      raylab_lab_target(target ${n} labs)
+      set(${out} ${target} PARENT_SCOPE)
+      return()
+    endif()
+    set(dir framework/stubs/${folder})
+  endif()
   if(origin STREQUAL "given")
     file(GLOB reference ${CMAKE_SOURCE_DIR}/solutions/${folder}/*)
     if(reference)
@@ -218,7 +251,7 @@ function(raylab_lab_target out n origin)
     target_link_libraries(${target} PUBLIC raylab_framework PRIVATE raylab_warnings)
     target_include_directories(${target} PUBLIC ${header_folder}) # the lab's own header
     raylab_lab_shadings(${target} ${n})
-    if(origin STREQUAL "labs")
+    if(origin MATCHES "^(labs|stubs)$")
       # A stub's one-line body ignores its parameters on purpose. On the sources, not the target: their
       # options come after raylab_warnings' -Wextra, which would turn the warning on again (Clang).
       set_property(SOURCE ${sources} APPEND PROPERTY COMPILE_OPTIONS $<$<NOT:$<CXX_COMPILER_ID:MSVC>>:-Wno-unused-parameter>)
@@ -236,7 +269,8 @@ function(raylab_link_given_labs target)
   endforeach()
 endfunction()
 
-# raylab_link_labs(TARGET REFERENCE_LABS): links every lab, those listed from solutions/, and the given labs.
+# raylab_link_labs(TARGET REFERENCE_LABS): links every lab, those listed from solutions/, those of
+# RAYLAB_STUB_LABS from their stubs, and the given labs.
 # Sets RAYLAB_LAB_ORIGINS on the target's compile definitions ("lab1=labs lab2=solutions lab5=given ...").
 function(raylab_link_labs target)
   set(reference_labs ${ARGN})
@@ -247,6 +281,8 @@ function(raylab_link_labs target)
         message(FATAL_ERROR "${target}: lab ${n} is asked from solutions/, but this tree has no solutions/")
       endif()
       set(origin solutions)
+    elseif(n IN_LIST RAYLAB_STUB_LABS)
+      set(origin stubs)
     else()
       set(origin labs)
     endif()

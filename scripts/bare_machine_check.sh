@@ -5,7 +5,8 @@
 # bubblewrap cannot start in a chroot, so the grader's fallback sandbox runs, as in Docker):
 #   root-figures   as root, no sudo: README.md's figures command, in /root/raylab
 #   root-tests     then README.md's test command there (the whole suite: each test passed or skipped)
-#   root-students  as root: `raylab distribute /root/tp1`, then the command tp1/README.md writes
+#   root-students  as root: `raylab distribute /root/tp1`, then the two commands tp1/README.md writes
+#                  (the student's pictures, then the framework's suite)
 #   user-figures   in a fresh root, as a user with sudo (NOPASSWD): README.md's figures command
 # Each must pass on its first run. The commands are read from the READMEs, so the check follows them.
 #
@@ -139,10 +140,13 @@ for release in "${releases[@]}"; do
   # The students' tree compiles through ccache too: what its README's command configures finds the
   # launcher in the environment (setup.sh has installed ccache by then).
   in_root "$release-root-distribute" root "raylab/build/bin/raylab distribute /root/tp1" || { failed=1; continue; }
-  students_command=$(readme_command "$root/root/tp1/README.md" test)
-  [ -n "$students_command" ] || { echo "bare_machine_check: tp1/README.md has no \`--preset test\` command" >&2; failed=1; continue; }
-  in_root "$release-root-students" root "cd tp1 && export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR=/root/tp1 \
-    CCACHE_NOHASHDIR=1 && $students_command" || failed=1
+  # Its README's first command (the student's pictures), then its second (the framework's suite).
+  for preset in figures test; do
+    students_command=$(readme_command "$root/root/tp1/README.md" $preset)
+    [ -n "$students_command" ] || { echo "bare_machine_check: tp1/README.md has no \`--preset $preset\` command" >&2; failed=1; break; }
+    in_root "$release-root-students-$preset" root "cd tp1 && export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR=/root/tp1 \
+      CCACHE_NOHASHDIR=1 && $students_command" || { failed=1; break; }
+  done
 done
 for release in "${user_releases[@]}"; do
   # A fresh root, with sudo and a user allowed it (as a lab machine's); the release's compiler cache,

@@ -2,6 +2,7 @@
 // The raylab subcommands. Each file adds its own subcommands to the program's CLI11 app; their
 // callbacks set the exit status in the shared context.
 
+#include "grader/judge/grade.h"
 #include "src/scene_file.h"
 
 #include <CLI/CLI.hpp>
@@ -72,12 +73,29 @@ enum class BuildInputs { StudentLabs, GradingBuild };
 // The first file of `inputs` (files, and folders walked through) written after `since`, but for
 // handouts and pictures (.md, .png) and hidden files; empty when none is.
 std::filesystem::path newerSourceFile(const std::vector<std::filesystem::path>& inputs, std::filesystem::file_time_type since);
-// When one of `inputs` is newer than the oldest of `programs` (or than their last rebuild from here),
-// or a program is not built yet, builds `targets` first. The first program, when `runningProgram`,
-// is this one: it is then run again in this process's place with the same arguments (the call
-// returns only when nothing changed or the build failed).
-FreshBuild ensureFreshBuild(const Context& context, const std::vector<std::filesystem::path>& programs,
-                            const std::vector<std::string>& targets, BuildInputs inputs, bool runningProgram);
+// When one of `inputs` is newer than this program (or than the last rebuild of `targets` from here), or
+// `missing` (a program it needs is not built yet), builds `targets` first: the first is this program,
+// which is then run again in this process's place with the same arguments (the call returns only when
+// nothing changed or this program could not be built). The build folder is locked meanwhile
+// (grader::lockBuildFolder). In a students' tree, a lab that does not compile is built from its stub
+// into this program, so that it still runs (lastBuildProblem says why; grader::labsNotBuilt which).
+FreshBuild ensureFreshBuild(const Context& context, const std::vector<std::string>& targets, BuildInputs inputs,
+                            bool missing = false);
+// The grading programs brought up to date (ensureFreshBuild): lab `lab`'s alone, or all of them (0).
+void ensureFreshAgents(const Context& context, int lab);
+// This build's grading programs of `labs`: those whose code the last build compiled, and the labs
+// whose code it could not compile (with the compiler's words), which have none: what their program
+// would run is older than what the student wrote (grader::labsNotBuilt).
+struct BuiltAgents {
+    std::vector<grader::AgentPlan> agents;
+    bool isolated = false; // each lab's agent has the other labs from the reference
+    std::vector<int> unbuilt;
+    std::string message;
+};
+BuiltAgents agentsOfThisBuild(const grader::LabCatalog& course, const std::vector<int>& labs);
+// What the compiler said of the code the last build from here could not build ("" when it all built).
+std::string lastBuildProblem();
+std::filesystem::path lastBuildProblemFile();
 
 // The most render threads raylab starts (--threads): more only exhausts the system.
 inline constexpr int kMaxThreads = 1024;
@@ -133,9 +151,11 @@ struct TreeFile {
 std::vector<TreeFile> studentTreeFiles(const std::filesystem::path& source);
 int writeStudentTree(const std::filesystem::path& source, const std::filesystem::path& out);
 
-// The one command that builds the students' tree and runs its tests, as its README and `raylab
-// distribute` say it.
-inline constexpr const char* kStudentsBuildCommand = "scripts/setup.sh && cmake --workflow --preset test";
+// The students' tree's first command, as its README and `raylab distribute` say it: it installs what
+// is missing, builds raylab alone and draws the student's pictures (the grading programs come with
+// the first `raylab grade`). The second runs the framework's own test suite, which no student needs.
+inline constexpr const char* kStudentsBuildCommand = "scripts/setup.sh && cmake --workflow --preset figures";
+inline constexpr const char* kStudentsTestCommand = "scripts/setup.sh --tests && cmake --workflow --preset test";
 // The students' README.md (English) and LISEZMOI.md (French) in `tree`: what it holds, how to build
 // it, the commands of a lab (students_readme.cpp).
 void writeStudentsReadme(const std::filesystem::path& tree, const grader::LabCatalog& labs);

@@ -140,6 +140,18 @@ void addGivenLabs(const fs::path& source, const grader::LabCatalog& course, std:
     }
 }
 
+// framework/stubs/<lab>/ of each lab of the course: its code as handed out (labs/<lab>/*.cpp and its
+// headers), which CMake builds into the command-line tool in place of a lab whose code does not compile,
+// and into each lab's own grading program in place of the labs it does not use (cmake/RaylabLabs.cmake).
+void addStubs(const fs::path& source, const grader::LabCatalog& course, std::vector<TreeFile>& files) {
+    std::error_code error;
+    if (fs::is_directory(source / "framework/stubs", error)) return; // a students' tree: copied as it is
+    for (const grader::LabDescription& lab : course.labs)
+        for (const auto& entry : fs::directory_iterator(source / "labs" / lab.id, error))
+            if (entry.is_regular_file() && (entry.path().extension() == ".cpp" || entry.path().extension() == ".h"))
+                files.push_back({fs::path("framework/stubs") / lab.id / entry.path().filename(), entry.path()});
+}
+
 // A Markdown file of the students' tree without what leads to a lab the course leaves out: a table
 // row that links there is dropped (docs/figures/README.md's row of an absent figure), another link
 // is made its text alone (a handout's "next: lab 4" in a course of labs 1 to 3) and a picture from
@@ -226,6 +238,7 @@ std::vector<TreeFile> treeFiles(const TreeSource& tree) {
         if (it->is_regular_file()) files.push_back({relative, it->path()});
     }
     addGivenLabs(tree.source, tree.course, files);
+    addStubs(tree.source, tree.course, files);
     return files;
 }
 

@@ -128,8 +128,12 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
         unbuilt = b.brokenLabs;
         message = b.compilerMessage;
     } else {
-        agents = findAgents(build::kBinaryDir, setup.labs.numbers(), isolated);
-        if (agents.empty())
+        BuiltAgents built = agentsOfThisBuild(setup.labs, o.lab != 0 ? std::vector<int>{o.lab} : setup.labs.numbers());
+        agents = std::move(built.agents);
+        isolated = built.isolated;
+        unbuilt = std::move(built.unbuilt);
+        message = std::move(built.message);
+        if (agents.empty() && unbuilt.empty())
             throw std::runtime_error(tr("grade.no_agent", {{"folder", build::kBinaryDir}}));
     }
     if (o.lab != 0) { // one lab: its own agent, or the cumulative agent asked for that lab only
@@ -145,15 +149,10 @@ GradeResult gradeCodeOnce(const GradeOptions& o, const GradeSetup& setup, const 
 
 int gradeLabs(GradeOptions o, const Context& context) {
     // labs/ as it is now: this program (the checks, their messages) and the agents rebuilt when a file
-    // they are built from changed (a lab, its grading folder, the framework), or labs/ graded as a
-    // submission when they no longer build (each lab that compiles is graded).
-    const std::string self = thisProgram();
-    if (o.labs.empty() && o.agents.empty() &&
-        ensureFreshBuild(context, {programInBuild(self), programInBuild("raylab-agent")}, {self, "raylab-agents"},
-                         BuildInputs::GradingBuild, true) == FreshBuild::BuildFailed) {
-        std::printf("%s\n", tr("cli.build_failed_grading_copy").c_str());
-        o.labs = labsFolder().string();
-    }
+    // they are built from changed (a lab, its grading folder, the framework); with --lab N, that lab's
+    // agent alone. A lab that does not compile costs that lab (and those that use it): the others'
+    // agents are built all the same, and graded.
+    if (o.labs.empty() && o.agents.empty()) ensureFreshAgents(context, o.lab);
     const RunScratch scratch("grade"); // removed at its end, even on an exception
     noteRemovedScratch(scratch, "grade");
     const GradeSetup setup = setupFor(o, context, scratch.path());

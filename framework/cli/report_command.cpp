@@ -2,6 +2,7 @@
 #include "build_info.h"
 #include "commands.h"
 
+#include "grader/lab_catalog.h"
 #include "src/messages.h"
 #include "src/terminal.h"
 #include "report/report_kit.h"
@@ -22,11 +23,18 @@ void addReportCommand(CLI::App& app, Context& context) {
     context.addRenderOptions(command);
     command->callback([&context, request, out] {
         if (context.ranInOtherImpl()) return;
+        request->referenceBuild = std::string(build::kImpl) == "reference";
+        if (!request->referenceBuild) { // the report grades as `raylab grade` does, the code as it is now
+            ensureFreshAgents(context, 0);
+            const grader::LabCatalog course = courseLabs();
+            BuiltAgents built = agentsOfThisBuild(course, course.numbers());
+            request->unbuilt = std::move(built.unbuilt);
+            request->buildMessage = std::move(built.message);
+        }
         request->out = *out;
         request->lang = languageCode(language()); // the global --lang, or the environment's (raylab/messages.h)
         request->threads = context.threads;
         request->progress = stderrIsInteractive();
-        request->referenceBuild = std::string(build::kImpl) == "reference";
         request->scenes = context.scenes;
         request->references = referenceFolders("");
         request->labs = labsFolder();

@@ -42,7 +42,7 @@ std::string readme(const fs::path& tree, const grader::LabCatalog& labs, Languag
                     {"files", files}}) +
                 "\n";
     }
-    return text + "\n" + say("distribute.readme_build", {{"build", kStudentsBuildCommand}}) +
+    return text + "\n" + say("distribute.readme_build", {{"build", kStudentsBuildCommand}, {"tests", kStudentsTestCommand}}) +
            say("distribute.readme_use") + say("distribute.readme_windows") + tr(language, "distribute.readme_holds") + "\n";
 }
 

@@ -67,8 +67,12 @@ GradeResult gradeCodeOfThisBuild(const ReportRequest& request, const GradeSetup&
     std::vector<AgentPlan> agents;
     if (request.referenceBuild) agents.push_back({request.programs / "raylab-agent-reference", 0});
     else agents = findAgents(request.programs, setup.labs.numbers(), isolated);
-    if (agents.empty()) throw std::runtime_error(tr("grade.no_agent", {{"folder", request.programs.string()}}));
-    GradeResult result = gradeCode(setup, agents, isolated);
+    std::erase_if(agents, [&](const AgentPlan& a) {
+        return std::find(request.unbuilt.begin(), request.unbuilt.end(), a.lab) != request.unbuilt.end();
+    });
+    if (agents.empty() && request.unbuilt.empty())
+        throw std::runtime_error(tr("grade.no_agent", {{"folder", request.programs.string()}}));
+    GradeResult result = gradeCode(setup, agents, isolated, request.unbuilt, request.buildMessage);
     result.title = words.text("grade_title");
     return result;
 }

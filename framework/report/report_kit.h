@@ -21,6 +21,8 @@ struct ReportRequest {
     std::vector<std::filesystem::path> references; // the grader's reference folders
     std::filesystem::path labs;       // the labs' descriptions
     std::filesystem::path programs;   // where the agents are (beside raylab)
+    std::vector<int> unbuilt;         // the labs whose code did not compile (their agents left out)
+    std::string buildMessage;         // what the compiler said of them
 };
 
 // Writes the kit; returns the exit status (0, or 1 when --pdf was asked and no PDF could be made).

@@ -9,7 +9,7 @@
 # It runs in steps, one ctest test each (tests/CMakeLists.txt), each in the tree the steps before it
 # left (ctest prints nothing while a test runs; with a warm compiler cache each step lasts seconds): distribute,
 # build-framework, build-figures, grade-builds, build-suite, suite-none, instructors-commands,
-# suite-lab1, suite-all. It builds the tree on its own, from its own files: nothing of the
+# suite-lab1, broken-lab, two-at-once, suite-all. It builds the tree on its own, from its own files: nothing of the
 # repository's build is linked (a compiler cache may only skip compiling the same command twice).
 # Every program runs from an argument vector (execute_process), never through a shell.
 cmake_minimum_required(VERSION 3.22) # if(IN_LIST)
@@ -137,6 +137,61 @@ function(step_suite_lab1)
   write_lab(lab1_first_image)
   suite_passes("1")
 endfunction()
+# 6. A lab that does not compile costs that lab alone: its first file loses a `;`. The course's first
+# lab (written) keeps its points, `raylab lab` still draws its pictures from the student's code (the tool
+# is built with the broken lab's stub), and the broken lab's pictures say why they are not drawn. Then
+# the file mended, every lab's code is built again.
+function(step_broken_lab)
+  tree_labs(folders numbers)
+  list(GET folders 0 written)
+  list(GET numbers 0 written_number)
+  list(GET folders -1 broken)
+  list(GET numbers -1 broken_number)
+  if(broken STREQUAL written)
+    message(STATUS "students' tree: one lab only, no other lab to keep")
+    return()
+  endif()
+  file(GLOB files ${tree}/labs/${broken}/*.cpp)
+  list(GET files 0 file)
+  file(READ ${file} before)
+  file(APPEND ${file} "\nint raylab_missing_semicolon = 1\n")
+  run(output 1 ${build}/bin/raylab --lang en grade)
+  expect("${output}" "lab ${written_number}: " "the written lab graded")
+  string(REGEX MATCH "lab ${written_number}: ([0-9.]+) / ([0-9.]+)" points "${output}")
+  if(NOT CMAKE_MATCH_1 STREQUAL CMAKE_MATCH_2)
+    message(FATAL_ERROR "students' tree: lab ${written_number} lost points to lab ${broken_number}'s compile error:\n${output}")
+  endif()
+  expect("${output}" "the code does not build" "lab ${broken_number} graded as not compiling")
+  expect("${output}" "raylab_missing_semicolon" "the compiler's error in the grade")
+  run(output 0 ${build}/bin/raylab --lang en lab ${written_number})
+  expect("${output}" "-> out/student/lab${written_number}_" "lab ${written_number}'s pictures drawn")
+  run(output 1 ${build}/bin/raylab --lang en lab ${broken_number})
+  expect("${output}" "lab ${broken_number} does not compile" "lab ${broken_number}'s pictures")
+  file(WRITE ${file} "${before}")
+  run(output 0 ${build}/bin/raylab --lang en lab ${written_number})
+  expect("${output}" "every lab compiles again" "the mended lab")
+endfunction()
+
+# 7. One build at a time: two `raylab grade` started together after an edit (a pipeline: both run at
+# once) both grade, and the programs are whole after them.
+function(step_two_at_once)
+  tree_labs(folders numbers)
+  list(GET folders 0 written)
+  list(GET numbers 0 written_number)
+  file(GLOB files ${tree}/labs/${written}/*.cpp)
+  list(GET files 0 file)
+  file(APPEND ${file} "\nnamespace { [[maybe_unused]] const int raylab_two_at_once = 2; }\n")
+  execute_process(COMMAND ${build}/bin/raylab --lang en grade --lab ${written_number}
+                  COMMAND ${build}/bin/raylab --lang en grade --lab ${written_number}
+                  WORKING_DIRECTORY ${tree} RESULTS_VARIABLE statuses OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message(STATUS "students' tree: two `raylab grade` at once -> ${statuses}")
+  if(NOT statuses STREQUAL "0;0")
+    message(FATAL_ERROR "students' tree: two `raylab grade` at once exited with ${statuses}:\n${out}${err}")
+  endif()
+  run(output 0 ${build}/bin/raylab --lang en grade --lab ${written_number})
+  expect("${output}" "lab ${written_number}: " "a grade after both")
+endfunction()
+
 function(step_suite_all)
   tree_labs(folders numbers)
   foreach(folder IN LISTS folders)

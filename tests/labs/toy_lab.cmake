@@ -182,16 +182,15 @@ function(step_written_after_build)
   expect("${output}" "lab ${N}: 7 / 7 points" "the grade follows the code written after the build")
 endfunction()
 
-# A lab that does not compile: `raylab grade` grades labs/ as a submission, in a build folder of its
-# own (out/grade-build, from nothing: the longest step).
+# A lab that does not compile costs that lab: `raylab grade` builds the other labs' grading programs
+# all the same, and grades them; the lab's report quotes the compiler.
 function(step_does_not_compile)
   file(READ ${TOY}/solution/toy_colour.cpp written)
   file(WRITE ${tree}/labs/${id}/toy_colour.cpp "${written}\nint unfinished(\n")
-  # Its build folder beside build/ (not out/grade-build, the default): the same relative paths, so
-  # that the compiler cache (CMAKE_CXX_COMPILER_LAUNCHER in the environment) finds the tree's objects.
-  run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-broken --build-dir ${tree}/grade-build)
-  expect("${output}" "grading labs/ as a submission" "a build that fails is graded as a submission")
+  run(output nonzero ${bin}/raylab grade --report ${WORK}/grade-broken)
   expect("${output}" "lab ${N}: 0 / 7 points" "lab ${N} that does not compile gets no point")
+  expect("${output}" "the code does not build" "lab ${N} graded as not compiling")
+  expect("${output}" "unfinished" "the compiler's words in the grade")
   expect("${output}" "lab 1: 0 / 10 points" "the other labs are graded (lab 1 is a stub)")
   file(WRITE ${tree}/labs/${id}/toy_colour.cpp "${written}")
 endfunction()

@@ -2,6 +2,7 @@
 
 #include "src/atomic_file.h"
 #include "src/csv.h"
+#include "src/file_lock.h"
 #include "src/messages.h"
 #include "src/text.h"
 
@@ -17,6 +18,7 @@
 #include <sstream>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
@@ -25,7 +27,6 @@
 #if defined(__unix__) || defined(__APPLE__)
 #define RAYLAB_POSIX_CLASS_RUN 1
 #include <fcntl.h>
-#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #endif
@@ -178,73 +179,37 @@ extern "C" void onStopSignal(int signal) { g_stopSignal = signal; }
 
 // ---- one run per OUT ----------------------------------------------------------------------------
 
-#ifdef RAYLAB_POSIX_CLASS_RUN
-
-// flock: the kernel releases it when its holder dies, so a lock left by a dead run is simply taken.
+// A lock left by a dead run is simply taken (src/file_lock.h).
 class RunLock {
 public:
     // Takes OUT's lock, or says in `problem` who holds it.
     bool acquire(const fs::path& out, bool wait, std::string& problem) {
         const fs::path file = out / kLockFile;
-        m_fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-        if (m_fd < 0) {
-            problem = "cannot open the lock " + printablePath(file) + ": " + std::strerror(errno);
-            return false;
-        }
-        if (::flock(m_fd, LOCK_EX | LOCK_NB) != 0) {
-            if (errno != EWOULDBLOCK) {
-                problem = "cannot take the lock " + printablePath(file) + ": " + std::strerror(errno);
-                return false;
-            }
-            const std::string holder =
-                tr("grade.class_lock_held", {{"pid", holderPid()}, {"out", printablePath(out)}, {"lock", printablePath(file)}});
+        try {
+            m_lock = std::make_unique<FileLock>(file);
+            if (m_lock->tryAcquire()) return true;
+            const std::string pid = m_lock->holder();
+            const std::string holder = tr("grade.class_lock_held", {{"pid", pid.empty() ? "its pid not written yet" : "pid " + pid},
+                                                                    {"out", printablePath(out)},
+                                                                    {"lock", printablePath(file)}});
             if (!wait) {
                 problem = tr("grade.class_lock_no_wait", {{"holder", holder}});
                 return false;
             }
             std::printf("%s\n", tr("grade.class_waiting", {{"holder", holder}}).c_str());
             std::fflush(stdout);
-            while (::flock(m_fd, LOCK_EX) != 0)
-                if (errno != EINTR || g_stopSignal != 0) {
-                    problem = "stopped while waiting for the lock " + printablePath(file);
-                    return false;
-                }
+            if (m_lock->acquire([] { return g_stopSignal != 0; })) return true;
+            problem = "stopped while waiting for the lock " + printablePath(file);
+        } catch (const std::exception& e) {
+            problem = e.what();
         }
-        const std::string pid = std::to_string(getpid()) + "\n";
-        if (::ftruncate(m_fd, 0) != 0 || ::pwrite(m_fd, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
-            problem = "cannot write the lock " + printablePath(file) + ": " + std::strerror(errno);
-            return false;
-        }
-        return true;
+        return false;
     }
-    int descriptor() const { return m_fd; }
-    RunLock() = default;
-    ~RunLock() {
-        if (m_fd >= 0) ::close(m_fd); // releases the lock; the file stays, harmless, for the next run
-    }
-    RunLock(const RunLock&) = delete;
-    RunLock& operator=(const RunLock&) = delete;
+    int descriptor() const { return m_lock ? m_lock->descriptor() : -1; }
 
 private:
-    std::string holderPid() const {
-        char text[32] = {};
-        const ssize_t n = ::pread(m_fd, text, sizeof text - 1, 0);
-        std::string pid(text, n > 0 ? std::size_t(n) : 0);
-        pid.erase(pid.find_last_not_of("\n ") + 1);
-        return pid.empty() ? "its pid not written yet" : "pid " + pid;
-    }
-    int m_fd = -1;
+    std::unique_ptr<FileLock> m_lock;
 };
-
-#else
-
-class RunLock { // elsewhere: no lock (one instructor's machine)
-public:
-    bool acquire(const fs::path&, bool, std::string&) { return true; }
-    int descriptor() const { return -1; }
-};
-
-#endif
 
 // ---- grading one student ------------------------------------------------------------------------
 

@@ -7,6 +7,7 @@
 #include "src/text.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <ctime>
 #include <functional>
 #include <iomanip>
@@ -212,6 +213,8 @@ void requireRoom(const KeptOutput& output, const fs::path& buildDir) {
 
 // The agent of one lab, built with the other labs from the reference (framework/grader/CMakeLists.txt).
 fs::path labAgent(const fs::path& binDir, int lab) { return agentFile(binDir, "raylab-agent-lab" + std::to_string(lab)); }
+// The agent of one lab where there is no reference: the labs it uses from the same code, the others' stubs.
+fs::path ownLabAgent(const fs::path& binDir, int lab) { return agentFile(binDir, "raylab-agent-own-lab" + std::to_string(lab)); }
 
 // CMake's configuration of a grading build: the agents from `submission` (empty: labs/), and the
 // labs each lab uses (RAYLAB_LAB_USES_<n>, read by framework/grader/CMakeLists.txt: CMake does not
@@ -252,11 +255,82 @@ std::vector<AgentPlan> findAgents(const fs::path& binDir, const std::vector<int>
     std::vector<AgentPlan> agents;
     std::error_code error;
     isolated = !labs.empty() && fs::exists(labAgent(binDir, labs.front()), error);
-    if (isolated)
-        for (int lab : labs) agents.push_back({labAgent(binDir, lab), lab});
-    else if (fs::exists(agentFile(binDir, "raylab-agent"), error))
+    const bool own = !isolated && std::any_of(labs.begin(), labs.end(), [&](int lab) { return fs::exists(ownLabAgent(binDir, lab), error); });
+    if (isolated || own) {
+        for (int lab : labs) {
+            const fs::path program = isolated ? labAgent(binDir, lab) : ownLabAgent(binDir, lab);
+            if (fs::exists(program, error)) agents.push_back({program, lab});
+        }
+    } else if (fs::exists(agentFile(binDir, "raylab-agent"), error)) {
         agents.push_back({agentFile(binDir, "raylab-agent"), 0});
+    }
     return agents;
+}
+
+std::string labAgentTarget(const fs::path& binDir, int lab) {
+    std::error_code error;
+    if (fs::exists(labAgent(binDir, lab), error)) return labAgent(binDir, lab).stem().string();
+    if (fs::exists(ownLabAgent(binDir, lab), error)) return ownLabAgent(binDir, lab).stem().string();
+    return "raylab-agents"; // none built yet: which kind this build makes is CMake's to say
+}
+
+namespace {
+
+// Lab `lab` and every lab it uses, directly or through another.
+std::vector<int> labClosure(const LabCatalog& course, int lab) {
+    std::vector<int> closure{lab};
+    for (std::size_t k = 0; k < closure.size(); ++k)
+        if (const LabDescription* d = course.lab(closure[k]))
+            for (int used : d->uses)
+                if (std::find(closure.begin(), closure.end(), used) == closure.end()) closure.push_back(used);
+    return closure;
+}
+
+// Whether a file of the lab folder `folder` that the compiler reads (.cpp, .h) was written after `since`.
+bool compiledFileNewer(const fs::path& folder, fs::file_time_type since) {
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(folder, error)) {
+        const std::string extension = entry.path().extension().string();
+        if (extension != ".cpp" && extension != ".h" && extension != ".hpp") continue;
+        if (entry.path().filename().string().starts_with(".")) continue; // an editor's
+        std::error_code unreadable;
+        if (entry.is_regular_file(unreadable) && entry.last_write_time(unreadable) > since && !unreadable) return true;
+    }
+    return false;
+}
+
+} // namespace
+
+std::vector<int> labsNotBuilt(const fs::path& binDir, const fs::path& labsDir, const LabCatalog& course,
+                              const std::vector<int>& labs) {
+    bool isolated = false;
+    findAgents(binDir, course.numbers(), isolated);
+    std::vector<int> notBuilt;
+    for (int lab : labs) {
+        const fs::path program = isolated ? labAgent(binDir, lab) : ownLabAgent(binDir, lab);
+        std::error_code error;
+        const auto built = fs::last_write_time(program, error);
+        // Graded alone, an agent holds its own lab's files only; else those of the labs it uses too.
+        const std::vector<int> sources = isolated ? std::vector<int>{lab} : labClosure(course, lab);
+        const bool stale = error || std::any_of(sources.begin(), sources.end(), [&](int source) {
+                               const LabDescription* d = course.lab(source);
+                               return d != nullptr && compiledFileNewer(labsDir / d->id, built);
+                           });
+        if (stale) notBuilt.push_back(lab);
+    }
+    return notBuilt;
+}
+
+std::unique_ptr<FileLock> lockBuildFolder(const fs::path& buildDir) {
+    std::error_code error;
+    fs::create_directories(buildDir, error);
+    auto lock = std::make_unique<FileLock>(buildDir / kBuildLockFile);
+    if (lock->tryAcquire()) return lock;
+    const std::string pid = lock->holder();
+    std::printf("%s\n", tr("build.waiting", {{"folder", printablePath(buildDir)}, {"pid", pid.empty() ? "?" : pid}}).c_str());
+    std::fflush(stdout);
+    lock->acquire();
+    return lock;
 }
 
 bool buildGradingKit(const Toolchain& tools, const fs::path& sourceDir, const fs::path& buildDir, const fs::path& log) {
@@ -279,7 +353,11 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
     // A build folder serves a whole class: the last student's agents must not pass for these.
     std::error_code error;
     fs::remove(agentFile(bin, "raylab-agent"), error);
-    for (int lab : numbers) fs::remove(labAgent(bin, lab), error);
+    for (int lab : numbers) {
+        fs::remove(labAgent(bin, lab), error);
+        fs::remove(ownLabAgent(bin, lab), error);
+    }
+    const std::unique_ptr<FileLock> building = lockBuildFolder(buildDir);
     const std::vector<std::string> configure =
         configureCommand(tools, sourceDir, buildDir, cmakeSafe(labs, buildDir).generic_string(), course);
     std::vector<std::string> build = buildCommand(tools, buildDir, "raylab-submission-agents");
@@ -318,7 +396,7 @@ SubmissionBuild buildSubmission(const Toolchain& tools, const fs::path& sourceDi
         // Some lab did not compile: each lab's own agent (the labs it uses from the submission, the
         // others' stubs) grades it when its labs compiled.
         for (int lab : numbers) {
-            const fs::path program = labAgent(bin, lab);
+            const fs::path program = ownLabAgent(bin, lab);
             if (usableProgram(program, b)) b.agents.push_back({program, lab});
             else b.brokenLabs.push_back(lab);
         }

@@ -6,8 +6,10 @@
 
 #include "grader/judge/grade.h"
 #include "grader/sandbox/process.h"
+#include "src/file_lock.h"
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,9 +36,23 @@ struct SubmissionBuild {
 // once; without any, the output's end.
 std::string buildProblem(const KeptOutput& output);
 
-// The agents of a build folder's bin/: one for each of `labs` when solutions/ was there, else one
-// for all.
+// The agents of a build folder's bin/: one for each of `labs` (those built), with the other labs
+// from the reference (`isolated`) when solutions/ was there, else with the labs it uses from the same
+// code and the others' stubs; one for all where neither kind is built.
 std::vector<AgentPlan> findAgents(const std::filesystem::path& binDir, const std::vector<int>& labs, bool& isolated);
+// The CMake target of lab `lab`'s own agent in that build, whichever kind it makes ("raylab-agents",
+// all of them, before the first build).
+std::string labAgentTarget(const std::filesystem::path& binDir, int lab);
+// Those of `labs` whose own agent in `binDir` is missing or older than a file the compiler reads in
+// the folder (in `labsDir`) of its lab or, without the reference, of a lab it uses: the last build
+// of that code failed, and what runs there is not what the student wrote.
+std::vector<int> labsNotBuilt(const std::filesystem::path& binDir, const std::filesystem::path& labsDir,
+                              const LabCatalog& course, const std::vector<int>& labs);
+
+// A build folder's lock (kBuildLockFile in it): raylab builds there one at a time; a second build
+// waits, saying for whom, then finds up to date what the first built.
+inline constexpr const char* kBuildLockFile = "raylab-build.lock";
+std::unique_ptr<FileLock> lockBuildFolder(const std::filesystem::path& buildDir);
 
 // Configures (once) and builds the agents of the submission's copy `labs` in `buildDir`, keeping
 // going past errors so that the labs that compile are still graded: a lab that does not compile costs

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <set>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -124,8 +125,18 @@ std::optional<std::string> readLabFile(const fs::path& file, std::string& why) {
 class Walk {
 public:
     explicit Walk(const LabCatalog& catalog) {
-        for (const LabDescription& lab : catalog.labs)
+        for (const LabDescription& lab : catalog.labs) {
             for (const std::string& name : lab.files()) m_owner[name] = &lab;
+            // What the course ships beside the lab files (a lab's own header): no student's file to leave
+            // out, and none to say so of. A students' tree keeps its lab folders as handed out in
+            // framework/stubs/ (raylab distribute); elsewhere labs/ is as handed out.
+            const fs::path labs = lab.file.parent_path();
+            std::error_code error;
+            fs::path handedOut = labs.parent_path().parent_path() / "framework" / "stubs" / lab.id;
+            if (!fs::is_directory(handedOut, error)) handedOut = labs;
+            for (fs::directory_iterator it(handedOut, error), end; !error && it != end; it.increment(error))
+                m_shipped.insert(it->path().filename().string());
+        }
     }
 
     void folder(const fs::path& root, const fs::path& relative, int depth) {
@@ -160,7 +171,7 @@ private:
         if (type != fs::file_type::regular) return ignore(relative, tr("submission.not_regular"));
         const auto owner = m_owner.find(relative.filename().string());
         if (owner == m_owner.end()) {
-            if (sourceLike(relative)) ignore(relative, tr("submission.not_lab_file"));
+            if (sourceLike(relative) && !m_shipped.count(relative.filename().string())) ignore(relative, tr("submission.not_lab_file"));
             return;
         }
         const std::string parent = relative.has_parent_path() ? relative.parent_path().filename().string() : "";
@@ -168,6 +179,7 @@ private:
     }
 
     std::map<std::string, const LabDescription*> m_owner;
+    std::set<std::string> m_shipped;
     int m_entries = 0;
 };
 

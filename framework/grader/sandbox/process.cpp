@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
@@ -51,8 +52,12 @@ struct RunningProcess {
 // more than 3 x `each` bytes held, whatever the stream's length.
 class OutputKeeper {
 public:
-    explicit OutputKeeper(std::size_t each) : m_each(each) {}
+    OutputKeeper(std::size_t each, bool echo) : m_each(each), m_echo(echo) {}
     void add(std::string_view bytes) {
+        if (m_echo) {
+            std::fwrite(bytes.data(), 1, bytes.size(), stdout);
+            std::fflush(stdout);
+        }
         const std::size_t toHead = std::min(bytes.size(), m_each - m_kept.head.size());
         m_kept.head.append(bytes.substr(0, toHead));
         bytes.remove_prefix(toHead);
@@ -72,6 +77,7 @@ private:
         m_kept.cut += dropped;
     }
     std::size_t m_each;
+    bool m_echo;
     KeptOutput m_kept;
 };
 
@@ -206,7 +212,7 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOpti
         result.error = "cannot run " + argv[0] + " (error " + std::to_string(startError) + ")";
         return result;
     }
-    OutputKeeper keeper(options.keepOutput);
+    OutputKeeper keeper(options.keepOutput, options.echo);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(options.timeLimit);
     // Without a pipe to read, one wait; with one, short waits between its reads.
     const DWORD step = kept != INVALID_HANDLE_VALUE ? 50
@@ -319,7 +325,7 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const ProcessOpti
     }
     const RunningProcess running(pid);
     int status = 0;
-    OutputKeeper keeper(options.keepOutput);
+    OutputKeeper keeper(options.keepOutput, options.echo);
     const int lost = waitFor(pid, options.timeLimit, status, stream[0], keeper);
     if (stream[0] >= 0) close(stream[0]); // a process the program left writing gets SIGPIPE
     result.kept = keeper.kept();

@@ -27,6 +27,8 @@ struct ProcessOptions {
     // submission's to make as long as it likes (a template error of a gigabyte), so it is streamed
     // through, never held in memory nor written to a disk whole.
     std::size_t keepOutput = 0;
+    // With keepOutput: what is read is also written to our stdout as it comes (a build's progress).
+    bool echo = false;
 };
 
 // A program's output as ProcessOptions::keepOutput keeps it.
