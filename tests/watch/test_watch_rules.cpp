@@ -151,6 +151,35 @@ TEST_CASE("the files that count as code") {
     CHECK_FALSE(isWatchedFile("labs/lab3_sphere/figure.png"));
     CHECK_FALSE(isWatchedFile("labs/lab3_sphere/.sphere_geometry.cpp.swp"));
     CHECK_FALSE(isWatchedFile("labs/lab3_sphere/sphere_geometry.cpp~"));
+    CHECK(isWatchedFile("labs/lab6_shadows/point_light_integrator.h"));
+    CHECK(isWatchedFile("labs/lab3_sphere/scenes/lab3_cosine.toml"));
+}
+
+TEST_CASE("editors' temporary and backup files are not code") {
+    for (const char* name : {"sedvVUgJG", "sedAb12Cd", ".sphere_geometry.cpp.swp", ".sphere_geometry.cpp.swx", "sphere_geometry.cpp.swp",
+                             "4913", "sphere_geometry.cpp~", "#sphere_geometry.cpp#", ".#sphere_geometry.cpp", "sphere_geometry.cpp.tmp",
+                             "sphere_geometry.cpp.orig", "sphere_geometry.cpp.rej", "sphere_geometry.cpp.bak",
+                             "sphere_geometry.cpp.kate-swp", "sphere_geometry.cpp___jb_tmp___", "my notes.cpp", ".cpp", "Makefile"}) {
+        CAPTURE(name);
+        CHECK_FALSE(isWatchedFile(fs::path("labs/lab3_sphere") / name));
+    }
+}
+
+TEST_CASE("a watcher lists a save renamed over a lab file, never the editor's files around it") {
+    const fs::path folder = freshFolder("watch-editors");
+    raylab::writeFileAtomically(folder / "sphere.cpp", "int a;");
+    FileWatcher watcher({folder});
+    // sed -i: a temporary file written, then renamed over the lab file; vim: its 4913 probe and its swap file.
+    raylab::writeFileAtomically(folder / "4913", "");
+    raylab::writeFileAtomically(folder / ".sphere.cpp.swp", "swap");
+    raylab::writeFileAtomically(folder / "sphere.cpp~", "int a;");
+    raylab::writeFileAtomically(folder / "sedvVUgJG", "int b;");
+    fs::rename(folder / "sedvVUgJG", folder / "sphere.cpp");
+    std::vector<fs::path> changed;
+    for (int k = 0; k < 50 && changed.empty(); ++k) changed = watcher.changes(std::chrono::milliseconds(200));
+    for (auto more = watcher.changes(std::chrono::milliseconds(100)); !more.empty(); more = watcher.changes(std::chrono::milliseconds(100)))
+        changed.insert(changed.end(), more.begin(), more.end());
+    CHECK(changed == std::vector<fs::path>{folder / "sphere.cpp"});
 }
 
 // Both watchers: inotify (Linux) and the portable polling one (RAYLAB_WATCH_POLL, as elsewhere).
