@@ -3,14 +3,17 @@
 #include "watch/compiler_errors.h"
 #include "watch/file_watcher.h"
 #include "watch/http_rules.h"
+#include "watch/page_document.h"
 #include "watch/page_state.h"
 #include "watch/watch_server.h"
 
 #include "src/atomic_file.h"
+#include "src/messages.h"
 #include "support/files.h"
 
 #include <doctest/doctest.h>
 #include <httplib.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -142,6 +145,38 @@ TEST_CASE("the long poll: a newer version at once, the same one after the wait, 
     page.stop();
     stopped.join();
     CHECK(seen == R"({"version":3,"phase":"ready"})");
+}
+
+TEST_CASE("while the latest save does not compile, the last good grade is marked stale, in English and in French") {
+    const std::string graded = R"({"figures":[{"id":"lab3_cosine","passed":true}],"checks":[{"name":"a check","passed":true}]})";
+    const fs::path tree = "/tree";
+    const std::string error = "/tree/labs/lab3_sphere/sphere_geometry.cpp:12:5: error: 'nowhere' was not declared in this scope\n";
+    PageFacts facts{3, "build_failed", {"labs/lab3_sphere/sphere_geometry.cpp"}, error, tree};
+    auto failed = nlohmann::json::parse(pageDocument(graded, facts));
+    CHECK(failed["stale"] == true);
+    CHECK(failed["figures"][0]["stale"] == true);
+    CHECK(failed["figures"][0]["passed"] == true); // the verdict kept, marked
+    CHECK(failed["checks"][0]["stale"] == true);
+    REQUIRE(failed["build"]["errors"].size() == 1);
+    CHECK(failed["build"]["errors"][0]["file"] == "labs/lab3_sphere/sphere_geometry.cpp");
+    CHECK(failed["words"]["stale"] == "stale");
+    // Still stale while the next save builds, until one compiles.
+    facts.phase = "building";
+    CHECK(nlohmann::json::parse(pageDocument(graded, facts))["figures"][0]["stale"] == true);
+    facts.buildOutput.clear();
+    facts.phase = "ready";
+    const auto compiled = nlohmann::json::parse(pageDocument(graded, facts));
+    CHECK(compiled["stale"] == false);
+    CHECK(compiled["figures"][0]["stale"] == false);
+    CHECK(compiled["checks"][0]["stale"] == false);
+    CHECK(compiled["build"]["errors"].empty());
+    raylab::setLanguage(raylab::Language::Fr);
+    const auto french = nlohmann::json::parse(pageDocument(graded, facts));
+    raylab::setLanguage(raylab::Language::En);
+    CHECK(french["words"]["stale"] == "périmé");
+    CHECK(french["words"]["stale_banner"].get<std::string>().find("ne compile pas\u00A0:") != std::string::npos);
+    // A grade that is no JSON object (it never is) makes a page, not an exception.
+    CHECK(nlohmann::json::parse(pageDocument("not json", facts))["stale"] == false);
 }
 
 TEST_CASE("the files that count as code") {

@@ -42,9 +42,16 @@ function showHeader() {
   if (!$("inspector-where").textContent) $("inspector-where").textContent = word("inspector_hint");
 }
 
+// A label on what the last good build gave while the latest save does not compile.
+function staleLabel() {
+  return element("span", { class: "stale-label", title: word("stale_banner") }, word("stale"));
+}
+
 function showBuild() {
   const build = state.build || { errors: [], output: "" };
-  const failed = state.phase === "build_failed";
+  const failed = state.phase === "build_failed" || state.stale === true;
+  $("stale").hidden = state.stale !== true;
+  $("stale").textContent = state.stale === true ? word("stale_banner") : "";
   $("build").hidden = !failed;
   $("build-title").textContent = word("compile_errors");
   const list = $("build-errors");
@@ -91,10 +98,11 @@ function showFigures() {
   main.replaceChildren();
   main.className = (flipped ? "flipped" : "") + (zoom > 0 ? " zoomed" : "");
   for (const f of state.figures || []) {
-    const block = element("section", { class: "figure", id: "figure-" + f.id });
+    const block = element("section", { class: "figure" + (f.stale ? " stale" : ""), id: "figure-" + f.id });
     const verdict = element("b", { class: f.passed ? "pass" : "fail" }, word(f.passed ? "pass" : "fail"));
     const heading = element("h2", {}, f.id + " ");
     heading.appendChild(verdict);
+    if (f.stale) heading.appendChild(staleLabel());
     block.appendChild(heading);
     const pictures = element("div", { class: "pictures" });
     const mine = flipped ? f.reference : f.student;
@@ -111,8 +119,10 @@ function showChecks() {
   const table = $("checks");
   table.replaceChildren();
   for (const c of state.checks || []) {
-    const row = element("tr", { class: c.passed ? "passed" : "failed" });
-    cell(row, word(c.passed ? "pass" : "fail"), { class: c.passed ? "pass" : "fail" });
+    const row = element("tr", { class: (c.passed ? "passed" : "failed") + (c.stale ? " stale" : "") });
+    const verdict = element("td", { class: c.passed ? "pass" : "fail" }, word(c.passed ? "pass" : "fail"));
+    if (c.stale) verdict.appendChild(staleLabel());
+    row.appendChild(verdict);
     cell(row, c.name);
     const message = element("td");
     message.appendChild(element("pre", {}, c.message));
@@ -129,6 +139,7 @@ function show() {
   showChecks();
   document.body.dataset.version = state.version;
   document.body.dataset.phase = state.phase;
+  document.body.dataset.stale = state.stale === true ? "yes" : "no";
 }
 
 function value(v) {
