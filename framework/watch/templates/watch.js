@@ -161,17 +161,27 @@ async function inspect(figure, x, y) {
   for (const key of ["quantity", "your_value", "reference_value"]) head.appendChild(element("th", {}, word(key)));
   table.appendChild(head);
   // Each quantity: its name, the function that computes it, the handout's formula and section; the
-  // two values beside them.
+  // two values beside them. Where the rows go on from the reference's values (a row above differs),
+  // a line says so: your code's answers there are on the reference's ray, not on yours.
+  let following = "";
   answer.rows.forEach((r, k) => {
-    const row = element("tr", { class: (r.differs ? "differs" : "") + (k === answer.first ? " first" : ""), "data-name": r.name });
+    if (r.follows && r.follows !== following) {
+      const line = element("tr", { class: "follows" });
+      line.appendChild(element("td", { colspan: "3" }, r.follows));
+      table.appendChild(line);
+    }
+    following = r.follows || "";
+    const classes = (r.differs ? "differs" : "") + (k === answer.first ? " first" : "") + (r.follows ? " following" : "") +
+      (r.reference_only ? " reference-only" : "");
+    const row = element("tr", { class: classes.trim(), "data-name": r.name });
     if (k === answer.first) row.title = word("first_difference");
     const what = element("td");
     what.appendChild(element("div", { class: "name" }, r.name));
-    what.appendChild(element("div", { class: "function" }, word("function") + " " + (r.function || word("framework"))));
+    what.appendChild(element("div", { class: "function" }, word("function") + " " + (r.function || (r.reference_only ? word("reference_value") : word("framework")))));
     what.appendChild(element("div", { class: "formula" }, r.formula));
     what.appendChild(element("div", { class: "handout" }, word("handout") + ": " + r.handout));
     row.appendChild(what);
-    cell(row, value(r.student), { class: "student" });
+    cell(row, r.reference_only ? word("reference_only") : value(r.student), { class: "student", title: r.follows || "" });
     cell(row, value(r.reference), { class: "reference" });
     table.appendChild(row);
   });
