@@ -91,7 +91,12 @@ void WatchSession::refresh(const std::vector<fs::path>& changed) {
     publish("building", changed);
     const std::lock_guard lock(m_agents);
     auto start = std::chrono::steady_clock::now();
-    m_buildOutput = buildAgent();
+    try {
+        m_buildOutput = buildAgent();
+    } catch (const std::exception& e) { // cmake could not be started: a failed build, never the end of the watch
+        m_buildOutput = e.what();
+        if (m_buildOutput.empty()) m_buildOutput = "cmake --build";
+    }
     m_buildSeconds = secondsSince(start);
     if (!m_buildOutput.empty()) {
         publish("build_failed", changed);

@@ -3,7 +3,8 @@
 // under a compile error every figure and check is marked stale, with a banner and the compiler's
 // error; once it compiles, nothing is; the inspector's rows that follow the reference's ray are
 // preceded by a line saying so, and a row of the reference's path never shows a value as yours. Fast
-// (no tree, no build): the browser test of the students' tree checks the same in a real session.
+// (no tree, no build): the browser test of the students' tree checks the same in a real session. And
+// the page's "word: value" in French typography.
 #include "headless_chromium.h"
 
 #include "support/files.h"
@@ -102,6 +103,16 @@ TEST_CASE("stale marks under a compile error, cleared when it compiles; the insp
         CHECK(browser.evaluate("document.querySelectorAll('#inspector-rows tr.following').length") == 2);
         const std::string only = "document.querySelector('#inspector-rows tr.reference-only .student').textContent";
         CHECK(browser.evaluate(only) == raylab::tr("watch.page.reference_only"));
+
+        // "word: value" in each language's typography: a no-break space before the colon in French.
+        CHECK(browser.evaluate("document.getElementById('changed').textContent") == "saved: labs/lab3_sphere/sphere_geometry.cpp");
+        raylab::setLanguage(raylab::Language::Fr);
+        page.publish(pageDocument(kGraded, {3, "ready", {"labs/lab3_sphere/sphere_geometry.cpp"}, "", "/tree"}));
+        raylab::setLanguage(raylab::Language::En);
+        REQUIRE(browser.waitFor("document.documentElement.lang === 'fr'", 60.));
+        CHECK(browser.evaluate("document.getElementById('changed').textContent") ==
+              "enregistr\u00E9\u00A0: labs/lab3_sphere/sphere_geometry.cpp");
+        CHECK(browser.evaluate("document.querySelector('.difference-caption').textContent") == "diff\u00E9rence\u00A0: LSB");
     }
 }
 
