@@ -130,6 +130,19 @@ TEST_CASE("every row links a section of its handout, in English and in French") 
     raylab::setLanguage(raylab::Language::En);
 }
 
+TEST_CASE("the far root first: t differs first, and the normal after it says it is at the reference's hit point") {
+    if (!labInCourse(3)) return;
+    const json answer = inspect("raylab-mistake-far_root_first", "lab3_cosine", 300, 150);
+    INFO(answer.dump(1));
+    REQUIRE(answer["first"] == 4);
+    CHECK(answer["rows"][4]["name"] == "t");
+    CHECK(answer["rows"][3]["follows"] == ""); // hit: on the student's own ray, which is the reference's
+    CHECK(answer["rows"][6]["name"] == "normal");
+    CHECK(answer["rows"][6]["follows"] == "from here on: the reference's hit point, not yours (your code's answer on it)");
+    CHECK(answer["rows"][7]["name"] == "colour");
+    CHECK(answer["rows"][7]["follows"] == ""); // Li takes the ray only, the student's own
+}
+
 } // TEST_SUITE
 
 TEST_SUITE("watch inspector: lab 4") {

@@ -28,7 +28,8 @@ namespace {
 const std::string kGraded = R"({"figures":[{"id":"lab3_cosine","passed":true,"reason":"","diagnosis":"","width":4,"height":4,
 "student":"","reference":"","difference":"","scale":"LSB"},{"id":"lab3_flat","passed":false,"reason":"","diagnosis":"","width":4,
 "height":4,"student":"","reference":"","difference":"","scale":"LSB"}],
-"checks":[{"name":"intersect: a ray along z","passed":true,"message":"","points":1,"max":1}],"labs":[],"problems":[]})";
+"checks":[{"name":"intersect: a ray along z","passed":true,"message":"","points":1,"max":1}],"labs":[],
+"problems":["lab3_flat: rendering crashed"]})";
 
 // An inspector's answer: a camera row that differs, a row on the reference's ray, a row of the
 // reference's path alone.
@@ -82,6 +83,7 @@ TEST_CASE("stale marks under a compile error, cleared when it compiles; the insp
         CHECK(browser.evaluate("document.querySelector('#figure-lab3_cosine h2 b').className") == "pass"); // the verdict kept, marked
         CHECK(browser.evaluate("document.querySelectorAll('#checks tr.stale .stale-label').length") == 1);
         CHECK(browser.evaluate("document.querySelector('#checks .stale-label').textContent") == "stale");
+        CHECK(browser.evaluate("document.querySelectorAll('#problems h2 .stale-label').length") == 1);
 
         // It compiles again: nothing is stale, the errors are gone.
         page.publish(pageDocument(kGraded, {3, "ready", {"labs/lab3_sphere/sphere_geometry.cpp"}, "", "/tree"}));

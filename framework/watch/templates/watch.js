@@ -72,7 +72,9 @@ function showProblems() {
   const problems = state.problems || [];
   const box = $("problems");
   box.hidden = problems.length === 0;
-  box.replaceChildren(element("h2", {}, word("problems")));
+  const heading = element("h2", {}, word("problems"));
+  if (state.stale === true) heading.appendChild(staleLabel());
+  box.replaceChildren(heading);
   for (const p of problems) box.appendChild(element("pre", { class: "fail" }, p));
 }
 
