@@ -1,6 +1,9 @@
 #include "watch/file_watcher.h"
 
 #include <algorithm>
+#include <cctype>
+#include <iterator>
+#include <string_view>
 #include <cstdlib>
 #include <map>
 #include <thread>
@@ -39,8 +42,16 @@ std::map<fs::path, fs::file_time_type> snapshot(const std::vector<fs::path>& fol
 } // namespace
 
 bool isWatchedFile(const fs::path& file) {
-    const std::string name = file.filename().string(), extension = file.extension().string();
-    return !name.empty() && !name.starts_with(".") && !name.ends_with("~") && extension != ".md" && extension != ".png";
+    // A lab file's name is plain (letters, digits, '_', '-', '.'; not hidden) and ends as code or a
+    // TOML file does. Editors' and tools' own files are not: sed -i's sedXXXXXX, vim's .x.swp and its
+    // 4913 probe, x~, emacs's #x# and .#x, x.tmp, x.orig, x.rej, x.bak, kate's x.kate-swp...
+    static constexpr std::string_view kExtensions[] = {".cpp", ".cc", ".h", ".hpp", ".toml"};
+    const std::string name = file.filename().string();
+    if (name.empty() || name.starts_with(".")) return false;
+    for (const char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) return false;
+    const std::string extension = file.extension().string();
+    return extension != name && std::find(std::begin(kExtensions), std::end(kExtensions), extension) != std::end(kExtensions);
 }
 
 struct FileWatcher::Impl {

@@ -12,8 +12,8 @@ namespace raylab::watch {
 
 class FileWatcher {
 public:
-    // `folders`: watched with everything under them; a file of a hidden folder, a hidden file, an
-    // editor's backup (name~) and a handout or picture (.md, .png) are not the code and are ignored.
+    // `folders`: watched with everything under them; only the lab's files count (isWatchedFile): a
+    // file of a hidden folder, an editor's temporary or backup file, a handout or a picture is ignored.
     explicit FileWatcher(std::vector<std::filesystem::path> folders);
     ~FileWatcher();
     FileWatcher(const FileWatcher&) = delete;
@@ -30,7 +30,8 @@ private:
     std::unique_ptr<Impl> m_impl;
 };
 
-// Whether a change of `file` is a change of the code (FileWatcher's rule above).
+// Whether a change of `file` is a change of the code: a plain name (letters, digits, '_', '-', '.',
+// not hidden) ending in .cpp, .cc, .h, .hpp or .toml; never an editor's temporary or backup file.
 bool isWatchedFile(const std::filesystem::path& file);
 
 } // namespace raylab::watch

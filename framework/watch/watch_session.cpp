@@ -1,6 +1,6 @@
 #include "watch/watch_session.h"
 
-#include "watch/compiler_errors.h"
+#include "watch/page_document.h"
 
 #include "grader/course/grade_reports.h"
 #include "grader/course/run_scratch.h"
@@ -25,15 +25,6 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The page's words in the reader's language: the catalogue's [watch.page] table.
-Json pageWords() {
-    Json words = Json::object();
-    constexpr std::string_view prefix = "watch.page.";
-    for (const auto& [id, text] : messageCatalogue(language()))
-        if (id.starts_with(prefix)) words[id.substr(prefix.size())] = text;
-    return words;
 }
 
 // A picture of the report's images/ folder, as the page asks for it; empty when it was not written.
@@ -100,7 +91,12 @@ void WatchSession::refresh(const std::vector<fs::path>& changed) {
     publish("building", changed);
     const std::lock_guard lock(m_agents);
     auto start = std::chrono::steady_clock::now();
-    m_buildOutput = buildAgent();
+    try {
+        m_buildOutput = buildAgent();
+    } catch (const std::exception& e) { // cmake could not be started: a failed build, never the end of the watch
+        m_buildOutput = e.what();
+        if (m_buildOutput.empty()) m_buildOutput = "cmake --build";
+    }
     m_buildSeconds = secondsSince(start);
     if (!m_buildOutput.empty()) {
         publish("build_failed", changed);
@@ -129,21 +125,9 @@ void WatchSession::refresh(const std::vector<fs::path>& changed) {
 }
 
 void WatchSession::publish(const std::string& phase, const std::vector<fs::path>& changed) {
-    Json state = Json::parse(m_graded);
-    state["lab"] = m_settings.lab;
-    state["phase"] = phase;
-    state["language"] = languageCode(language());
-    state["words"] = pageWords();
-    Json files = Json::array();
-    for (const fs::path& file : changed)
-        files.push_back(fs::relative(file, m_settings.sourceDir).generic_string());
-    state["changed"] = files;
-    Json errors = Json::array();
-    for (const CompilerError& e : compilerErrors(m_buildOutput, m_settings.sourceDir))
-        errors.push_back({{"file", e.file}, {"line", e.line}, {"column", e.column}, {"message", printableText(e.message)}});
-    state["build"] = {{"errors", errors}, {"output", printableText(m_buildOutput)}};
-    state["seconds"] = {{"build", m_buildSeconds}, {"grade", m_gradeSeconds}};
-    m_page.publish(state.dump());
+    PageFacts facts{m_settings.lab, phase, {}, m_buildOutput, m_settings.sourceDir, m_buildSeconds, m_gradeSeconds};
+    for (const fs::path& file : changed) facts.changed.push_back(fs::relative(file, m_settings.sourceDir).generic_string());
+    m_page.publish(pageDocument(m_graded, facts));
 }
 
 } // namespace raylab::watch

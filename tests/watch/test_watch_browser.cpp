@@ -2,8 +2,10 @@
 // written: the page in headless chromium shows lab 3's pictures passing; computeNormal is broken
 // (the inward normal) and saved; the page refreshes by itself with the failing figure and check; a
 // click on the sphere shows the student's normal beside the reference's, the first value that
-// differs. It prints the save-to-page time and the inspector's (a benchmark: no time is asserted),
-// and takes the handouts' screenshot. Run under each sandbox (ctest's RAYLAB_SANDBOX).
+// differs; a compile error keeps the last good pictures and verdicts, each marked stale, until it
+// compiles again; an editor's temporary and swap files are never listed as saved. It prints the
+// save-to-page time and the inspector's (a benchmark: no time is asserted), and takes the handouts'
+// screenshot. Run under each sandbox (ctest's RAYLAB_SANDBOX).
 #include "headless_chromium.h"
 
 #include "support/files.h"
@@ -138,8 +140,11 @@ TEST_CASE("a broken computeNormal: the page refreshes by itself, the inspector s
     const std::string outward = "(p - m_center)";
     REQUIRE(code.find(outward) != std::string::npos);
     code.replace(code.find(outward), outward.size(), "(m_center - p)");
+    // Saved as sed -i saves (a temporary file beside it, renamed over it), a vim swap file beside it.
     const auto saved = std::chrono::steady_clock::now();
-    raylab::writeFileAtomically(kSphereFile, code);
+    raylab::writeFileAtomically(kSphereFile.parent_path() / ".sphere_geometry.cpp.swp", "swap");
+    raylab::writeFileAtomically(kSphereFile.parent_path() / "sedvVUgJG", code);
+    fs::rename(kSphereFile.parent_path() / "sedvVUgJG", kSphereFile);
     REQUIRE(browser.waitFor("Number(document.body.dataset.version) > " + std::to_string(before) +
                             " && document.body.dataset.phase === 'ready'"));
     const double saveToPage = secondsSince(saved);
@@ -147,6 +152,11 @@ TEST_CASE("a broken computeNormal: the page refreshes by itself, the inspector s
     CHECK(browser.evaluate("[...document.querySelectorAll('#checks tr.failed')].some(r => r.textContent.includes('computeNormal'))") ==
           true);
     CHECK(browser.evaluate("document.getElementById('changed').textContent.includes('sphere_geometry.cpp')") == true);
+    CHECK(browser.evaluate("document.getElementById('changed').textContent.includes('sed')") == false); // the editors' files are no lab file
+    CHECK(browser.evaluate("document.getElementById('changed').textContent.includes('swp')") == false);
+    CHECK(browser.evaluate("document.body.dataset.stale") == "no");
+    CHECK(browser.evaluate("document.querySelectorAll('.stale-label').length") == 0);
+    fs::remove(kSphereFile.parent_path() / ".sphere_geometry.cpp.swp");
 
     // Zoomed in (+ twice: each pixel of the picture two pixels of the screen), a click on the
     // sphere's upper half in the student's picture (pixel 300, 150 of 600 x 400).
@@ -211,6 +221,14 @@ TEST_CASE("a broken computeNormal: the page refreshes by itself, the inspector s
     const std::string shown = browser.evaluate("document.querySelector('#build-errors code.where').textContent").get<std::string>();
     CHECK_MESSAGE(shown.rfind(where, 0) == 0, shown);
     CHECK(browser.evaluate("document.getElementById('build-errors').textContent.includes('nowhere')") == true);
+    // The last good build's pictures and verdicts are still there, each marked stale, with a banner.
+    CHECK(browser.evaluate("document.body.dataset.stale") == "yes");
+    CHECK(browser.evaluate("document.getElementById('stale').hidden") == false);
+    CHECK(browser.evaluate("document.getElementById('stale').textContent.length > 20") == true); // in the reader's language
+    CHECK(browser.evaluate("(() => { const f = document.querySelectorAll('.figure'); return f.length > 0 && "
+                           "[...f].every(b => b.classList.contains('stale') && b.querySelector('h2 .stale-label')); })()") == true);
+    CHECK(browser.evaluate("(() => { const c = document.querySelectorAll('#checks tr'); return c.length > 0 && "
+                           "[...c].every(r => r.querySelector('.stale-label') && r.querySelector('.stale-label').textContent !== ''); })()") == true);
 
     // A save during a build is not lost: the inward normal saved, then, while it builds, the outward
     // one; the page ends with the outward normal's grade.
@@ -220,6 +238,9 @@ TEST_CASE("a broken computeNormal: the page refreshes by itself, the inspector s
     writeLabsOneToThree();
     CHECK(browser.waitFor("document.body.dataset.phase === 'ready' && " + cosine + ".className === 'pass'"));
     CHECK(browser.evaluate("document.querySelectorAll('#checks tr.failed').length") == 0);
+    CHECK(browser.evaluate("document.body.dataset.stale") == "no"); // it compiles again: nothing stale
+    CHECK(browser.evaluate("document.getElementById('stale').hidden") == true);
+    CHECK(browser.evaluate("document.querySelectorAll('.stale-label, .figure.stale').length") == 0);
 
     CHECK(watch.stop() == 0); // Ctrl-C stops it cleanly
     CHECK(readFile(out / ("watch-output-" + sandbox + ".txt")).find("raylab watch: stopped") != std::string::npos);

@@ -1,7 +1,8 @@
 // The pixel inspector against agents of known code (built by tests/grading from solutions/ and the
 // mistakes' patches): the reference's own agent agrees on every value of a pixel of labs 2 to 5; a
-// mirrored lookAt basis (mistake M4.1) differs first at the camera's u; the same sample offset for
-// every sample (lab 5) first at the second sample. Run under each sandbox (ctest's RAYLAB_SANDBOX). The
+// mirrored lookAt basis (mistake M4.1) differs first at the camera's u, and the rows after it say they
+// follow the reference's ray; the same sample offset for every sample (lab 5) first at the second
+// sample; lab 6's shadow rays, and a shadow ray cast away from the light first at what it meets. Run under each sandbox (ctest's RAYLAB_SANDBOX). The
 // pixels are those of the course's labs; a lab's own cases, a suite each, are skipped where the course
 // does not hand it out (support/course.h).
 #include "watch/pixel_inspector.h"
@@ -15,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -103,7 +105,17 @@ TEST_CASE("the reference's agent agrees with the reference on every value") {
 TEST_CASE("a pixel outside the picture, a figure of no lab: said, nothing run") {
     CHECK(inspect("raylab-agent-reference", "lab3_cosine", 600, 0)["note"] == "pixel (600, 0) is outside the picture (600 x 400)");
     CHECK(inspect("raylab-agent-reference", "../secret", 1, 1)["note"] == "no figure ../secret in this lab");
-    CHECK(inspect("raylab-agent-reference", "lab1_gradient", 1, 1)["rows"].empty());
+    const json gradient = inspect("raylab-agent-reference", "lab1_gradient", 1, 1);
+    CHECK(gradient["rows"].empty());
+    if (labInCourse(1)) // lab 1's grading folder gives no rows: said so
+        CHECK(gradient["note"].get<std::string>().starts_with("no inspector for lab 1:"));
+}
+
+TEST_CASE("a row the student's code computed on the reference's ray says so, only after the ray differs") {
+    for (const auto& [figure, x, y] : inCourse({{"lab3_cosine", 300, 150}, {"lab4_d", 150, 100}})) {
+        const json answer = inspect("raylab-agent-reference", figure, x, y);
+        for (const json& row : answer["rows"]) CHECK_MESSAGE(row["follows"] == "", row["name"]); // nothing differs
+    }
 }
 
 TEST_CASE("every row links a section of its handout, in English and in French") {
@@ -116,6 +128,19 @@ TEST_CASE("every row links a section of its handout, in English and in French") 
     }
     CHECK(inspect("raylab-agent-reference", "lab3_cosine", 300, 150)["rows"][6]["name"] == "normale");
     raylab::setLanguage(raylab::Language::En);
+}
+
+TEST_CASE("the far root first: t differs first, and the normal after it says it is at the reference's hit point") {
+    if (!labInCourse(3)) return;
+    const json answer = inspect("raylab-mistake-far_root_first", "lab3_cosine", 300, 150);
+    INFO(answer.dump(1));
+    REQUIRE(answer["first"] == 4);
+    CHECK(answer["rows"][4]["name"] == "t");
+    CHECK(answer["rows"][3]["follows"] == ""); // hit: on the student's own ray, which is the reference's
+    CHECK(answer["rows"][6]["name"] == "normal");
+    CHECK(answer["rows"][6]["follows"] == "from here on: the reference's hit point, not yours (your code's answer on it)");
+    CHECK(answer["rows"][7]["name"] == "colour");
+    CHECK(answer["rows"][7]["follows"] == ""); // Li takes the ray only, the student's own
 }
 
 } // TEST_SUITE
@@ -137,6 +162,17 @@ TEST_CASE("a mirrored lookAt basis differs first at u, with its formula") {
     CHECK(answer["rows"][1]["name"] == "camera u");
     CHECK(answer["rows"][1]["formula"] == "u = normalize(cross(up, w))");
     CHECK(answer["rows"][1]["handout"] == "labs/lab4_lookat_camera/README.md#the-maths");
+    // The camera's rows are the student's own; every row after them is their code on the reference's
+    // ray, and says so (the colour under "yours" is not their pixel's).
+    for (std::size_t k = 0; k < 5; ++k) CHECK_MESSAGE(answer["rows"][k]["follows"] == "", answer["rows"][k]["name"]);
+    REQUIRE(answer["rows"].size() > 5);
+    for (std::size_t k = 5; k < answer["rows"].size(); ++k)
+        CHECK_MESSAGE(answer["rows"][k]["follows"] == "from here on: the reference's ray, not yours (your code's answer on it)",
+                      answer["rows"][k]["name"]);
+    raylab::setLanguage(raylab::Language::Fr);
+    const json french = inspect("raylab-mistake-mirrored_basis", "lab4_d", 150, 100);
+    raylab::setLanguage(raylab::Language::En);
+    CHECK(french["rows"][5]["follows"].get<std::string>().starts_with("à partir d'ici\u00A0: le rayon de la référence, pas le vôtre"));
 }
 
 } // TEST_SUITE
@@ -151,6 +187,84 @@ TEST_CASE("one offset for every sample differs first at the second sample") {
     CHECK(answer["rows"][0]["differs"] == false);
     REQUIRE(answer["first"] == 2);
     CHECK(answer["rows"][2]["name"] == "sample 2 (sx, sy)");
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("watch inspector: lab 6") {
+
+// A row of the answer by its name; null when there is none.
+json row(const json& answer, const std::string& name) {
+    for (const json& r : answer["rows"])
+        if (r["name"] == name) return r;
+    return {};
+}
+
+// lab6_shadows (600 x 400): the ground in the big sphere's shadow, the top of the big sphere facing
+// the light, the ground far from both spheres.
+constexpr int kShadowX = 233, kShadowY = 237, kSphereTopX = 332, kSphereTopY = 138, kGroundX = 496, kGroundY = 298;
+
+TEST_CASE("the shadow ray, the light it tests, what it meets and Lambert's term, all agreed by the reference's agent") {
+    if (!labInCourse(6)) return;
+    const json shadow = inspect("raylab-agent-reference", "lab6_shadows", kShadowX, kShadowY);
+    INFO(shadow.dump(1));
+    CHECK(shadow["note"] == "");
+    CHECK(shadow["first"] == -1);
+    CHECK(row(shadow, "camera u")["differs"] == false); // lab 4's camera first
+    CHECK(row(shadow, "the object the ray hits first")["reference"] == "plane 1");
+    CHECK(row(shadow, "light 1: its position")["reference"] == json::array({-3., 6., 4.}));
+    const json origin = row(shadow, "light 1: shadow ray origin"), direction = row(shadow, "light 1: shadow ray direction");
+    CHECK(origin["reference_only"] == true);
+    CHECK(origin["student"].is_null()); // no function of the lab hands it back: never shown as the student's
+    CHECK(std::abs(origin["reference"][1].get<double>()) < 1e-6); // on the ground
+    CHECK(direction["reference"][1].get<double>() > 0.); // up, towards the light
+    CHECK(row(shadow, "light 1: what the shadow ray meets")["reference"] == "sphere 1");
+    CHECK(row(shadow, "light 1: what the shadow ray meets")["student"] == "sphere 1");
+    CHECK(row(shadow, "light 1: t of the nearest object it meets")["reference"].get<double>() > 0.);
+    CHECK(row(shadow, "light 1: in shadow (not lit)")["reference"] == true);
+    CHECK(row(shadow, "light 1: in shadow (not lit)")["student"] == true);
+    CHECK(!row(shadow, "light 1: Lambert's term")["student"].is_null());
+    CHECK(row(shadow, "light 1: Lambert's term")["differs"] == false);
+    for (const json& r : shadow["rows"])
+        if (r["reference_only"] == true) CHECK_MESSAGE(r["differs"] == false, r["name"]);
+
+    const json ground = inspect("raylab-agent-reference", "lab6_shadows", kGroundX, kGroundY);
+    INFO(ground.dump(1));
+    CHECK(ground["first"] == -1);
+    CHECK(row(ground, "light 1: what the shadow ray meets")["reference"] == "none");
+    CHECK(row(ground, "light 1: in shadow (not lit)")["student"] == false);
+    CHECK(row(ground, "light 1: t of the nearest object it meets").is_null());
+
+    // Without the shadow test: no shadow ray, Lambert's term still.
+    const json plain = inspect("raylab-agent-reference", "lab6_no_shadows", kShadowX, kShadowY);
+    CHECK(plain["first"] == -1);
+    CHECK(row(plain, "light 1: shadow ray origin").is_null());
+    CHECK(!row(plain, "light 1: Lambert's term").is_null());
+}
+
+TEST_CASE("a shadow ray cast away from the light: the first row that differs is what it meets") {
+    if (!labInCourse(6)) return;
+    const json answer = inspect("raylab-mistake-light_direction_reversed", "lab6_shadows", kSphereTopX, kSphereTopY);
+    INFO(answer.dump(1));
+    REQUIRE(answer["first"].get<int>() >= 0);
+    const json first = answer["rows"][answer["first"].get<std::size_t>()];
+    CHECK(first["name"] == "light 1: what the shadow ray meets");
+    CHECK(first["function"] == "inShadow");
+    CHECK(first["reference"] == "none");
+    CHECK(first["student"].get<std::string>().starts_with("sphere 1")); // into the sphere it leaves (and on, down to the ground)
+    CHECK(row(answer, "light 1: in shadow (not lit)")["student"] == true);
+    CHECK(row(answer, "light 1: in shadow (not lit)")["differs"] == true);
+    CHECK(row(answer, "light 1: Lambert's term")["differs"] == false); // Li without the shadow test is right
+}
+
+TEST_CASE("every lab 6 row links a section of its handout, in English and in French") {
+    if (!labInCourse(6)) return;
+    for (const raylab::Language language : {raylab::Language::En, raylab::Language::Fr}) {
+        raylab::setLanguage(language);
+        const json answer = inspect("raylab-agent-reference", "lab6_shadows", kShadowX, kShadowY);
+        for (const json& r : answer["rows"]) CHECK_MESSAGE(handoutSectionExists(r["handout"]), r["handout"]);
+    }
+    raylab::setLanguage(raylab::Language::En);
 }
 
 } // TEST_SUITE

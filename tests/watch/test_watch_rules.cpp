@@ -3,14 +3,17 @@
 #include "watch/compiler_errors.h"
 #include "watch/file_watcher.h"
 #include "watch/http_rules.h"
+#include "watch/page_document.h"
 #include "watch/page_state.h"
 #include "watch/watch_server.h"
 
 #include "src/atomic_file.h"
+#include "src/messages.h"
 #include "support/files.h"
 
 #include <doctest/doctest.h>
 #include <httplib.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -144,6 +147,38 @@ TEST_CASE("the long poll: a newer version at once, the same one after the wait, 
     CHECK(seen == R"({"version":3,"phase":"ready"})");
 }
 
+TEST_CASE("while the latest save does not compile, the last good grade is marked stale, in English and in French") {
+    const std::string graded = R"({"figures":[{"id":"lab3_cosine","passed":true}],"checks":[{"name":"a check","passed":true}]})";
+    const fs::path tree = "/tree";
+    const std::string error = "/tree/labs/lab3_sphere/sphere_geometry.cpp:12:5: error: 'nowhere' was not declared in this scope\n";
+    PageFacts facts{3, "build_failed", {"labs/lab3_sphere/sphere_geometry.cpp"}, error, tree};
+    auto failed = nlohmann::json::parse(pageDocument(graded, facts));
+    CHECK(failed["stale"] == true);
+    CHECK(failed["figures"][0]["stale"] == true);
+    CHECK(failed["figures"][0]["passed"] == true); // the verdict kept, marked
+    CHECK(failed["checks"][0]["stale"] == true);
+    REQUIRE(failed["build"]["errors"].size() == 1);
+    CHECK(failed["build"]["errors"][0]["file"] == "labs/lab3_sphere/sphere_geometry.cpp");
+    CHECK(failed["words"]["stale"] == "stale");
+    // Still stale while the next save builds, until one compiles.
+    facts.phase = "building";
+    CHECK(nlohmann::json::parse(pageDocument(graded, facts))["figures"][0]["stale"] == true);
+    facts.buildOutput.clear();
+    facts.phase = "ready";
+    const auto compiled = nlohmann::json::parse(pageDocument(graded, facts));
+    CHECK(compiled["stale"] == false);
+    CHECK(compiled["figures"][0]["stale"] == false);
+    CHECK(compiled["checks"][0]["stale"] == false);
+    CHECK(compiled["build"]["errors"].empty());
+    raylab::setLanguage(raylab::Language::Fr);
+    const auto french = nlohmann::json::parse(pageDocument(graded, facts));
+    raylab::setLanguage(raylab::Language::En);
+    CHECK(french["words"]["stale"] == "périmé");
+    CHECK(french["words"]["stale_banner"].get<std::string>().find("ne compile pas\u00A0:") != std::string::npos);
+    // A grade that is no JSON object (it never is) makes a page, not an exception.
+    CHECK(nlohmann::json::parse(pageDocument("not json", facts))["stale"] == false);
+}
+
 TEST_CASE("the files that count as code") {
     CHECK(isWatchedFile("labs/lab3_sphere/sphere_geometry.cpp"));
     CHECK(isWatchedFile("labs/lab3_sphere/lab.toml"));
@@ -151,6 +186,35 @@ TEST_CASE("the files that count as code") {
     CHECK_FALSE(isWatchedFile("labs/lab3_sphere/figure.png"));
     CHECK_FALSE(isWatchedFile("labs/lab3_sphere/.sphere_geometry.cpp.swp"));
     CHECK_FALSE(isWatchedFile("labs/lab3_sphere/sphere_geometry.cpp~"));
+    CHECK(isWatchedFile("labs/lab6_shadows/point_light_integrator.h"));
+    CHECK(isWatchedFile("labs/lab3_sphere/scenes/lab3_cosine.toml"));
+}
+
+TEST_CASE("editors' temporary and backup files are not code") {
+    for (const char* name : {"sedvVUgJG", "sedAb12Cd", ".sphere_geometry.cpp.swp", ".sphere_geometry.cpp.swx", "sphere_geometry.cpp.swp",
+                             "4913", "sphere_geometry.cpp~", "#sphere_geometry.cpp#", ".#sphere_geometry.cpp", "sphere_geometry.cpp.tmp",
+                             "sphere_geometry.cpp.orig", "sphere_geometry.cpp.rej", "sphere_geometry.cpp.bak",
+                             "sphere_geometry.cpp.kate-swp", "sphere_geometry.cpp___jb_tmp___", "my notes.cpp", ".cpp", "Makefile"}) {
+        CAPTURE(name);
+        CHECK_FALSE(isWatchedFile(fs::path("labs/lab3_sphere") / name));
+    }
+}
+
+TEST_CASE("a watcher lists a save renamed over a lab file, never the editor's files around it") {
+    const fs::path folder = freshFolder("watch-editors");
+    raylab::writeFileAtomically(folder / "sphere.cpp", "int a;");
+    FileWatcher watcher({folder});
+    // sed -i: a temporary file written, then renamed over the lab file; vim: its 4913 probe and its swap file.
+    raylab::writeFileAtomically(folder / "4913", "");
+    raylab::writeFileAtomically(folder / ".sphere.cpp.swp", "swap");
+    raylab::writeFileAtomically(folder / "sphere.cpp~", "int a;");
+    raylab::writeFileAtomically(folder / "sedvVUgJG", "int b;");
+    fs::rename(folder / "sedvVUgJG", folder / "sphere.cpp");
+    std::vector<fs::path> changed;
+    for (int k = 0; k < 50 && changed.empty(); ++k) changed = watcher.changes(std::chrono::milliseconds(200));
+    for (auto more = watcher.changes(std::chrono::milliseconds(100)); !more.empty(); more = watcher.changes(std::chrono::milliseconds(100)))
+        changed.insert(changed.end(), more.begin(), more.end());
+    CHECK(changed == std::vector<fs::path>{folder / "sphere.cpp"});
 }
 
 // Both watchers: inotify (Linux) and the portable polling one (RAYLAB_WATCH_POLL, as elsewhere).

@@ -33,7 +33,7 @@ function showHeader() {
   $("title").textContent = word("title", { lab: state.lab });
   $("phase").textContent = word(state.phase);
   $("phase").className = "phase " + (state.phase === "build_failed" ? "fail" : state.phase === "ready" ? "pass" : "");
-  $("changed").textContent = state.changed && state.changed.length ? word("changed") + ": " + state.changed.join(", ") : "";
+  $("changed").textContent = state.changed && state.changed.length ? word("changed", { files: state.changed.join(", ") }) : "";
   const seconds = state.seconds || {};
   $("seconds").textContent = word("seconds", { build: (seconds.build || 0).toFixed(1), grade: (seconds.grade || 0).toFixed(1) });
   $("keys").textContent = word("keys");
@@ -42,9 +42,16 @@ function showHeader() {
   if (!$("inspector-where").textContent) $("inspector-where").textContent = word("inspector_hint");
 }
 
+// A label on what the last good build gave while the latest save does not compile.
+function staleLabel() {
+  return element("span", { class: "stale-label", title: word("stale_banner") }, word("stale"));
+}
+
 function showBuild() {
   const build = state.build || { errors: [], output: "" };
-  const failed = state.phase === "build_failed";
+  const failed = state.phase === "build_failed" || state.stale === true;
+  $("stale").hidden = state.stale !== true;
+  $("stale").textContent = state.stale === true ? word("stale_banner") : "";
   $("build").hidden = !failed;
   $("build-title").textContent = word("compile_errors");
   const list = $("build-errors");
@@ -62,7 +69,9 @@ function showProblems() {
   const problems = state.problems || [];
   const box = $("problems");
   box.hidden = problems.length === 0;
-  box.replaceChildren(element("h2", {}, word("problems")));
+  const heading = element("h2", {}, word("problems"));
+  if (state.stale === true) heading.appendChild(staleLabel());
+  box.replaceChildren(heading);
   for (const p of problems) box.appendChild(element("pre", { class: "fail" }, p));
 }
 
@@ -91,16 +100,17 @@ function showFigures() {
   main.replaceChildren();
   main.className = (flipped ? "flipped" : "") + (zoom > 0 ? " zoomed" : "");
   for (const f of state.figures || []) {
-    const block = element("section", { class: "figure", id: "figure-" + f.id });
+    const block = element("section", { class: "figure" + (f.stale ? " stale" : ""), id: "figure-" + f.id });
     const verdict = element("b", { class: f.passed ? "pass" : "fail" }, word(f.passed ? "pass" : "fail"));
     const heading = element("h2", {}, f.id + " ");
     heading.appendChild(verdict);
+    if (f.stale) heading.appendChild(staleLabel());
     block.appendChild(heading);
     const pictures = element("div", { class: "pictures" });
     const mine = flipped ? f.reference : f.student;
     pictures.appendChild(figurePicture(f, "yours", mine, flipped ? word("reference") + " (F)" : word("yours")));
     pictures.appendChild(figurePicture(f, "reference", f.reference, word("reference")));
-    pictures.appendChild(figurePicture(f, "difference", f.difference, word("difference") + ": " + f.scale));
+    pictures.appendChild(figurePicture(f, "difference", f.difference, word("difference", { scale: f.scale })));
     block.appendChild(pictures);
     block.appendChild(element("pre", { class: "reason" }, f.reason + (f.diagnosis ? "\n" + f.diagnosis : "")));
     main.appendChild(block);
@@ -111,8 +121,10 @@ function showChecks() {
   const table = $("checks");
   table.replaceChildren();
   for (const c of state.checks || []) {
-    const row = element("tr", { class: c.passed ? "passed" : "failed" });
-    cell(row, word(c.passed ? "pass" : "fail"), { class: c.passed ? "pass" : "fail" });
+    const row = element("tr", { class: (c.passed ? "passed" : "failed") + (c.stale ? " stale" : "") });
+    const verdict = element("td", { class: c.passed ? "pass" : "fail" }, word(c.passed ? "pass" : "fail"));
+    if (c.stale) verdict.appendChild(staleLabel());
+    row.appendChild(verdict);
     cell(row, c.name);
     const message = element("td");
     message.appendChild(element("pre", {}, c.message));
@@ -129,6 +141,7 @@ function show() {
   showChecks();
   document.body.dataset.version = state.version;
   document.body.dataset.phase = state.phase;
+  document.body.dataset.stale = state.stale === true ? "yes" : "no";
 }
 
 function value(v) {
@@ -150,17 +163,27 @@ async function inspect(figure, x, y) {
   for (const key of ["quantity", "your_value", "reference_value"]) head.appendChild(element("th", {}, word(key)));
   table.appendChild(head);
   // Each quantity: its name, the function that computes it, the handout's formula and section; the
-  // two values beside them.
+  // two values beside them. Where the rows go on from the reference's values (a row above differs),
+  // a line says so: your code's answers there are on the reference's ray, not on yours.
+  let following = "";
   answer.rows.forEach((r, k) => {
-    const row = element("tr", { class: (r.differs ? "differs" : "") + (k === answer.first ? " first" : ""), "data-name": r.name });
+    if (r.follows && r.follows !== following) {
+      const line = element("tr", { class: "follows" });
+      line.appendChild(element("td", { colspan: "3" }, r.follows));
+      table.appendChild(line);
+    }
+    following = r.follows || "";
+    const classes = (r.differs ? "differs" : "") + (k === answer.first ? " first" : "") + (r.follows ? " following" : "") +
+      (r.reference_only ? " reference-only" : "");
+    const row = element("tr", { class: classes.trim(), "data-name": r.name });
     if (k === answer.first) row.title = word("first_difference");
     const what = element("td");
     what.appendChild(element("div", { class: "name" }, r.name));
-    what.appendChild(element("div", { class: "function" }, word("function") + " " + (r.function || word("framework"))));
+    what.appendChild(element("div", { class: "function" }, word("function") + " " + (r.function || (r.reference_only ? word("reference_value") : word("framework")))));
     what.appendChild(element("div", { class: "formula" }, r.formula));
-    what.appendChild(element("div", { class: "handout" }, word("handout") + ": " + r.handout));
+    what.appendChild(element("div", { class: "handout" }, word("handout", { section: r.handout })));
     row.appendChild(what);
-    cell(row, value(r.student), { class: "student" });
+    cell(row, r.reference_only ? word("reference_only") : value(r.student), { class: "student", title: r.follows || "" });
     cell(row, value(r.reference), { class: "reference" });
     table.appendChild(row);
   });

@@ -1,0 +1,39 @@
+// Lab 2's rows of the pixel inspector (grader/inspector/inspector_steps.h): the pixel centre's screen
+// point and the default camera's ray through it, asked of generateRay. The reference's camera is the
+// handout's default frame (u = (-1, 0, 0), v = (0, 1, 0), w = (0, 0, -1)), the screen at distance 1.
+#include "grader/inspector/inspector_steps.h"
+#include "probes.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <numbers>
+
+namespace raylab::grader::inspector {
+
+namespace {
+
+void defaultCamera(PixelContext& pixel, Inspection& inspection) {
+    const SceneDescription& d = pixel.scene;
+    if (d.samples != 1 || d.camera.lookAt || pixel.ray) return; // lab 4's camera, lab 5's samples
+    const double sx = (pixel.x + 0.5) / d.width, sy = (pixel.y + 0.5) / d.height;
+    const glm::dvec3 position(d.camera.position), u(-1., 0., 0.), v(0., 1., 0.), w(0., 0., -1.);
+    const double height = 2. * std::tan(double(d.camera.fovy) / 2. * std::numbers::pi / 180.);
+    const double width = height * d.width / d.height;
+    const glm::dvec3 topLeft = position - w + v * (height / 2.) - u * (width / 2.);
+    const ReferenceRay ray{position, glm::normalize(topLeft + sx * width * u - sy * height * v - position)};
+    std::vector<double> in{double(d.width), double(d.height), double(d.camera.fovy), position.x, position.y, position.z, sx, sy};
+    const int c = inspection.call(probes::generateRay, in);
+    inspection.add({.key = "screen", .lab = 2, .reference = Json::array({sx, sy})});
+    inspection.add({.key = "origin", .function = "PerspectiveCamera::generateRay", .lab = 2, .reference = vec(ray.origin),
+                    .student = values(c, 0, 3), .gives = "ray"});
+    inspection.add({.key = "direction", .function = "PerspectiveCamera::generateRay", .lab = 2, .reference = vec(ray.direction),
+                    .student = values(c, 3, 3), .gives = "ray"});
+    pixel.ray = ray;
+}
+
+} // namespace
+
+RAYLAB_REGISTER_INSPECTOR_STEP(InspectorStage::Ray, defaultCamera);
+
+} // namespace raylab::grader::inspector

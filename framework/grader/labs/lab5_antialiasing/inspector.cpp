@@ -1,0 +1,50 @@
+// Lab 5's rows of the pixel inspector (grader/inspector/inspector_steps.h): the pixel's screen points
+// and their average, asked of renderPixel (with a camera that records the points and an integrator
+// whose colour is the point: the average is the mean point), the reference's from the framework's
+// sampler with the scene's seed, as the figure draws them; then the pixel's colour in both pictures.
+#include "grader/inspector/inspector_steps.h"
+#include "probes.h"
+
+#include "raylab/sampler.h"
+
+#include <algorithm>
+
+namespace raylab::grader::inspector {
+
+namespace {
+
+// The most samples a pixel's inspection lists one by one.
+constexpr int kListedSamples = 8;
+
+void samples(PixelContext& pixel, Inspection& inspection) {
+    const SceneDescription& d = pixel.scene;
+    if (d.samples <= 1 || d.sampler != SamplerKind::Random || d.camera.lookAt || pixel.ray || pixel.coloured) return;
+    const int x = pixel.x, y = pixel.y;
+    PixelSampler sampler(d.sampler, d.samples, d.seed, x, y, d.width);
+    glm::dvec3 mean(0.);
+    std::vector<glm::dvec2> points;
+    for (int k = 0; k < d.samples; ++k) {
+        const glm::vec2 offset = sampler.next2D();
+        points.emplace_back((float(x) + offset.x) / float(d.width), (float(y) + offset.y) / float(d.height));
+        mean += glm::dvec3(points.back(), 1.) / double(d.samples);
+    }
+    const int c = inspection.call(probes::renderPixel, {double(d.width), double(d.height), double(x), double(y), double(d.samples),
+                                                        double(d.seed)});
+    const std::string function = "Renderer::renderPixel";
+    inspection.add({.key = "samples", .function = function, .lab = 5, .reference = d.samples, .student = values(c, 0, 1)});
+    for (int k = 0; k < std::min(d.samples, kListedSamples); ++k)
+        inspection.add({.key = "sample", .function = function, .lab = 5,
+                        .reference = Json::array({points[std::size_t(k)].x, points[std::size_t(k)].y}),
+                        .student = values(c, 4 + 2 * std::size_t(k), 2), .index = k + 1});
+    inspection.add({.key = "average", .function = function, .lab = 5, .reference = vec(mean), .student = values(c, 1, 3)});
+    const Json yours = pixel.picturePixel("student");
+    inspection.add({.key = "picture", .function = function, .lab = 5, .reference = pixel.picturePixel("reference"),
+                    .student = [yours](const Outputs&) { return yours; }});
+    pixel.coloured = true;
+}
+
+} // namespace
+
+RAYLAB_REGISTER_INSPECTOR_STEP(InspectorStage::Ray, samples);
+
+} // namespace raylab::grader::inspector

@@ -1,0 +1,188 @@
+// Lab 6's rows of the pixel inspector (grader/inspector/inspector_steps.h), for a figure drawn by its
+// point light integrator: the nearest hit of the reference's ray, then for each light the shadow ray
+// the reference casts (origin, direction), the light it tests, what it meets on the way (the
+// occluders, the nearest one's t), whether the point is in shadow and Lambert's term; last the
+// pixel's colour in both pictures. The student's values: inShadow asked once for each object of the
+// scene alone (the point is in shadow when one of them hides the light: what the objects their
+// inShadow finds on the way are), and Li asked with the hit object alone, the light alone, no ambient
+// and no shadow test (its Lambert term), both on the reference's hit. The shadow ray itself is the
+// reference's: no function of the lab hands it back.
+#include "grader/inspector/inspector_steps.h"
+#include "probes.h"
+
+#include "src/messages.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+namespace raylab::grader::inspector {
+
+namespace {
+
+// The shadow ray's start, as the handout sets it (shadow acne).
+constexpr double kShadowRayStart = 1e-4;
+
+// An object of the scene: a sphere (radius > 0) or a plane.
+struct Object {
+    bool sphere = true;
+    int index = 0; // among its kind, from 1
+    glm::dvec3 centre{0.}, normal{0.}, colour{0.};
+    double radius = 0.;
+
+    std::string name() const { return tr(sphere ? "watch.lab6.sphere" : "watch.lab6.plane", {{"k", std::to_string(index)}}); }
+    // The t in (tMin, tMax) where the ray meets it first; nullopt when none.
+    std::optional<double> hit(const ReferenceRay& r, double tMin, double tMax) const {
+        if (sphere) {
+            const glm::dvec3 oc = r.origin - centre;
+            const double a = glm::dot(r.direction, r.direction), b = glm::dot(oc, r.direction);
+            const double disc = b * b - a * (glm::dot(oc, oc) - radius * radius);
+            if (disc < 0.) return std::nullopt;
+            for (const double t : {(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a})
+                if (t > tMin && t < tMax) return t;
+            return std::nullopt;
+        }
+        const double facing = glm::dot(r.direction, normal);
+        if (facing == 0.) return std::nullopt;
+        const double t = glm::dot(centre - r.origin, normal) / facing;
+        return t > tMin && t < tMax ? std::optional<double>(t) : std::nullopt;
+    }
+    // The probes' scene of this object alone: sphere (c, r[, colour]), plane (point, normal[, colour]).
+    void append(std::vector<double>& in, bool coloured) const {
+        const auto put = [&](const glm::dvec3& v) { in.insert(in.end(), {v.x, v.y, v.z}); };
+        put(sphere ? centre : glm::dvec3(0.));
+        in.push_back(sphere ? radius : 0.);
+        if (coloured) put(sphere ? colour : glm::dvec3(0.));
+        put(sphere ? glm::dvec3(0.) : centre);
+        put(sphere ? glm::dvec3(0.) : normal);
+        if (coloured) put(sphere ? glm::dvec3(0.) : colour);
+    }
+};
+
+std::vector<Object> objects(const Scene& scene) {
+    std::vector<Object> all;
+    int k = 0;
+    for (const SphereGeometry& s : scene.spheres)
+        all.push_back({true, ++k, glm::dvec3(s.center()), {}, glm::dvec3(s.color()), double(s.radius())});
+    k = 0;
+    for (const Plane& p : scene.planes)
+        all.push_back({false, ++k, glm::dvec3(p.point()), glm::normalize(glm::dvec3(p.normal())), glm::dvec3(p.color())});
+    return all;
+}
+
+// Names joined, or "none".
+std::string named(const std::vector<std::string>& names) {
+    if (names.empty()) return tr("watch.lab6.none");
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text;
+}
+
+void put(std::vector<double>& in, const glm::dvec3& v) { in.insert(in.end(), {v.x, v.y, v.z}); }
+
+void shadows(PixelContext& pixel, Inspection& inspection) {
+    const SceneDescription& d = pixel.scene;
+    const bool withShadows = d.shading == "point_light";
+    if (!pixel.ray || pixel.coloured || !(withShadows || d.shading == "point_light_no_shadows")) return;
+    const ReferenceRay& ray = *pixel.ray;
+    const std::vector<Object> scene = objects(d.scene);
+    // The nearest hit (the primary rays' t from 0).
+    const Object* nearest = nullptr;
+    double t = std::numeric_limits<double>::infinity();
+    for (const Object& o : scene)
+        if (const std::optional<double> at = o.hit(ray, 0., t)) {
+            t = *at;
+            nearest = &o;
+        }
+    inspection.add({.key = "lab6_hit", .lab = 6, .reference = nearest ? nearest->name() : tr("watch.lab6.none"),
+                    .referenceOnly = true, .takes = {"ray"}});
+    if (nearest == nullptr) {
+        pixel.coloured = true;
+        return;
+    }
+    const glm::dvec3 position = ray.origin + t * ray.direction;
+    glm::dvec3 n = nearest->sphere ? (position - nearest->centre) / nearest->radius : nearest->normal;
+    if (glm::dot(n, ray.direction) > 0.) n = -n; // the side the ray sees
+    inspection.add({.key = "t", .lab = 3, .reference = t, .referenceOnly = true, .takes = {"ray"}});
+    inspection.add({.key = "position", .lab = 3, .reference = vec(position), .referenceOnly = true, .takes = {"ray"}});
+    inspection.add({.key = "lab6_normal", .lab = 6, .reference = vec(n), .referenceOnly = true, .takes = {"ray"}});
+    const std::string liFunction = "PointLightIntegrator::Li";
+    int k = 0;
+    for (const PointLight& light : d.scene.lights) {
+        ++k;
+        const glm::dvec3 lightPosition(light.position), intensity(light.intensity);
+        const glm::dvec3 toLight = lightPosition - position;
+        const double distance = glm::length(toLight);
+        const glm::dvec3 l = toLight / distance;
+        inspection.add({.key = "lab6_light", .lab = 6, .reference = vec(lightPosition), .index = k});
+        if (withShadows) {
+            const ReferenceRay shadowRay{position, l};
+            inspection.add({.key = "shadow_origin", .lab = 6, .reference = vec(position), .index = k, .referenceOnly = true,
+                            .takes = {"ray"}});
+            inspection.add({.key = "shadow_direction", .lab = 6, .reference = vec(l), .index = k, .referenceOnly = true,
+                            .takes = {"ray"}});
+            std::vector<std::string> hiding, names;
+            std::optional<double> nearestOccluder;
+            std::vector<int> calls;
+            for (const Object& o : scene) {
+                names.push_back(o.name());
+                if (const std::optional<double> at = o.hit(shadowRay, kShadowRayStart, distance)) {
+                    hiding.push_back(o.name());
+                    if (!nearestOccluder || *at < *nearestOccluder) nearestOccluder = *at;
+                }
+                std::vector<double> in;
+                o.append(in, false);
+                put(in, position);
+                put(in, lightPosition);
+                calls.push_back(inspection.call(probes::inShadow, in));
+            }
+            // The objects the student's inShadow finds between the point and the light, each alone.
+            const auto theirs = [calls, names](const Outputs& outputs) -> Json {
+                std::vector<std::string> found;
+                for (std::size_t c = 0; c < calls.size(); ++c) {
+                    const Json answer = values(calls[c], 0, 0)(outputs);
+                    if (answer.is_null()) return {};
+                    if (answer == true) found.push_back(names[c]);
+                }
+                return named(found);
+            };
+            inspection.add({.key = "occluders", .function = "inShadow", .lab = 6, .reference = named(hiding), .student = theirs,
+                            .index = k, .takes = {"ray"}});
+            if (nearestOccluder)
+                inspection.add({.key = "occluder_t", .lab = 6, .reference = *nearestOccluder, .index = k, .referenceOnly = true,
+                                .takes = {"ray"}});
+            const std::string none = named({});
+            inspection.add({.key = "in_shadow", .function = "inShadow", .lab = 6, .reference = !hiding.empty(),
+                            .student = [theirs, none](const Outputs& outputs) -> Json {
+                                const Json found = theirs(outputs);
+                                return found.is_null() ? Json() : Json(found != none);
+                            },
+                            .index = k, .takes = {"ray"}});
+        }
+        // Lambert's term of this light alone: colour / pi * I * max(n . l, 0) / r^2.
+        const glm::dvec3 lambert = nearest->colour * std::numbers::inv_pi * intensity * (std::max(glm::dot(n, l), 0.) / (distance * distance));
+        std::vector<double> in{0., 0.}; // no ambient, no shadow test
+        nearest->append(in, true);
+        put(in, lightPosition);
+        put(in, intensity);
+        put(in, glm::dvec3(d.scene.background));
+        put(in, ray.origin);
+        put(in, ray.direction);
+        inspection.add({.key = "lambert", .function = liFunction, .lab = 6, .reference = vec(lambert),
+                        .student = values(inspection.call(probes::pointLightLi, in), 0, 3), .index = k, .takes = {"ray"}});
+    }
+    const Json yours = pixel.picturePixel("student");
+    inspection.add({.key = "picture", .function = liFunction, .lab = 6, .reference = pixel.picturePixel("reference"),
+                    .student = [yours](const Outputs&) { return yours; }});
+    pixel.coloured = true;
+}
+
+} // namespace
+
+RAYLAB_REGISTER_INSPECTOR_STEP(InspectorStage::Path, shadows);
+
+} // namespace raylab::grader::inspector
