@@ -33,7 +33,7 @@ function showHeader() {
   $("title").textContent = word("title", { lab: state.lab });
   $("phase").textContent = word(state.phase);
   $("phase").className = "phase " + (state.phase === "build_failed" ? "fail" : state.phase === "ready" ? "pass" : "");
-  $("changed").textContent = state.changed && state.changed.length ? word("changed") + ": " + state.changed.join(", ") : "";
+  $("changed").textContent = state.changed && state.changed.length ? word("changed", { files: state.changed.join(", ") }) : "";
   const seconds = state.seconds || {};
   $("seconds").textContent = word("seconds", { build: (seconds.build || 0).toFixed(1), grade: (seconds.grade || 0).toFixed(1) });
   $("keys").textContent = word("keys");
@@ -100,7 +100,7 @@ function showFigures() {
     const mine = flipped ? f.reference : f.student;
     pictures.appendChild(figurePicture(f, "yours", mine, flipped ? word("reference") + " (F)" : word("yours")));
     pictures.appendChild(figurePicture(f, "reference", f.reference, word("reference")));
-    pictures.appendChild(figurePicture(f, "difference", f.difference, word("difference") + ": " + f.scale));
+    pictures.appendChild(figurePicture(f, "difference", f.difference, word("difference", { scale: f.scale })));
     block.appendChild(pictures);
     block.appendChild(element("pre", { class: "reason" }, f.reason + (f.diagnosis ? "\n" + f.diagnosis : "")));
     main.appendChild(block);
@@ -158,7 +158,7 @@ async function inspect(figure, x, y) {
     what.appendChild(element("div", { class: "name" }, r.name));
     what.appendChild(element("div", { class: "function" }, word("function") + " " + (r.function || word("framework"))));
     what.appendChild(element("div", { class: "formula" }, r.formula));
-    what.appendChild(element("div", { class: "handout" }, word("handout") + ": " + r.handout));
+    what.appendChild(element("div", { class: "handout" }, word("handout", { section: r.handout })));
     row.appendChild(what);
     cell(row, value(r.student), { class: "student" });
     cell(row, value(r.reference), { class: "reference" });
