@@ -5,6 +5,14 @@
 # missing and the command that installs it on this machine.
 set -euo pipefail
 
+# What it prints is in the reader's language, as raylab's own (framework/src/messages.cpp): French
+# when LC_ALL, else LC_MESSAGES, else LANG (the first one set) is fr, fr_* or fr.*, English otherwise.
+# French puts a no-break space (U+00A0, as framework/messages/fr.toml does) before : ; ? !
+case "${LC_ALL:-${LC_MESSAGES:-${LANG:-}}}" in fr | fr_* | fr.*) french=1 ;; *) french=0 ;; esac
+nb=$'\xc2\xa0'
+# say ENGLISH FRENCH: the line in the reader's language.
+say() { if ((french)); then printf '%s\n' "$2"; else printf '%s\n' "$1"; fi; }
+
 # The build: the compiler and tools, the libraries (cpp-httplib: raylab watch's page), the grader's
 # sandbox (bubblewrap, and libseccomp for its fallback where bubblewrap cannot start) and ccache (the
 # students of a class build the framework's files once).
@@ -36,17 +44,26 @@ declare -A tools=([c++]=g++ [cmake]=cmake [make]=make [patch]=patch [pkg-config]
 case "${1:-}" in
   --tests) packages+=("${test_packages[@]}") ;;
   "") ;;
-  *) echo "usage: scripts/setup.sh [--tests]" >&2; exit 2 ;;
+  *) say "usage: scripts/setup.sh [--tests]" "usage${nb}: scripts/setup.sh [--tests]" >&2; exit 2 ;;
 esac
 top=$(cd "$(dirname "$0")/.." && pwd)
 
 if ! command -v dpkg-query >/dev/null 2>&1; then
-  cat <<'TXT'
+  if ((french)); then
+    cat <<TXT
+setup.sh n'installe des paquets que sous Debian et Ubuntu. Ailleurs, installez${nb}:
+  macOS (Homebrew)${nb}: xcode-select --install; brew install cmake glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip cmark yaml-cpp cpp-httplib
+  Windows (vcpkg)${nb}:  Visual Studio 2022 avec «${nb}Développement Desktop en C++${nb}», puis les bibliothèques de vcpkg.json
+puis lancez les commandes cmake du README.md (LISEZMOI.md en français).
+TXT
+  else
+    cat <<'TXT'
 setup.sh installs packages on Debian and Ubuntu only. Elsewhere, install:
   macOS (Homebrew): xcode-select --install; brew install cmake glm stb zlib doctest tomlplusplus cli11 nlohmann-json libzip cmark yaml-cpp cpp-httplib
   Windows (vcpkg):  Visual Studio 2022 with "Desktop development with C++", then the libraries of vcpkg.json
 then run the cmake commands of README.md.
 TXT
+  fi
   exit 0
 fi
 
@@ -76,7 +93,7 @@ run_as_root() {
 missing=()
 for p in "${packages[@]}"; do installed "$p" || missing+=("$p"); done
 if ((${#missing[@]})); then
-  echo "setup: updating the package lists"
+  say "setup: updating the package lists" "setup${nb}: mise à jour des listes de paquets"
   run_as_root apt-get update -qq
   available=()
   for p in "${missing[@]}"; do
@@ -85,13 +102,15 @@ if ((${#missing[@]})); then
     if in_archive "$p"; then
       available+=("$p")
     elif [ -n "${third_party[$p]:-}" ] && [ -e "$top/third_party/${third_party[$p]}" ]; then
-      echo "setup: $p is not in this system's archive: raylab takes it from third_party/${third_party[$p]}"
+      say "setup: $p is not in this system's archive: raylab takes it from third_party/${third_party[$p]}" \
+          "setup${nb}: $p n'est pas dans l'archive de ce système${nb}: raylab le prend dans third_party/${third_party[$p]}"
     elif [ -n "${optional[$p]:-}" ]; then
-      echo "setup: $p is not in this system's archive: the tests that need it will be skipped"
+      say "setup: $p is not in this system's archive: the tests that need it will be skipped" \
+          "setup${nb}: $p n'est pas dans l'archive de ce système${nb}: les tests qui en ont besoin seront ignorés"
     fi
   done
   if ((${#available[@]})); then
-    echo "setup: installing ${available[*]}"
+    say "setup: installing ${available[*]}" "setup${nb}: installation de ${available[*]}"
     run_as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${available[@]}"
   fi
 fi
@@ -108,28 +127,35 @@ for tool in "${!tools[@]}"; do
   command -v "$tool" >/dev/null 2>&1 || [[ " ${still[*]} " == *" ${tools[$tool]} "* ]] || still+=("${tools[$tool]}")
 done
 if ((${#still[@]})); then
-  echo "setup: still missing: ${still[*]}" >&2
+  say "setup: still missing: ${still[*]}" "setup${nb}: il manque encore${nb}: ${still[*]}" >&2
   installable=()
   for p in "${still[@]}"; do
     if in_archive "$p"; then
       installable+=("$p")
     elif [ -n "${sources[$p]:-}" ]; then # header-only (Ubuntu 22.04's toml++): its include/ in third_party/
-      echo "setup: $p is in no archive of this system: put its headers in $top/third_party/${third_party[$p]}/include/" \
-           "(git clone --depth 1 ${sources[$p]} $top/third_party/${third_party[$p]}), or use a newer release" >&2
+      say "setup: $p is in no archive of this system: put its headers in $top/third_party/${third_party[$p]}/include/ (git clone --depth 1 ${sources[$p]} $top/third_party/${third_party[$p]}), or use a newer release" \
+          "setup${nb}: $p n'est dans aucune archive de ce système${nb}: mettez ses en-têtes dans $top/third_party/${third_party[$p]}/include/ (git clone --depth 1 ${sources[$p]} $top/third_party/${third_party[$p]}), ou utilisez une version plus récente du système" >&2
     else
-      echo "setup: $p is in no archive of this system: use a newer release of it" >&2
+      say "setup: $p is in no archive of this system: use a newer release of it" \
+          "setup${nb}: $p n'est dans aucune archive de ce système${nb}: utilisez une version plus récente du système" >&2
     fi
   done
-  if ((${#installable[@]})); then echo "setup: install them with: $(install_command "${installable[@]}")" >&2; fi
+  if ((${#installable[@]})); then
+    say "setup: install them with: $(install_command "${installable[@]}")" \
+        "setup${nb}: installez-les avec${nb}: $(install_command "${installable[@]}")" >&2
+  fi
   exit 1
 fi
 # CMake: the distribution's may be older than the presets (Ubuntu 22.04: 3.22).
 cmake_version=$(cmake --version | sed -n '1s/^cmake version \([0-9]*\.[0-9]*\).*/\1/p')
 if [ "$(printf '%s\n' "$cmake_needed" "$cmake_version" | sort -V | head -n 1)" != "$cmake_needed" ]; then
-  echo "setup: cmake is $cmake_version here; README.md's workflow presets need $cmake_needed or newer. Install a newer" \
-       "one (Ubuntu: $(root_command snap install cmake --classic)), or build without the" \
-       "presets:" \
-       "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build --target figures" >&2
+  say "setup: cmake is $cmake_version here; README.md's workflow presets need $cmake_needed or newer. Install a newer one (Ubuntu: $(root_command snap install cmake --classic)), or build without the presets: cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build --target figures" \
+      "setup${nb}: cmake est ici en version $cmake_version${nb}; les presets de workflow (cmake --workflow) demandent $cmake_needed ou plus récent. Installez-en un plus récent (Ubuntu${nb}: $(root_command snap install cmake --classic)), ou compilez sans les presets${nb}: cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build --target figures" >&2
   exit 1
 fi
-echo "setup: done, everything raylab needs${1:+ and its tests need} is installed"
+if [ -n "${1:-}" ]; then
+  say "setup: done, everything raylab needs and its tests need is installed" \
+      "setup${nb}: terminé, tout ce dont raylab et ses tests ont besoin est installé"
+else
+  say "setup: done, everything raylab needs is installed" "setup${nb}: terminé, tout ce dont raylab a besoin est installé"
+fi

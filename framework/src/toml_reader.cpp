@@ -22,7 +22,7 @@ void TomlReader::fail(const toml::node* node, std::string_view key, const std::s
     const auto line = node != nullptr ? node->source().begin.line : 0;
     std::string message = m_file.string();
     if (line > 0) message += ":" + std::to_string(line);
-    throw TomlError(message + ": " + std::string(key) + ": " + problem);
+    throw TomlError(message + ": " + tr("toml.key_problem", {{"key", std::string(key)}, {"problem", problem}}));
 }
 
 void TomlReader::missing(const toml::table& table, std::string_view where, std::string_view key) const {

@@ -38,6 +38,11 @@ std::set<fs::path> pendingLinks() {
     return pending;
 }
 
+// The files `raylab distribute` writes at the top of the students' tree, where the handouts are read:
+// a link there resolves in that tree (framework/cli/students_readme.cpp; the test "distribute readme"
+// checks their own links). The French handouts link LISEZMOI.md, the students' French README.
+const std::set<fs::path> kWrittenByDistribute{"LISEZMOI.md"};
+
 std::string readFile(const fs::path& file) {
     std::ifstream in(file);
     std::ostringstream text;
@@ -115,6 +120,7 @@ TEST_SUITE("docs links") {
         int broken = 0;
         for (const fs::path& file : files)
             for (const BrokenLink& b : brokenLinks(kRoot, file)) {
+                if (kWrittenByDistribute.count(b.resolved) != 0) continue;
                 if (pending.count(b.resolved) != 0) {
                     MESSAGE(b.file.string() << ":" << b.line << ": " << b.target
                                             << " is not there yet (accepted: tests/docs/pending_links.txt)");

@@ -123,6 +123,16 @@ TEST_CASE("the students' README and LISEZMOI: their tree, their commands, no sol
     }
     CHECK(readFile(tree / "README.md").find("[LISEZMOI.md](LISEZMOI.md)") != std::string::npos);
     CHECK(readFile(tree / "LISEZMOI.md").find("[docs/glossaire.md](docs/glossaire.md)") != std::string::npos);
+    // The French pages a student reads are in the tree, and LISEZMOI.md links them; each French
+    // handout's "tous les TP" leads to LISEZMOI.md's table of the labs ("## Les TP": #les-tp).
+    for (const char* page : {"docs/grading.fr.md", "docs/conventions.fr.md", "docs/glossaire.md"}) {
+        CHECK_MESSAGE(fs::is_regular_file(tree / page), page);
+        CHECK_MESSAGE(readFile(tree / "LISEZMOI.md").find(std::string("](") + page + ")") != std::string::npos, page);
+    }
+    CHECK(readFile(tree / "LISEZMOI.md").find("\n## Les TP\n") != std::string::npos);
+    for (const raylab::grader::LabDescription& lab : raylab::grader::loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs").labs)
+        CHECK_MESSAGE(readFile(tree / "labs" / lab.id / "README.fr.md").find("](../../LISEZMOI.md#les-tp)") != std::string::npos,
+                      lab.id << ": its French handout links LISEZMOI.md#les-tp");
     fs::remove_all(tree);
     fs::remove(output);
 }

@@ -3,6 +3,19 @@
 # `build` (the tree's folder and its build folder) before it copies or configures a tree. Programs
 # run from an argument vector (execute_process), never through a shell.
 
+# The steps check raylab's English: what they run speaks English whatever the locale of the one who
+# runs the suite, as tests/support/doctest_main.cpp makes the test programs do (LC_ALL and LC_MESSAGES
+# unset, LANG=C), the locale's character set kept in LC_CTYPE. A step of French asks --lang fr.
+foreach(variable LC_ALL LC_CTYPE LANG)
+  if(NOT "$ENV{${variable}}" STREQUAL "")
+    set(ENV{LC_CTYPE} "$ENV{${variable}}")
+    break()
+  endif()
+endforeach()
+unset(ENV{LC_ALL})
+unset(ENV{LC_MESSAGES})
+set(ENV{LANG} C)
+
 # run(NAME EXPECTED_STATUS COMMAND...): runs COMMAND in WORK, fails unless it exits with
 # EXPECTED_STATUS ("nonzero" for any failure); its output is in the variable NAME.
 function(run name expected)

@@ -1,6 +1,7 @@
 #include "raylab/integrator_registry.h"
 #include "support/scene_files.h"
 #include "grader/lab_catalog.h"
+#include "src/messages.h"
 #include "src/scene_file.h"
 
 #include <doctest/doctest.h>
@@ -146,6 +147,12 @@ TEST_CASE("errors name the file, the line and the key") {
     CHECK(errorOf("[image\nwidth = 3\n").rfind("scene.toml:1:7: not valid TOML: ", 0) == 0);
     CHECK(errorOf("colour = 3\n") ==
           "scene.toml:1: colour: unknown key (known keys: figure, image, camera, render, shading, background, sphere, plane, light)");
+    // In French, with its no-break space before the colon after the key as before the known keys.
+    const raylab::Language before = raylab::language();
+    raylab::setLanguage(raylab::Language::Fr);
+    CHECK(errorOf("[camera]\nfovy = 60\nzoom = 2\n") ==
+          "scene.toml:3: [camera] zoom\u00A0: clé inconnue (clés connues\u00A0: position, look_at, up, fovy)");
+    raylab::setLanguage(before);
 }
 
 TEST_CASE("every number is checked against the bounds the float numerics justify, naming the file, line and key") {

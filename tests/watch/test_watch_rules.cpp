@@ -315,17 +315,25 @@ TEST_CASE("the state: at once without a version, when a newer one is published w
     CHECK(waited == std::pair{200, std::string(R"({"version":2,"phase":"building"})")});
 }
 
-TEST_CASE("a port already taken is said, naming it") {
+TEST_CASE("a port already taken is said, naming it, in the language chosen (not the test's locale)") {
     Served first(freshFolder("watch-port"));
     raylab::watch::PageState page;
     raylab::watch::WatchServer second(page, freshFolder("watch-port2"), "t", nullptr);
-    std::string said;
-    try {
-        second.bind(first.port);
-    } catch (const std::runtime_error& e) {
-        said = e.what();
-    }
-    CHECK(said.find("cannot listen on 127.0.0.1:" + std::to_string(first.port)) != std::string::npos);
+    const raylab::Language before = raylab::language();
+    const auto said = [&](raylab::Language language) {
+        raylab::setLanguage(language);
+        std::string what;
+        try {
+            second.bind(first.port);
+        } catch (const std::runtime_error& e) {
+            what = e.what();
+        }
+        return what;
+    };
+    const std::string address = "127.0.0.1:" + std::to_string(first.port);
+    CHECK(said(raylab::Language::En).find("cannot listen on " + address) != std::string::npos);
+    CHECK(said(raylab::Language::Fr).find("impossible d'écouter sur " + address) != std::string::npos);
+    raylab::setLanguage(before);
 }
 
 } // TEST_SUITE
