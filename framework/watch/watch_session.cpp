@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cstdio>
 
 namespace raylab::watch {
@@ -72,12 +73,11 @@ WatchSession::WatchSession(WatchSettings settings, PageState& page, std::mutex& 
     : m_settings(std::move(settings)), m_page(page), m_agents(agents) {}
 
 std::string WatchSession::buildAgent() {
-    // The lab's own agent (the other labs from the reference) where solutions/ is, else the one agent
-    // of all the labs (the students' tree); the whole set the first time, when none is built yet.
-    bool isolated = false;
-    const std::vector<grader::AgentPlan> agents = grader::findAgents(m_settings.binDir, {m_settings.lab}, isolated);
-    std::string target = "raylab-agents";
-    if (!agents.empty()) target = agents.front().program.stem().string();
+    // The lab's own agent (the other labs from the reference where solutions/ is, else the labs it uses
+    // from the student's code and the others' stubs); the whole set the first time, when none is built
+    // yet. One build at a time in the folder: `raylab grade` beside the page waits, or this waits for it.
+    const std::string target = grader::labAgentTarget(m_settings.binDir, m_settings.lab);
+    const std::unique_ptr<FileLock> building = grader::lockBuildFolder(m_settings.buildDir);
     grader::ProcessOptions options;
     options.keepOutput = 64 * 1024;
     const grader::ProcessResult built = grader::runProcess(
