@@ -7,7 +7,11 @@
 // show their name visibly and once, and name the rows that match nothing. The CSV files read the
 // same in Python's csv with ',' and with ';' (no cell a formula either way), and in LibreOffice
 // where it is installed. The students are graded by prebuilt agents (--agent): nothing is compiled.
+#include "grader/class_page/class_page.h"
+#include "grader/class_page/gradebook.h"
+#include "grader/class_page/similarity.h"
 #include "grader/course/class_run.h"
+#include "grader/judge/diagnosis.h"
 #include "grader/lab_catalog.h"
 #include "grading_support.h"
 #include "src/markup.h"
@@ -23,6 +27,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <regex>
 #include <string>
 #include <vector>
@@ -345,6 +350,74 @@ TEST_CASE("a roster joins its rows on the folder's bytes, never on a name shown 
         const std::string text = readFile(graded.out / file);
         CHECK_MESSAGE(unseen(text).empty(), unseen(text));
     }
+}
+
+TEST_CASE("the class page's every table, the mistakes' who cell and a side-by-side page's title show bidi controls "
+          "visibly, even from results that hold them raw (written before names were made so)") {
+    const fs::path out = freshFolder("raylab-class-names-page" + sandboxShown());
+    const int lab = firstLab().number;
+    const std::vector<std::string> raw{"\xE2\x80\xAEgnissim", "b\xE2\x81\xA6x\xE2\x80\x8F"};
+    for (const std::string& name : raw) {
+        const fs::path folder = out / "students" / raylab::grader::safeStudentName(name);
+        fs::create_directories(folder);
+        raylab::grader::StudentOutcome outcome;
+        outcome.labs = {{lab, 1., 2., true}};
+        outcome.items = {{true, lab, "a_figure", false, true, {"a_mistake"}}};
+        outcome.problems = {"error: \xE2\x80\xAEreversed"};
+        raylab::grader::writeStudentOutcome(outcome, folder / "outcome.json");
+        std::ofstream(folder / "result.json") << nlohmann::json{{"student", name}, {"cells", nlohmann::json::array()}}.dump();
+    }
+    const raylab::grader::ClassResults results = raylab::grader::loadClassResults(out);
+    REQUIRE(results.students.size() == 2);
+    std::vector<raylab::grader::Mistake> mistakes(1);
+    mistakes[0].id = "a_mistake";
+    mistakes[0].nameEn = mistakes[0].nameFr = "a mistake";
+    mistakes[0].lab = lab;
+    raylab::grader::SimilarityReport similarity;
+    raylab::grader::LabSimilarity alike;
+    alike.lab = lab;
+    alike.students = {results.students[0].student, results.students[1].student};
+    alike.texts = {"int a;\n", "int a;\n"};
+    alike.leftOut = {{false}, {false}};
+    alike.pairs = {{0, 1, 90, true, {{1, 1, 1, 1, 3}}}};
+    alike.median = 10.;
+    alike.fence = 50.;
+    alike.comparedPairs = 1;
+    similarity.labs.push_back(alike);
+    const raylab::grader::GradebookFiles gradebook = raylab::grader::writeGradebooks(results, {}, out);
+    const raylab::grader::LabCatalog catalog = raylab::grader::loadLabCatalog(sourceDir() / "labs");
+    raylab::grader::writeClassPage({results, catalog, mistakes, similarity, gradebook}, out);
+
+    const std::string page = readFile(out / "index.html"), pair = readFile(out / "similarity" / ("lab" + std::to_string(lab) + "-1.html"));
+    REQUIRE(!pair.empty());
+    for (const std::string* text : {&page, &pair}) CHECK_MESSAGE(unseen(*text, "\n\t").empty(), unseen(*text, "\n\t"));
+    const std::size_t who = page.find("data-mistake=\"a_mistake\"");
+    REQUIRE(who != std::string::npos);
+    const std::string row = page.substr(who, page.find("</tr>", who) - who);
+    CHECK(row.find(">\\xE2\\x80\\xAEgnissim</a>") != std::string::npos);
+    CHECK(row.find(">b\\xE2\\x81\\xA6x\\xE2\\x80\\x8F</a>") != std::string::npos);
+    const std::size_t title = pair.find("<title>");
+    REQUIRE(title != std::string::npos);
+    CHECK(pair.substr(title, pair.find("</title>") - title).find("\\xE2\\x80\\xAEgnissim") != std::string::npos);
+    CHECK(page.find("\\xE2\\x80\\xAEreversed") != std::string::npos); // a problem's text too
+    for (const char* file : {"gradebook-moodle.csv", "gradebook-canvas.csv"}) {
+        const std::string text = readFile(out / file);
+        CHECK_MESSAGE(unseen(text).empty(), unseen(text));
+    }
+}
+
+TEST_CASE("a safe name gives back the folder's bytes it was made from, but for a cut one") {
+    for (const Name& n : names()) {
+        CAPTURE(n.shown);
+        const std::string safe = raylab::grader::safeStudentName(n.folder);
+        const std::optional<std::string> folder = raylab::grader::studentFolderName(safe);
+        if (safe.find('~') == std::string::npos) CHECK(folder == n.folder);
+        else CHECK_FALSE(folder);
+    }
+    CHECK_FALSE(raylab::grader::studentFolderName(repeated("%E9", 255).substr(0, 143) + "~0123456789ABCDEF"));
+    CHECK_FALSE(raylab::grader::studentFolderName("%4")); // no safe name
+    CHECK_FALSE(raylab::grader::studentFolderName("%41")); // 'A' is kept: the safe name of A is A
+    CHECK_FALSE(raylab::grader::studentFolderName(""));
 }
 
 } // TEST_SUITE
