@@ -36,7 +36,9 @@ void remakeClassPage(const fs::path& out, const std::vector<RosterEntry>& roster
     writeClassPage({results, labs, mistakes, similarity, gradebook}, out);
     for (const std::string& p : results.problems) std::printf("%s\n", printableText(p).c_str());
     if (!similarity.note.empty()) std::printf("%s\n", similarity.note.c_str());
-    for (const auto& [names, id] : {std::pair{&gradebook.unknown, "class_page.roster_unknown"}, {&gradebook.missing, "class_page.roster_missing"}})
+    for (const auto& [names, id] : {std::pair{&gradebook.unknown, "class_page.roster_unknown"},
+                                    {&gradebook.missing, "class_page.roster_missing"},
+                                    {&gradebook.unreadable, "class_page.gradebook_unreadable"}})
         if (!names->empty()) {
             std::string joined;
             for (const std::string& n : *names) joined += " " + n;

@@ -13,14 +13,32 @@ bool isPlainNumber(const std::string& cell) {
     return std::regex_match(cell, number);
 }
 
+// `cell` with a ' before each part a spreadsheet would run as a formula. A part starts at the cell's
+// start and after each separator a spreadsheet may split at (',', ';', a tab) or a line break, for
+// one that splits inside quotes or ignores them; its quotes and spaces there are skipped (a reader
+// that drops the quotes, or trims the spaces, starts it at what follows). It is run when it starts
+// with = + - @, a tab or a carriage return and is not a plain number (up to the next separator).
 std::string defused(const std::string& cell) {
-    if (cell.empty() || cell.find_first_of("=+-@\t\r") != 0 || isPlainNumber(cell)) return cell;
-    return "'" + cell;
+    static const std::string separators = ",;\t\r\n", triggers = "=+-@\t\r";
+    std::string out;
+    bool start = true;
+    for (std::size_t at = 0; at < cell.size(); ++at) {
+        const char c = cell[at];
+        if (start && triggers.find(c) != std::string::npos) {
+            const std::size_t end = cell.find_first_of(separators, at + 1);
+            if (!isPlainNumber(cell.substr(at, end == std::string::npos ? std::string::npos : end - at))) out += '\'';
+        }
+        out += c;
+        if (separators.find(c) != std::string::npos) start = true;
+        else if (c != '"' && c != ' ') start = false;
+    }
+    return out;
 }
 
+// Quoted when it holds a separator of any spreadsheet's (',', ';', a tab), a quote or a line break.
 std::string csvCell(const std::string& raw) {
     const std::string cell = defused(raw);
-    if (cell.find_first_of(",\"\r\n") == std::string::npos) return cell;
+    if (cell.find_first_of(",;\t\"\r\n") == std::string::npos) return cell;
     std::string quoted = "\"";
     for (char c : cell) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
     return quoted + "\"";

@@ -46,6 +46,32 @@ bool isControlOrNonCharacter(std::string_view c) {
     return c.size() == 3 && byte(0) == 0xEF && byte(1) == 0xBF && byte(2) >= 0xBE;
 }
 
+// The code point of a well-formed UTF-8 character.
+char32_t codePoint(std::string_view c) {
+    const auto byte = [&](std::size_t k) { return char32_t(static_cast<unsigned char>(c[k])); };
+    if (c.size() == 1) return byte(0);
+    if (c.size() == 2) return (byte(0) & 0x1F) << 6 | (byte(1) & 0x3F);
+    if (c.size() == 3) return (byte(0) & 0x0F) << 12 | (byte(1) & 0x3F) << 6 | (byte(2) & 0x3F);
+    return (byte(0) & 0x07) << 18 | (byte(1) & 0x3F) << 12 | (byte(2) & 0x3F) << 6 | (byte(3) & 0x3F);
+}
+
+// What shows as nothing, or moves the text around it: Unicode's format characters (category Cf: the
+// bidi embeddings, overrides and isolates, LRM, RLM, ALM, zero-width spaces and joiners, the word
+// joiner, the byte order mark, the tags...), its default-ignorable code points (variation selectors,
+// Hangul fillers, the combining grapheme joiner...) and the line and paragraph separators U+2028 and
+// U+2029. A name made of U+202E and "gnissim" would print as "missing", and reverse what follows it.
+bool isInvisible(char32_t c) {
+    static constexpr char32_t kRanges[][2] = {
+        {0xAD, 0xAD},       {0x34F, 0x34F},     {0x600, 0x605},     {0x61C, 0x61C},     {0x6DD, 0x6DD},
+        {0x70F, 0x70F},     {0x890, 0x891},     {0x8E2, 0x8E2},     {0x115F, 0x1160},   {0x17B4, 0x17B5},
+        {0x180B, 0x180F},   {0x200B, 0x200F},   {0x2028, 0x202E},   {0x2060, 0x206F},   {0x3164, 0x3164},
+        {0xFE00, 0xFE0F},   {0xFEFF, 0xFEFF},   {0xFFA0, 0xFFA0},   {0xFFF0, 0xFFFB},   {0x110BD, 0x110BD},
+        {0x110CD, 0x110CD}, {0x13430, 0x1343F}, {0x1BCA0, 0x1BCA3}, {0x1D173, 0x1D17A}, {0xE0000, 0xE0FFF}};
+    for (const auto& range : kRanges)
+        if (c >= range[0] && c <= range[1]) return true;
+    return false;
+}
+
 void appendHex(std::string& out, std::string_view bytes) {
     for (const char b : bytes) {
         char hex[5];
@@ -69,7 +95,7 @@ std::string printableText(std::string_view text, TextForm form) {
         else if (form == TextForm::Name && first == '\t') out += "\\t";
         else if (form == TextForm::Name && first == '\r') out += "\\r";
         else if (form == TextForm::Name && first == '\\') out += "\\\\";
-        else if (length == 0 || isControlOrNonCharacter(c)) appendHex(out, c);
+        else if (length == 0 || isControlOrNonCharacter(c) || isInvisible(codePoint(c))) appendHex(out, c);
         else out += c;
     }
     return out;

@@ -19,9 +19,12 @@ enum class TextForm {
 };
 
 // `text` as well-formed UTF-8 that no terminal, XML parser or spreadsheet misreads: each byte that
-// is not part of a well-formed UTF-8 character, each control character (C0, DEL, C1) and the
-// non-characters U+FFFE and U+FFFF are written \xHH, byte by byte; so two names that differ in
-// their bytes never print alike, as they would with U+FFFD.
+// is not part of a well-formed UTF-8 character, each control character (C0, DEL, C1), the
+// non-characters U+FFFE and U+FFFF, and each character that shows as nothing or reorders the text
+// around it (the bidi controls U+202A to U+202E and U+2066 to U+2069, LRM, RLM, ALM, the zero-width
+// characters, every other format character and default-ignorable code point, U+2028 and U+2029)
+// are written \xHH, byte by byte: U+202E is \xE2\x80\xAE. So two names that differ in their bytes
+// never print alike, as they would with U+FFFD, and no name reverses the text after it.
 std::string printableText(std::string_view text, TextForm form = TextForm::Message);
 
 // A name (a student's folder, a file of a submission) as the console, grades.csv and the reports

@@ -84,6 +84,27 @@ TEST_CASE("printable names: one line of UTF-8, control characters and bytes that
         CHECK_MESSAGE(shown.insert(printableName(name)).second, printableName(name));
 }
 
+TEST_CASE("printable names and messages: bidi controls and invisible characters shown as their bytes, so no name reverses "
+          "the text after it or prints like another") {
+    CHECK(printableName("\xE2\x80\xAEgnissim") == "\\xE2\\x80\\xAEgnissim"); // U+202E, would show "missing"
+    for (const char* c : {"\xE2\x80\xAA", "\xE2\x80\xAB", "\xE2\x80\xAC", "\xE2\x80\xAD", "\xE2\x81\xA6", "\xE2\x81\xA7",
+                          "\xE2\x81\xA8", "\xE2\x81\xA9", "\xE2\x80\x8E", "\xE2\x80\x8F", "\xD8\x9C", "\xE2\x80\x8B",
+                          "\xE2\x80\x8C", "\xE2\x80\x8D", "\xE2\x81\xA0", "\xEF\xBB\xBF", "\xC2\xAD", "\xE2\x80\xA8",
+                          "\xE2\x80\xA9", "\xEF\xB8\x8F", "\xF3\xA0\x80\x81", "\xE3\x85\xA4"}) {
+        const std::string text = std::string("a") + c + "b";
+        CAPTURE(printableName(text));
+        std::string bytes;
+        for (const char b : std::string(c)) {
+            char hex[5];
+            std::snprintf(hex, sizeof hex, "\\x%02X", static_cast<unsigned char>(b));
+            bytes += hex;
+        }
+        CHECK(printableName(text) == "a" + bytes + "b");
+        CHECK(raylab::printableText(text) == "a" + bytes + "b");
+    }
+    CHECK(printableName("visible: é ü 名前 ا 😀 \xE2\x80\x94") == "visible: é ü 名前 ا 😀 \xE2\x80\x94"); // an em dash stays
+}
+
 TEST_CASE("printable paths: a folder's newline and escape sequence shown as the names are, '/' between folders") {
     CHECK(raylab::printablePath(fs::path("class") / "new\nline\x1B[2J" / "gradient.cpp") == "class/new\\nline\\x1B[2J/gradient.cpp");
     CHECK(raylab::printablePath("plain/path") == "plain/path");
@@ -102,6 +123,20 @@ TEST_CASE("CSV cells a spreadsheet would run as a formula read as text; numbers 
     REQUIRE(rows.size() == 1);
     CHECK(rows[0] == std::vector<std::string>{"'=1+2*3", "'=HYPERLINK(\"http://x\",\"y\")", "'+1+1", "'-1+1", "'@SUM(A1)",
                                               "'\tx", "'\rx", "'-", "-1.5", "+2", "3e-4", "-.5", "x=1", ""});
+}
+
+TEST_CASE("CSV cells: a formula after a separator or a line break inside a cell defused too, so a spreadsheet that "
+          "splits at ';' runs none") {
+    const std::vector<std::string> cells{"H\xC3\xA9lo\xC3\xAFse;=1+1;", "x;=1+1;@SUM(2)", "a\n=3+3", "a,+b", "a\t-c",
+                                         "a\r\n@d", "a; \"=e\"", "a;-1;+2.5", "a, b", "-", "x=1;y"};
+    const auto rows = raylab::test::readCsv(raylab::csvLine(cells));
+    REQUIRE(rows.size() == 1);
+    CHECK(rows[0] == std::vector<std::string>{"H\xC3\xA9lo\xC3\xAFse;'=1+1;", "x;'=1+1;'@SUM(2)", "a\n'=3+3", "a,'+b",
+                                              "a\t'-c", "a\r\n'@d", "a; \"'=e\"", "a;-1;+2.5", "a, b", "'-", "x=1;y"});
+}
+
+TEST_CASE("CSV cells holding ';' or a tab are quoted, as those holding ',': one cell whatever the separator") {
+    CHECK(raylab::csvLine({"a;b", "c\td", "e,f", "g"}) == "\"a;b\",\"c\td\",\"e,f\",g\n");
 }
 
 TEST_CASE("CSV lines read back by a CSV reader as the cells they were written from") {

@@ -244,6 +244,7 @@ void writeGradebookNotes(std::ostream& page, const GradebookFiles& gradebook) {
     };
     list(gradebook.unknown, "roster_unknown");
     list(gradebook.missing, "roster_missing");
+    list(gradebook.unreadable, "gradebook_unreadable");
 }
 
 void writeStudents(std::ostream& page, const ClassResults& results) {

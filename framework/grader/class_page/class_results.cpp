@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <system_error>
+#include <tuple>
 
 namespace raylab::grader {
 
@@ -19,14 +20,16 @@ ClassResults loadClassResults(const fs::path& out) {
         const std::optional<StudentRecord> record = readStudentResult(it->path());
         if (!record) continue; // not graded yet, or its grading did not finish
         try {
-            results.students.push_back({record->student, it->path(), readStudentOutcome(it->path() / "outcome.json")});
+            results.students.push_back({it->path().filename().string(), record->student, it->path(),
+                                        readStudentOutcome(it->path() / "outcome.json")});
         } catch (const std::exception& e) {
             results.problems.push_back(record->student + ": " + e.what());
+            results.unreadable.push_back(record->student);
         }
     }
     if (error) throw std::runtime_error("cannot read " + printablePath(students) + ": " + error.message());
     std::sort(results.students.begin(), results.students.end(),
-              [](const ClassMember& a, const ClassMember& b) { return a.student < b.student; });
+              [](const ClassMember& a, const ClassMember& b) { return std::tie(a.student, a.id) < std::tie(b.student, b.id); });
     return results;
 }
 

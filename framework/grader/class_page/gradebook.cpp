@@ -1,5 +1,6 @@
 #include "grader/class_page/gradebook.h"
 
+#include "grader/course/class_run.h"
 #include "src/atomic_file.h"
 #include "src/csv.h"
 #include "src/text.h"
@@ -94,20 +95,30 @@ GradebookFiles writeGradebooks(const ClassResults& results, const std::vector<Ro
     for (int lab : labs) items.push_back("lab" + std::to_string(lab));
     items.emplace_back("total");
 
-    std::map<std::string, const ClassMember*> byName; // as grades.csv shows the folder's name
-    for (const ClassMember& m : results.students) byName[m.student] = &m;
-    std::vector<RosterEntry> rows = roster;
+    // A row of either file: who it names, as shown, and whose grades it holds.
+    struct Row {
+        std::string id, email, name;
+        const ClassMember* member = nullptr;
+    };
+    std::map<std::string, const ClassMember*> byId;
+    for (const ClassMember& m : results.students) byId[m.id] = &m;
+    std::vector<Row> rows;
     GradebookFiles files;
+    files.unreadable = results.unreadable;
     if (roster.empty()) {
-        for (const ClassMember& m : results.students) rows.push_back({m.student, m.student, m.student, ""});
+        for (const ClassMember& m : results.students) rows.push_back({m.student, "", m.student, &m});
     } else {
         std::set<std::string> listed;
         for (const RosterEntry& r : roster) {
-            listed.insert(printableName(r.folder));
-            if (!byName.count(printableName(r.folder))) files.missing.push_back(printableName(r.folder));
+            const std::string id = safeStudentName(r.folder);
+            listed.insert(id);
+            const auto member = byId.find(id);
+            if (member == byId.end()) files.missing.push_back(printableName(r.folder));
+            rows.push_back({printableName(r.id), printableName(r.email), printableName(r.name),
+                            member != byId.end() ? member->second : nullptr});
         }
         for (const ClassMember& m : results.students)
-            if (!listed.count(m.student)) files.unknown.push_back(m.student);
+            if (!listed.count(m.id)) files.unknown.push_back(m.student);
     }
 
     std::vector<std::string> header{"ID number", "Email address", "Full name"};
@@ -116,9 +127,8 @@ GradebookFiles writeGradebooks(const ClassResults& results, const std::vector<Ro
     header = {"Name", "SID", "Email"};
     header.insert(header.end(), items.begin(), items.end());
     std::string canvas = csvLine(header);
-    for (const RosterEntry& r : rows) {
-        const auto member = byName.find(printableName(r.folder));
-        const std::vector<std::string> grades = gradeItems(labs, member != byName.end() ? member->second : nullptr);
+    for (const Row& r : rows) {
+        const std::vector<std::string> grades = gradeItems(labs, r.member);
         std::vector<std::string> line{r.id, r.email, r.name};
         line.insert(line.end(), grades.begin(), grades.end());
         moodle += csvLine(line);

@@ -58,12 +58,15 @@ std::string recordJson(const StudentRecord& record) {
     return root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
-std::optional<StudentRecord> readRecord(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
+std::optional<StudentRecord> readRecord(const fs::path& studentFolder) {
+    std::ifstream in(studentFolder / kResultFile, std::ios::binary);
     if (!in) return std::nullopt;
     try {
         const nlohmann::json root = nlohmann::json::parse(in);
-        StudentRecord record{root.at("student").get<std::string>(), {}};
+        // The name shown made from the folder's bytes, as at grading: the same for a result written
+        // before names were shown as they are now (a raw bidi control), and never made printable twice.
+        const std::optional<std::string> folder = studentFolderName(studentFolder.filename().string());
+        StudentRecord record{folder ? printableName(*folder) : root.at("student").get<std::string>(), {}};
         for (const nlohmann::json& cell : root.at("cells"))
             record.cells.emplace_back(cell.at("column").get<std::string>(), cell.at("value").get<std::string>());
         if (root.contains("made_by")) // a result written before results said what made them has none
@@ -96,7 +99,7 @@ std::map<std::string, StudentRecord> readLedger(const fs::path& out) {
     std::error_code error;
     for (auto it = fs::directory_iterator(studentsFolder(out), error); !error && it != fs::directory_iterator();
          it.increment(error))
-        if (auto record = readRecord(it->path() / kResultFile)) ledger[it->path().filename().string()] = std::move(*record);
+        if (auto record = readRecord(it->path())) ledger[it->path().filename().string()] = std::move(*record);
     return ledger;
 }
 
@@ -392,6 +395,26 @@ std::string safeStudentName(const std::string& folderName) {
     return cut;
 }
 
+std::optional<std::string> studentFolderName(const std::string& safeName) {
+    const auto hex = [](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+        return -1;
+    };
+    std::string name;
+    for (std::size_t k = 0; k < safeName.size(); ++k) {
+        if (safeName[k] != '%') {
+            name += safeName[k];
+            continue;
+        }
+        if (k + 2 >= safeName.size() || hex(safeName[k + 1]) < 0 || hex(safeName[k + 2]) < 0) return std::nullopt;
+        name += char(hex(safeName[k + 1]) * 16 + hex(safeName[k + 2]));
+        k += 2;
+    }
+    if (name.empty() || safeStudentName(name) != safeName) return std::nullopt; // a cut name, or no safe name
+    return name;
+}
+
 namespace {
 
 // The ledger's records made with other settings than this run's, taken out of it: those students are
@@ -510,7 +533,7 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
                 return stopOnFullDisk(out);
             }
             std::optional<StudentRecord> record;
-            if (outcome == Outcome::Graded) record = readRecord(work.folder / kResultFile);
+            if (outcome == Outcome::Graded) record = readRecord(work.folder);
             if (!record) {
                 std::printf("%-20s %s\n", shown.c_str(),
                             tr("grade.class_not_graded", {{"why", why.empty() ? tr("grade.class_no_result") : why}}).c_str());
@@ -531,7 +554,7 @@ int runClass(const ClassRunOptions& options, const GradeStudent& grade) {
 }
 
 std::optional<StudentRecord> readStudentResult(const fs::path& studentFolder) {
-    return readRecord(studentFolder / kResultFile);
+    return readRecord(studentFolder);
 }
 
 bool isDiskFull(const std::exception& e) {

@@ -20,7 +20,8 @@ namespace raylab::grader {
 using Settings = std::vector<std::pair<std::string, std::string>>; // name, value
 
 // A student's row of grades.csv: the folder's name as printableName (src/text.h) shows it, and the cells after
-// it, by column; and what made it (the run's `madeBy`).
+// it, by column; and what made it (the run's `madeBy`). Read back (readStudentResult), the name is made
+// again from the folder's (OUT/students/<safe name>) bytes, but for a cut safe name.
 struct StudentRecord {
     std::string student;
     std::vector<std::pair<std::string, std::string>> cells; // column, value
@@ -87,6 +88,9 @@ bool isDiskFull(const std::exception& e);
 // the first character are kept, every other byte is written %XX. A name whose form is longer than
 // 160 bytes is cut and ends with '~' and a 64-bit hash of the whole name.
 std::string safeStudentName(const std::string& folderName);
+
+// The folder's name a safe name was made from; nothing for a cut one (or one safeStudentName never makes).
+std::optional<std::string> studentFolderName(const std::string& safeName);
 
 // A problem as a cell of grades.csv: its first line and its first three error lines (a build
 // problem may have a cause per lab), each cut at a word past 200 characters.
