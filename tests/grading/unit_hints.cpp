@@ -2,6 +2,7 @@
 // checks judged on made-up gradients (no agent runs). Lab 4's case is a suite of its own, skipped where
 // the course does not hand lab 4 out.
 #include "grader/judge/checks/checks.h"
+#include "src/messages.h"
 #include "support/course.h"
 
 #include <doctest/doctest.h>
@@ -58,6 +59,13 @@ std::vector<std::pair<std::string, std::string>> judgeLab1(const Fill& fill) {
 }
 
 bool says(const std::string& message, const char* words) { return message.find(words) != std::string::npos; }
+
+// The messages in `language` while it lives, then in the language before.
+struct LanguageScope {
+    explicit LanguageScope(raylab::Language language) : previous(raylab::language()) { raylab::setLanguage(language); }
+    ~LanguageScope() { raylab::setLanguage(previous); }
+    raylab::Language previous;
+};
 
 } // namespace
 
@@ -169,6 +177,59 @@ TEST_CASE("lab 4: u and v made rightly from an unnormalized w are sent to w, and
         const bool sentToTheFrame = says(message, "fix w first") || says(message, "that frame is wrong");
         CHECK_MESSAGE(sentToTheFrame, message);
     }
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("hints") {
+
+TEST_CASE("a hint names a mistake only on that mistake's evidence; otherwise it says how the values relate") {
+    const LanguageScope english(raylab::Language::En);
+    const std::vector<Suspect<glm::dvec3>> suspects{{{0., -1., 0.}, "v = cross(u, w) points down"}};
+    {
+        Judge judge; // the value the suspect gives: its hint
+        CHECK_FALSE(judge.expectNear("v", {0., -1., 0.}, {0., 1., 0.}, 1e-6, "v = cross(w, u)", suspects));
+        CHECK_MESSAGE(says(judge.message(), "Hint: v = cross(u, w) points down"), judge.message());
+        CHECK_MESSAGE(says(judge.message(), "(the opposite vector, every sign flipped)"), judge.message());
+    }
+    {
+        Judge judge; // another wrong value: the formula and what they share, no mistake named
+        CHECK_FALSE(judge.expectNear("v", {0., 2., 0.}, {0., 1., 0.}, 1e-6, "v = cross(w, u)", suspects));
+        CHECK_MESSAGE(says(judge.message(), "Hint: v = cross(w, u)"), judge.message());
+        CHECK_MESSAGE(!says(judge.message(), "points down"), judge.message());
+        CHECK_MESSAGE(says(judge.message(), "(the same direction, 2 times the expected length)"), judge.message());
+    }
+    {
+        Judge judge; // a suspect that gives the expected value too tells nothing
+        const std::vector<Suspect<double>> same{{1.5 + 4e-6, "a mistake"}};
+        CHECK_FALSE(judge.expectNear("t", 1.5 + 8e-6, 1.5, 5e-6, "t = the near root", same));
+        CHECK_MESSAGE(!says(judge.message(), "a mistake"), judge.message());
+    }
+    {
+        Judge judge; // right: no message
+        CHECK(judge.expectNear("v", {0., 1., 0.}, {0., 1., 0.}, 1e-6, "v = cross(w, u)", suspects));
+        CHECK(judge.message().empty());
+    }
+}
+
+TEST_CASE("what a wrong value shares with the expected one, in words") {
+    const LanguageScope english(raylab::Language::En);
+    const glm::dvec3 e{1., 2., 3.};
+    CHECK(relation(-e, e, 1e-6) == "the opposite vector, every sign flipped");
+    CHECK(relation({1., -2., 3.}, e, 1e-6) == "the expected vector with the sign of y flipped");
+    CHECK(relation({2., 1., 3.}, e, 1e-6) == "the expected components with x and y exchanged");
+    CHECK(relation(2.5 * e, e, 1e-6) == "the same direction, 2.5 times the expected length");
+    CHECK(relation(-0.5 * e, e, 1e-6) == "the opposite direction, 0.5 times the expected length");
+    CHECK(relation({0., 0.6, 0.8}, {1., 0., 0.}, 1e-6) == "the same length, 90° from the expected direction");
+    CHECK(relation({0., 0., 1.}, {1., 0., 0.}, 1e-6) == "the expected components with x and z exchanged");
+    CHECK(relation({0., 0., 3.}, {1., 0., 0.}, 1e-6) == "90° from the expected direction, 3 times the expected length");
+    CHECK(relation({0., 0., 0.}, e, 1e-6) == "the zero vector");
+    CHECK(relation({std::nan(""), 0., 0.}, e, 1e-6) == "not a number");
+    CHECK(relation(e, {0., 0., 0.}, 1e-6).empty()); // nothing to share with the zero vector
+    CHECK(relation(-2., 2., 1e-6) == "the opposite sign");
+    CHECK(relation(6., 2., 1e-6) == "3 times the expected value");
+    const LanguageScope french(raylab::Language::Fr);
+    CHECK(relation(2.5 * e, e, 1e-6) == "la même direction, 2,5 fois la longueur attendue");
 }
 
 } // TEST_SUITE
