@@ -233,3 +233,64 @@ TEST_CASE("what a wrong value shares with the expected one, in words") {
 }
 
 } // TEST_SUITE
+
+TEST_SUITE("hints: lab 4") {
+
+// The lookAt constructor's answer for a frame made by `frame` (u, v from position, target and up),
+// the screen placed in it as updateViewport does.
+Answer lookAtAnswer(std::function<void(const glm::dvec3& w, const glm::dvec3& up, glm::dvec3& u, glm::dvec3& v)> frame) {
+    return [frame](const protocol::Call& call) {
+        if (call.probe->name != "lookAt") return std::vector<double>{1.};
+        const double width = call.inputs[0], height = call.inputs[1];
+        const glm::dvec3 position(call.inputs[2], call.inputs[3], call.inputs[4]),
+            target(call.inputs[5], call.inputs[6], call.inputs[7]), up(call.inputs[8], call.inputs[9], call.inputs[10]);
+        const glm::dvec3 w = glm::normalize(position - target);
+        glm::dvec3 u, v;
+        frame(w, up, u, v);
+        const double h = 2. * std::tan(glm::radians(call.inputs[11]) / 2.), wide = h * width / height;
+        const glm::dvec3 topLeft = position - w + v * (h / 2.) - u * (wide / 2.);
+        std::vector<double> out;
+        for (const glm::dvec3& x : {u, v, w, position}) out.insert(out.end(), {x.x, x.y, x.z});
+        out.insert(out.end(), {h, wide, topLeft.x, topLeft.y, topLeft.z});
+        return out;
+    };
+}
+
+TEST_CASE("lab 4: u and v exchanged are told so, not the order of cross(up, w); a mirrored u is told its order, v sent to u") {
+    if (!raylab::test::labInCourse(std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs", 4)) return;
+    const LanguageScope english(raylab::Language::En);
+    const std::string basis = "lookAt: the basis of the handout's four cameras";
+    const std::string exchanged = judge(4, lookAtAnswer([](const glm::dvec3& w, const glm::dvec3& up, glm::dvec3& u, glm::dvec3& v) {
+                                            v = glm::normalize(glm::cross(up, w));
+                                            u = glm::cross(w, v);
+                                        }),
+                                        basis)[0].second;
+    CHECK_MESSAGE(says(exchanged, raylab::tr("hint.lab4.u_v_exchanged").c_str()), exchanged);
+    for (const char* other : {"hint.lab4.u_order", "hint.lab4.v_order", "hint.lab4.u_unit", "hint.lab4.v_is_up"})
+        CHECK_MESSAGE(!says(exchanged, raylab::tr(other).c_str()), std::string(other) << ": " << exchanged);
+    CHECK_MESSAGE(!says(exchanged, "cross(w, up)"), exchanged);
+
+    const std::string mirrored = judge(4, lookAtAnswer([](const glm::dvec3& w, const glm::dvec3& up, glm::dvec3& u, glm::dvec3& v) {
+                                           u = glm::normalize(glm::cross(w, up));
+                                           v = glm::cross(w, u);
+                                       }),
+                                       basis)[0].second;
+    CHECK_MESSAGE(says(mirrored, raylab::tr("hint.lab4.u_order").c_str()), mirrored);
+    CHECK_MESSAGE(says(mirrored, raylab::tr("hint.lab4.from_u").c_str()), mirrored);
+    CHECK_MESSAGE(!says(mirrored, raylab::tr("hint.lab4.v_order").c_str()), mirrored);
+
+    // A u that is no classic mistake (turned about w by a quarter of a right angle): the formula and
+    // how it relates, no mistake named.
+    const std::string turned = judge(4, lookAtAnswer([](const glm::dvec3& w, const glm::dvec3& up, glm::dvec3& u, glm::dvec3& v) {
+                                         const glm::dvec3 right = glm::normalize(glm::cross(up, w)), top = glm::cross(w, right);
+                                         u = std::cos(0.4) * right + std::sin(0.4) * top;
+                                         v = top;
+                                     }),
+                                     basis)[0].second;
+    CHECK_MESSAGE(says(turned, ("Hint: " + raylab::tr("hint.lab4.u")).c_str()), turned);
+    CHECK_MESSAGE(says(turned, "the same length, 22.9° from the expected direction"), turned);
+    for (const char* other : {"hint.lab4.u_order", "hint.lab4.u_unit", "hint.lab4.u_v_exchanged"})
+        CHECK_MESSAGE(!says(turned, raylab::tr(other).c_str()), std::string(other) << ": " << turned);
+}
+
+} // TEST_SUITE
