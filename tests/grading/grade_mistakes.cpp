@@ -1,7 +1,7 @@
-// Every classic mistake is caught by the check the catalogue expects, a figure it changes is
-// diagnosed as that mistake (with its lab, function and formula, and no other lab blamed), no hint
-// names a cause the code does not have, and a check that reaches the mistake through another
-// function names the function to fix.
+// Every classic mistake is caught by the check the catalogue expects, with the hint the catalogue
+// gives it (check_hint) and no other mistake's; a figure it changes is diagnosed as that mistake
+// (with its lab, function and formula, and no other lab blamed), no hint names a cause the code does
+// not have, and a check that reaches the mistake through another function names the function to fix.
 #include "grading_support.h"
 
 #include <algorithm>
@@ -59,6 +59,24 @@ TEST_CASE("each catalogued mistake is caught and named") {
         REQUIRE_MESSAGE(catcher, "no check \"" << m.check << "\"");
         CHECK_MESSAGE(!catcher->passed, m.id << " is not caught by \"" << m.check << "\"");
         CHECK_MESSAGE(catcher->message.find("Hint:") != std::string::npos, catcher->message);
+        // Its own hint, from a check that fails (its catcher, or the check whose cases show that mistake);
+        // no check gives the hint of another mistake of the catalogue (a hint that names a mistake needs
+        // that mistake's evidence).
+        if (!m.checkHint.empty()) {
+            const std::string own = raylab::tr(m.checkHint);
+            const bool given = std::any_of(r.checks.begin(), r.checks.end(), [&](const CheckOutcome& c) {
+                return !c.passed && c.message.find(own) != std::string::npos;
+            });
+            CHECK_MESSAGE(given, m.id << ": no check gives its hint \"" << own << "\"" << failures(r));
+        }
+        for (const Mistake& other : setup.mistakes) {
+            if (other.checkHint.empty() || other.checkHint == m.checkHint) continue;
+            const std::string theirs = raylab::tr(other.checkHint);
+            for (const CheckOutcome& c : r.checks)
+                CHECK_MESSAGE(c.message.find(theirs) == std::string::npos,
+                              m.id << ": \"" << c.name << "\" gives the hint of " << other.id << ": " << c.message);
+        }
+        MESSAGE(m.id << " caught by \"" << m.check << "\": " << catcher->message);
         // The labs that do not use the mistaken lab keep every point.
         for (const LabOutcome& lab : r.labs) {
             const std::vector<int>& uses = setup.labs.lab(lab.lab)->uses;

@@ -131,8 +131,8 @@ TEST_CASE("statistical: a few wild pixels are outliers") {
 }
 
 TEST_CASE("diagnosis: the closest signature is named when it fits, and only then") {
-    Mistake dark{"dark", "too dark", "trop sombre", "brighten it", "éclaircissez-la", "", 3, "shade (shade.cpp)", "", {{"fig", downsample(flat(16, 16, 10, 10, 10))}}, {}};
-    Mistake red{"red", "all red", "toute rouge", "less red", "moins de rouge", "", 3, "shade (shade.cpp)", "", {{"fig", downsample(flat(16, 16, 250, 0, 0))}}, {}};
+    Mistake dark{"dark", "too dark", "trop sombre", "brighten it", "éclaircissez-la", "", 3, "shade (shade.cpp)", "", "", {{"fig", downsample(flat(16, 16, 10, 10, 10))}}, {}};
+    Mistake red{"red", "all red", "toute rouge", "less red", "moins de rouge", "", 3, "shade (shade.cpp)", "", "", {{"fig", downsample(flat(16, 16, 250, 0, 0))}}, {}};
     const std::vector<Mistake> catalogue{dark, red};
     const Image8 reference = flat(16, 16, 100, 100, 100);
     const auto anyMistake = [](const Mistake&) { return true; };
@@ -156,8 +156,8 @@ TEST_CASE("diagnosis: the closest signature is named when it fits, and only then
 
 TEST_CASE("diagnosis: only the suspects are named") {
     const Image8 reference = flat(16, 16, 100, 100, 100), student = flat(16, 16, 10, 10, 10);
-    Mistake own{"own", "dim", "sombre", "brighten it", "éclaircissez-la", "", 4, "lookAt", "", {{"fig", downsample(flat(16, 16, 12, 12, 12))}}, {}};
-    Mistake earlier{"earlier", "dark", "noire", "brighten it", "éclaircissez-la", "", 2, "camera", "", {{"fig", downsample(student)}}, {}};
+    Mistake own{"own", "dim", "sombre", "brighten it", "éclaircissez-la", "", 4, "lookAt", "", "", {{"fig", downsample(flat(16, 16, 12, 12, 12))}}, {}};
+    Mistake earlier{"earlier", "dark", "noire", "brighten it", "éclaircissez-la", "", 2, "camera", "", "", {{"fig", downsample(student)}}, {}};
     const std::vector<Mistake> catalogue{own, earlier};
     const auto ofLabs = [](std::vector<int> labs) {
         return [labs](const Mistake& m) { return std::find(labs.begin(), labs.end(), m.lab) != labs.end(); };

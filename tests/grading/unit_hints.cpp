@@ -2,6 +2,7 @@
 // checks judged on made-up gradients (no agent runs). Lab 4's case is a suite of its own, skipped where
 // the course does not hand lab 4 out.
 #include "grader/judge/checks/checks.h"
+#include "src/messages.h"
 #include "support/course.h"
 
 #include <doctest/doctest.h>
@@ -58,6 +59,13 @@ std::vector<std::pair<std::string, std::string>> judgeLab1(const Fill& fill) {
 }
 
 bool says(const std::string& message, const char* words) { return message.find(words) != std::string::npos; }
+
+// The messages in `language` while it lives, then in the language before.
+struct LanguageScope {
+    explicit LanguageScope(raylab::Language language) : previous(raylab::language()) { raylab::setLanguage(language); }
+    ~LanguageScope() { raylab::setLanguage(previous); }
+    raylab::Language previous;
+};
 
 } // namespace
 
@@ -169,6 +177,120 @@ TEST_CASE("lab 4: u and v made rightly from an unnormalized w are sent to w, and
         const bool sentToTheFrame = says(message, "fix w first") || says(message, "that frame is wrong");
         CHECK_MESSAGE(sentToTheFrame, message);
     }
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("hints") {
+
+TEST_CASE("a hint names a mistake only on that mistake's evidence; otherwise it says how the values relate") {
+    const LanguageScope english(raylab::Language::En);
+    const std::vector<Suspect<glm::dvec3>> suspects{{{0., -1., 0.}, "v = cross(u, w) points down"}};
+    {
+        Judge judge; // the value the suspect gives: its hint
+        CHECK_FALSE(judge.expectNear("v", {0., -1., 0.}, {0., 1., 0.}, 1e-6, "v = cross(w, u)", suspects));
+        CHECK_MESSAGE(says(judge.message(), "Hint: v = cross(u, w) points down"), judge.message());
+        CHECK_MESSAGE(says(judge.message(), "(the opposite vector, every sign flipped)"), judge.message());
+    }
+    {
+        Judge judge; // another wrong value: the formula and what they share, no mistake named
+        CHECK_FALSE(judge.expectNear("v", {0., 2., 0.}, {0., 1., 0.}, 1e-6, "v = cross(w, u)", suspects));
+        CHECK_MESSAGE(says(judge.message(), "Hint: v = cross(w, u)"), judge.message());
+        CHECK_MESSAGE(!says(judge.message(), "points down"), judge.message());
+        CHECK_MESSAGE(says(judge.message(), "(the same direction, 2 times the expected length)"), judge.message());
+    }
+    {
+        Judge judge; // a suspect that gives the expected value too tells nothing
+        const std::vector<Suspect<double>> same{{1.5 + 4e-6, "a mistake"}};
+        CHECK_FALSE(judge.expectNear("t", 1.5 + 8e-6, 1.5, 5e-6, "t = the near root", same));
+        CHECK_MESSAGE(!says(judge.message(), "a mistake"), judge.message());
+    }
+    {
+        Judge judge; // right: no message
+        CHECK(judge.expectNear("v", {0., 1., 0.}, {0., 1., 0.}, 1e-6, "v = cross(w, u)", suspects));
+        CHECK(judge.message().empty());
+    }
+}
+
+TEST_CASE("what a wrong value shares with the expected one, in words") {
+    const LanguageScope english(raylab::Language::En);
+    const glm::dvec3 e{1., 2., 3.};
+    CHECK(relation(-e, e, 1e-6) == "the opposite vector, every sign flipped");
+    CHECK(relation({1., -2., 3.}, e, 1e-6) == "the expected vector with the sign of y flipped");
+    CHECK(relation({2., 1., 3.}, e, 1e-6) == "the expected components with x and y exchanged");
+    CHECK(relation(2.5 * e, e, 1e-6) == "the same direction, 2.5 times the expected length");
+    CHECK(relation(-0.5 * e, e, 1e-6) == "the opposite direction, 0.5 times the expected length");
+    CHECK(relation({0., 0.6, 0.8}, {1., 0., 0.}, 1e-6) == "the same length, 90° from the expected direction");
+    CHECK(relation({0., 0., 1.}, {1., 0., 0.}, 1e-6) == "the expected components with x and z exchanged");
+    CHECK(relation({0., 0., 3.}, {1., 0., 0.}, 1e-6) == "90° from the expected direction, 3 times the expected length");
+    CHECK(relation({0., 0., 0.}, e, 1e-6) == "the zero vector");
+    CHECK(relation({std::nan(""), 0., 0.}, e, 1e-6) == "not a number");
+    CHECK(relation(e, {0., 0., 0.}, 1e-6).empty()); // nothing to share with the zero vector
+    CHECK(relation(-2., 2., 1e-6) == "the opposite sign");
+    CHECK(relation(6., 2., 1e-6) == "3 times the expected value");
+    const LanguageScope french(raylab::Language::Fr);
+    CHECK(relation(2.5 * e, e, 1e-6) == "la même direction, 2,5 fois la longueur attendue");
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("hints: lab 4") {
+
+// The lookAt constructor's answer for a frame made by `frame` (u, v from position, target and up),
+// the screen placed in it as updateViewport does.
+Answer lookAtAnswer(std::function<void(const glm::dvec3& w, const glm::dvec3& up, glm::dvec3& u, glm::dvec3& v)> frame) {
+    return [frame](const protocol::Call& call) {
+        if (call.probe->name != "lookAt") return std::vector<double>{1.};
+        const double width = call.inputs[0], height = call.inputs[1];
+        const glm::dvec3 position(call.inputs[2], call.inputs[3], call.inputs[4]),
+            target(call.inputs[5], call.inputs[6], call.inputs[7]), up(call.inputs[8], call.inputs[9], call.inputs[10]);
+        const glm::dvec3 w = glm::normalize(position - target);
+        glm::dvec3 u, v;
+        frame(w, up, u, v);
+        const double h = 2. * std::tan(glm::radians(call.inputs[11]) / 2.), wide = h * width / height;
+        const glm::dvec3 topLeft = position - w + v * (h / 2.) - u * (wide / 2.);
+        std::vector<double> out;
+        for (const glm::dvec3& x : {u, v, w, position}) out.insert(out.end(), {x.x, x.y, x.z});
+        out.insert(out.end(), {h, wide, topLeft.x, topLeft.y, topLeft.z});
+        return out;
+    };
+}
+
+TEST_CASE("lab 4: u and v exchanged are told so, not the order of cross(up, w); a mirrored u is told its order, v sent to u") {
+    if (!raylab::test::labInCourse(std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs", 4)) return;
+    const LanguageScope english(raylab::Language::En);
+    const std::string basis = "lookAt: the basis of the handout's four cameras";
+    const std::string exchanged = judge(4, lookAtAnswer([](const glm::dvec3& w, const glm::dvec3& up, glm::dvec3& u, glm::dvec3& v) {
+                                            v = glm::normalize(glm::cross(up, w));
+                                            u = glm::cross(w, v);
+                                        }),
+                                        basis)[0].second;
+    CHECK_MESSAGE(says(exchanged, raylab::tr("hint.lab4.u_v_exchanged").c_str()), exchanged);
+    for (const char* other : {"hint.lab4.u_order", "hint.lab4.v_order", "hint.lab4.u_unit", "hint.lab4.v_is_up"})
+        CHECK_MESSAGE(!says(exchanged, raylab::tr(other).c_str()), std::string(other) << ": " << exchanged);
+    CHECK_MESSAGE(!says(exchanged, "cross(w, up)"), exchanged);
+
+    const std::string mirrored = judge(4, lookAtAnswer([](const glm::dvec3& w, const glm::dvec3& up, glm::dvec3& u, glm::dvec3& v) {
+                                           u = glm::normalize(glm::cross(w, up));
+                                           v = glm::cross(w, u);
+                                       }),
+                                       basis)[0].second;
+    CHECK_MESSAGE(says(mirrored, raylab::tr("hint.lab4.u_order").c_str()), mirrored);
+    CHECK_MESSAGE(says(mirrored, raylab::tr("hint.lab4.from_u").c_str()), mirrored);
+    CHECK_MESSAGE(!says(mirrored, raylab::tr("hint.lab4.v_order").c_str()), mirrored);
+
+    // A u that is no classic mistake (turned about w by a quarter of a right angle): the formula and
+    // how it relates, no mistake named.
+    const std::string turned = judge(4, lookAtAnswer([](const glm::dvec3& w, const glm::dvec3& up, glm::dvec3& u, glm::dvec3& v) {
+                                         const glm::dvec3 right = glm::normalize(glm::cross(up, w)), top = glm::cross(w, right);
+                                         u = std::cos(0.4) * right + std::sin(0.4) * top;
+                                         v = top;
+                                     }),
+                                     basis)[0].second;
+    CHECK_MESSAGE(says(turned, ("Hint: " + raylab::tr("hint.lab4.u")).c_str()), turned);
+    CHECK_MESSAGE(says(turned, "the same length, 22.9° from the expected direction"), turned);
+    for (const char* other : {"hint.lab4.u_order", "hint.lab4.u_unit", "hint.lab4.u_v_exchanged"})
+        CHECK_MESSAGE(!says(turned, raylab::tr(other).c_str()), std::string(other) << ": " << turned);
 }
 
 } // TEST_SUITE

@@ -113,7 +113,7 @@ TEST_CASE("the mistakes' catalogue: an unknown key, a wrong type, a NaN or a mis
     };
     CHECK(error(kMistake + "hint_de = \"x\"\n") ==
           "mistakes.toml:10: [[mistake]] #1 hint_de: unknown key (known keys: id, name, name_fr, hint, hint_fr, label, "
-          "lab, function, check)");
+          "lab, function, check, check_hint)");
     CHECK(error(replaced(kMistake, "lab = 2", "lab = \"2\"")) ==
           "mistakes.toml:5: [[mistake]] #1 lab: expected an integer, got a string");
     CHECK(error(replaced(kMistake, "lab = 2", "lab = nan")) ==

@@ -29,7 +29,7 @@ std::vector<std::pair<std::string_view, std::string>> Mistake::args() const {
 namespace {
 
 Mistake readMistake(const TomlReader& r, const toml::table& m, const std::string& where) {
-    r.onlyKeys(m, where, {"id", "name", "name_fr", "hint", "hint_fr", "label", "lab", "function", "check"});
+    r.onlyKeys(m, where, {"id", "name", "name_fr", "hint", "hint_fr", "label", "lab", "function", "check", "check_hint"});
     Mistake mistake;
     mistake.id = r.text(m, where, "id");
     // Its signatures are in the folder mistakes/<id>: a name that is a path would reach elsewhere.
@@ -43,6 +43,7 @@ Mistake readMistake(const TomlReader& r, const toml::table& m, const std::string
     mistake.lab = int(r.requiredInteger(m, where, "lab", 1, std::numeric_limits<int>::max()));
     mistake.function = r.text(m, where, "function");
     mistake.check = r.string(m, where, "check").value_or("");
+    mistake.checkHint = r.string(m, where, "check_hint").value_or("");
     return mistake;
 }
 

@@ -25,6 +25,7 @@ struct Mistake {
     int lab = 0;       // the lab whose file holds the mistake
     std::string function; // where in that lab: "PerspectiveCamera::updateViewport (perspective_camera.cpp)"
     std::string check;    // the function check expected to catch it ("updateViewport: ...")
+    std::string checkHint; // the message id of the hint that check gives it ("hint.lab2.viewport_height"); may be empty
     std::vector<std::pair<std::string, Image8>> signatures; // figure id, signature
     std::filesystem::path folder; // the reference folder whose mistakes.toml lists it
     // In the current language (raylab/messages.h).

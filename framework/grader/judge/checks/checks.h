@@ -18,20 +18,36 @@
 
 namespace raylab::grader {
 
-// Collects a check's failed expectations: "WHAT: expected E, got G. Hint: H", one a line; the
-// failures that share a hint are one line, the first, and how many more there are.
+// A classic mistake a failed expectation may come from: the value that mistake gives, worked out
+// for the case, and the hint that names it. A hint that names a mistake is given only on that
+// evidence (the value got is the value it gives, within the expectation's tolerance): a wrong value
+// that no suspect gives is told the formula and how it relates to the expected one, no guess.
+template <class Value>
+struct Suspect {
+    Value gives;
+    std::string hint;
+};
+
+// Collects a check's failed expectations: "WHAT: expected E, got G (how they relate). Hint: H", one
+// a line; the failures that share a hint are one line, the first, and how many more there are.
 class Judge {
 public:
     void fail(const std::string& what, const std::string& expected, const std::string& got, const std::string& hint);
-    bool expectNear(const std::string& what, double got, double expected, double tolerance, const std::string& hint);
+    // `hint` says what is right (the formula) and names no mistake; the first of `suspects` whose
+    // value is the one got (within `tolerance`) gives its hint instead.
+    bool expectNear(const std::string& what, double got, double expected, double tolerance, const std::string& hint,
+                    const std::vector<Suspect<double>>& suspects = {});
     bool expectNear(const std::string& what, const glm::dvec3& got, const glm::dvec3& expected, double tolerance,
-                    const std::string& hint);
+                    const std::string& hint, const std::vector<Suspect<glm::dvec3>>& suspects = {});
     bool expectTrue(const std::string& what, bool holds, const std::string& expected, const std::string& got,
                     const std::string& hint);
     bool passed() const { return m_failures.empty(); }
     std::string message() const;
 
 private:
+    // As fail, the line also saying how the value got relates to the expected one (when `related` is not empty).
+    void failRelated(const std::string& what, const std::string& expected, const std::string& got,
+                     const std::string& related, const std::string& hint);
     struct Failure {
         std::string line, hint;
     };
@@ -40,6 +56,12 @@ private:
 
 // Each component of a within `tolerance` of b's.
 bool withinEach(const glm::dvec3& a, const glm::dvec3& b, double tolerance);
+
+// What a wrong value got shares with the expected one, in words (empty when nothing simple):
+// the opposite, a factor between them, the same direction or length, a sign flipped, two
+// components exchanged. Facts only: it names no mistake.
+std::string relation(const glm::dvec3& got, const glm::dvec3& expected, double tolerance);
+std::string relation(double got, double expected, double tolerance);
 
 std::string show(double v);
 std::string show(const glm::dvec3& v);

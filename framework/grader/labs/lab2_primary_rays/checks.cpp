@@ -43,16 +43,28 @@ Camera drawnCamera(CaseRandom& random) {
     return {int(height * random.uniform(0.5, 2.5)), height, CaseRandom::asFloat(random.uniform(20., 120.))};
 }
 
+// The classic mistakes of the viewport's height, each with the height it gives for `c`.
+std::vector<Suspect<double>> heightSuspects(const Camera& c) {
+    return {{2. * std::tan(c.fovy * std::numbers::pi / 180.), tr("hint.lab2.not_halved")},
+            {2. * std::tan(c.fovy / 2.), tr("hint.lab2.degrees_as_radians")}};
+}
+
 void expectViewport(Judge& judge, const Camera& c, const std::vector<double>& out, bool named) {
     Outputs o(out);
     const std::string suffix = named ? " (" + c.name() + ")" : "";
     const double height = o.number(), width = o.number();
-    judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}) + suffix, height, c.viewportHeight(), 1e-5,
-                     tr("hint.lab2.viewport_height"));
-    judge.expectNear(tr("what.lab2.viewport_width", {{"width", std::to_string(c.width)}, {"height", std::to_string(c.height)}}) +
-                         suffix,
-                     width, c.viewportWidth(), 1e-5,
-                     tr("hint.lab2.viewport_width", {{"aspect", show(double(c.width) / c.height)}}));
+    const bool heightRight = judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}) + suffix, height,
+                                              c.viewportHeight(), 1e-5, tr("hint.lab2.viewport_height"), heightSuspects(c));
+    const double aspect = double(c.width) / c.height;
+    const std::string widthWhat =
+        tr("what.lab2.viewport_width", {{"width", std::to_string(c.width)}, {"height", std::to_string(c.height)}}) + suffix;
+    // A width made rightly from a wrong height is sent to the height.
+    if (!heightRight && std::abs(width - height * aspect) <= 1e-5)
+        judge.expectNear(widthWhat, width, c.viewportWidth(), 1e-5, tr("hint.lab2.width_from_height"));
+    else
+        judge.expectNear(widthWhat, width, c.viewportWidth(), 1e-5, tr("hint.lab2.viewport_width", {{"aspect", show(aspect)}}),
+                         {{c.viewportHeight() / aspect, tr("hint.lab2.aspect_inverted")},
+                          {height / aspect, tr("hint.lab2.aspect_inverted")}});
     judge.expectNear(tr("what.lab2.top_left") + suffix, o.vec3(), c.topLeft(), 1e-5, tr("hint.lab2.top_left"));
 }
 
@@ -137,7 +149,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
       const std::string hint = tr("hint.lab2.fovy_degrees_halved");
       for (const auto& [c, o] : {std::pair{square, out[0]}, std::pair{wide, out[1]}})
           judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}), o[0], c.viewportHeight(), 1e-5,
-                           hint);
+                           hint, heightSuspects(c));
          }});
 
     std::vector<Point> corners{{0.5, 0.5, tr("what.lab2.centre", {{"sx", show(0.5)}, {"sy", show(0.5)}})},

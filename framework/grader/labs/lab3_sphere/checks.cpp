@@ -6,6 +6,7 @@
 
 #include "src/messages.h"
 
+#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -199,6 +200,17 @@ glm::dvec3 expectedLi(const LiCase& c) {
     return c.colour * std::max(-glm::dot(d, n), 0.);
 }
 
+// The classic mistakes of cosine shading, each with the colour it gives for the case: a gamma
+// applied to the linear colour, and the cosine taken of the dot product (which is the cosine).
+std::vector<Suspect<glm::dvec3>> shadingSuspects(const LiCase& c) {
+    const std::optional<double> t = nearestHit(c.sphere, c.ray);
+    if (c.shading != kCosine || !t) return {};
+    const glm::dvec3 d = glm::normalize(c.ray.direction), n = (c.ray.at(*t) - c.sphere.centre) / c.sphere.radius;
+    const double cosine = std::max(-glm::dot(d, n), 0.);
+    return {{glm::pow(c.colour * cosine, glm::dvec3(1. / 2.2)), tr("hint.lab3.gamma")},
+            {c.colour * std::max(std::cos(-glm::dot(d, n)), 0.), tr("hint.lab3.cos_of_dot")}};
+}
+
 protocol::Call normalCall(const Sphere& s, const glm::dvec3& point) {
     std::vector<double> in;
     appendInputs(in, s.centre);
@@ -240,23 +252,28 @@ void addLi(LabChecks& checks, const std::string& name, std::vector<LiCase> cases
                        const LiCase& c = cases[k];
                        const glm::dvec3 got = Outputs(out[k]).vec3();
                        std::string hint = c.hint;
+                       std::vector<Suspect<glm::dvec3>> suspects = shadingSuspects(c);
                        Outputs hit(out[hitsAt + k]);
                        const bool found = hit.number() != 0.;
                        const double t = hit.number();
                        const std::optional<double> trueT = nearestHit(c.sphere, c.ray);
                        const bool hitWrong = found != trueT.has_value() ||
                                              (found && std::abs(t - *trueT) > 1e-4 * std::max(1., *trueT));
-                       if (hitWrong && withinEach(got, liForHit(c, found, t), c.tolerance))
+                       if (hitWrong && withinEach(got, liForHit(c, found, t), c.tolerance)) {
                            hint = tr("hint.lab3.li_through_intersect",
                                      {{"got", found ? "t = " + show(t) : tr("what.lab3.no_hit")},
                                       {"expected", trueT ? "t = " + show(*trueT) : tr("what.lab3.no_hit")}});
-                       else if (normalAt[k] != 0) {
+                           suspects.clear();
+                       } else if (normalAt[k] != 0) {
                            const glm::dvec3 n = Outputs(out[normalAt[k]]).vec3(),
                                             d = glm::normalize(c.ray.direction);
                            const glm::dvec3 forTheirNormal = c.colour * std::max(-glm::dot(d, n), 0.);
-                           if (withinEach(got, forTheirNormal, c.tolerance)) hint = tr("hint.lab3.cosine_own_normal");
+                           if (withinEach(got, forTheirNormal, c.tolerance)) {
+                               hint = tr("hint.lab3.cosine_own_normal");
+                               suspects.clear();
+                           }
                        }
-                       judge.expectNear(c.what, got, expectedLi(c), c.tolerance, hint);
+                       judge.expectNear(c.what, got, expectedLi(c), c.tolerance, hint, suspects);
                    }
                }},
                where);

@@ -108,14 +108,29 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
                               auto what = [&c](const char* part) {
                                   return tr("what.lab4.part", {{"camera", c.name}, {"part", part}});
                               };
-                              // u and v made rightly from a wrong w are sent to w.
-                              const bool wRight = judge.expectNear(what("w"), b.w, c.w(), 1e-5, tr("hint.lab4.w"));
+                              // A part made rightly from a wrong part before it is sent to that part; a
+                              // mistake is named only when the part is what that mistake makes of it.
+                              const glm::dvec3 w = c.w(), u = c.u(), v = c.v();
+                              const bool wRight = judge.expectNear(what("w"), b.w, w, 1e-5, tr("hint.lab4.w"),
+                                                                   {{-w, tr("hint.lab4.w_reversed")}});
                               const bool uFromW = withinEach(b.u, glm::normalize(glm::cross(c.up, b.w)), 1e-5);
-                              judge.expectNear(what("u"), b.u, c.u(), 1e-5,
-                                               tr(!wRight && uFromW ? "hint.lab4.from_w" : "hint.lab4.u"));
-                              const bool vFromW = withinEach(b.v, glm::cross(b.w, b.u), 1e-5);
-                              judge.expectNear(what("v"), b.v, c.v(), 1e-5,
-                                               tr(!wRight && vFromW ? "hint.lab4.from_w" : "hint.lab4.v"));
+                              bool uRight = true;
+                              if (!wRight && uFromW)
+                                  uRight = judge.expectNear(what("u"), b.u, u, 1e-5, tr("hint.lab4.from_w"));
+                              else
+                                  uRight = judge.expectNear(what("u"), b.u, u, 1e-5, tr("hint.lab4.u"),
+                                                            {{-u, tr("hint.lab4.u_order")},
+                                                             {glm::cross(c.up, w), tr("hint.lab4.u_unit")},
+                                                             {v, tr("hint.lab4.u_v_exchanged")}});
+                              const bool vFromFrame = withinEach(b.v, glm::cross(b.w, b.u), 1e-5);
+                              if (vFromFrame && !(wRight && uRight))
+                                  judge.expectNear(what("v"), b.v, v, 1e-5, tr(wRight ? "hint.lab4.from_u" : "hint.lab4.from_w"));
+                              else
+                                  judge.expectNear(what("v"), b.v, v, 1e-5, tr("hint.lab4.v"),
+                                                   {{-v, tr("hint.lab4.v_order")},
+                                                    {u, tr("hint.lab4.u_v_exchanged")},
+                                                    {c.up, tr("hint.lab4.v_is_up")},
+                                                    {glm::normalize(c.up), tr("hint.lab4.v_is_up")}});
                               judge.expectNear(what("position"), b.position, c.position, 1e-6,
                                                tr("hint.lab4.position"));
                           }));
@@ -127,13 +142,21 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
             const glm::dvec3 ownTopLeft =
          b.position - b.w + b.v * (b.viewportHeight / 2.) - b.u * (b.viewportWidth / 2.);
             const bool frameRight = withinEach(b.u, c.u(), 1e-5) && withinEach(b.v, c.v(), 1e-5) && withinEach(b.w, c.w(), 1e-5);
-            const std::string hint =
-         tr(!frameRight && withinEach(b.topLeft, ownTopLeft, 1e-4) ? "hint.lab4.viewport_frame" : "hint.lab4.viewport");
             auto what = [&c](const std::string& part) { return tr("what.lab4.part", {{"camera", c.name}, {"part", part}}); };
-            judge.expectNear(what(tr("what.lab4.viewport_height")), b.viewportHeight, c.viewportHeight(), 1e-5, hint);
-            judge.expectNear(what(tr("what.lab4.viewport_width")), b.viewportWidth, c.viewportWidth(), 1e-5, hint);
-            judge.expectNear(what(tr("what.lab4.top_left")), b.topLeft, c.topLeft(), 1e-4,
-                      frameRight ? tr("hint.lab4.viewport_position", {{"hint", hint}}) : hint);
+            judge.expectNear(what(tr("what.lab4.viewport_height")), b.viewportHeight, c.viewportHeight(), 1e-5,
+                             tr("hint.lab4.viewport_size"));
+            judge.expectNear(what(tr("what.lab4.viewport_width")), b.viewportWidth, c.viewportWidth(), 1e-5,
+                             tr("hint.lab4.viewport_size"));
+            if (!frameRight && withinEach(b.topLeft, ownTopLeft, 1e-4)) {
+                judge.expectNear(what(tr("what.lab4.top_left")), b.topLeft, c.topLeft(), 1e-4, tr("hint.lab4.viewport_frame"));
+                return;
+            }
+            // The default camera's screen (at the origin, u = (-1, 0, 0), v = (0, 1, 0), w = (0, 0, -1)), which
+            // the delegated constructor places; and the right frame's screen placed before the position was set.
+            const glm::dvec3 defaultTopLeft{c.viewportWidth() / 2., c.viewportHeight() / 2., 1.};
+            judge.expectNear(what(tr("what.lab4.top_left")), b.topLeft, c.topLeft(), 1e-4, tr("hint.lab4.top_left"),
+                             {{defaultTopLeft, tr("hint.lab4.viewport")},
+                              {c.topLeft() - c.position, tr("hint.lab4.viewport_position")}});
         }));
 
     // The default camera is what the delegated constructor already built: the same camera turned

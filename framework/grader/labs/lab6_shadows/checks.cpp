@@ -254,6 +254,7 @@ struct Shading {
 
 struct Hit {
     glm::dvec3 position, normal, colour;
+    bool turned = false; // the normal was turned to face the ray
 };
 
 // The nearest hit of the case's ray, its normal turned towards the ray.
@@ -271,19 +272,38 @@ std::optional<Hit> nearestHit(const LiCase& c) {
         hit.normal = c.scene.plane.normal;
         hit.colour = c.planeColour;
     }
-    if (glm::dot(hit.normal, c.ray.direction) > 0.) hit.normal = -hit.normal;
+    hit.turned = glm::dot(hit.normal, c.ray.direction) > 0.;
+    if (hit.turned) hit.normal = -hit.normal;
     return hit;
 }
 
-// The colour Li must return at `hit`, the light counted when `lit`.
-glm::dvec3 shade(const Shading& shading, const Light& light, const Hit& hit, bool lit) {
+// Lambert's term as the handout writes it, or as a classic mistake does (the value it gives is the
+// evidence that names it).
+enum class Lambert { right, noFalloff, noPi };
+
+// The colour Li must return at `hit`, the light counted when `lit` (or what `lambert` makes of it).
+glm::dvec3 shade(const Shading& shading, const Light& light, const Hit& hit, bool lit, Lambert lambert = Lambert::right) {
     glm::dvec3 radiance = shading.ambient * hit.colour;
     const glm::dvec3 toLight = light.position - hit.position;
     const double distance = glm::length(toLight);
     const double cosine = glm::dot(hit.normal, toLight) / distance;
-    if (cosine > 0. && lit)
-        radiance += hit.colour * std::numbers::inv_pi * light.intensity * (cosine / (distance * distance));
+    const double falloff = lambert == Lambert::noFalloff ? 1. : distance * distance;
+    const double reflection = lambert == Lambert::noPi ? 1. : std::numbers::inv_pi;
+    if (cosine > 0. && lit) radiance += hit.colour * reflection * light.intensity * (cosine / falloff);
     return radiance;
+}
+
+// The classic mistakes of Li's formula at `hit`, each with the colour it gives.
+std::vector<Suspect<glm::dvec3>> lambertSuspects(const Shading& shading, const Light& light, const Hit& hit, bool lit) {
+    std::vector<Suspect<glm::dvec3>> suspects{
+        {shade(shading, light, hit, lit, Lambert::noFalloff), tr("hint.lab6.inverse_square")},
+        {shade(shading, light, hit, lit, Lambert::noPi), tr("hint.lab6.pi")}};
+    if (hit.turned) { // the normal as computeNormal gives it, not turned towards the ray
+        Hit unturned = hit;
+        unturned.normal = -hit.normal;
+        suspects.push_back({shade(shading, light, unturned, lit), tr("hint.lab6.facing")});
+    }
+    return suspects;
 }
 
 protocol::Call liCall(const Shading& shading, const LiCase& c) {
@@ -327,16 +347,20 @@ void addLi(LabChecks& checks, const std::string& name, Shading shading, std::vec
                         const bool lit = !shading.shadows || !occluded(c.scene, hit->position);
                         const glm::dvec3 expected = shade(shading, c.scene.light, *hit, lit);
                         std::string hint = c.hint;
+                        std::vector<Suspect<glm::dvec3>> suspects = lambertSuspects(shading, c.scene.light, *hit, lit);
                         if (shadowAt[k] != 0) {
                             const bool theirShadow = Outputs(out[shadowAt[k]]).number() != 0.;
                             const bool shadowedInstead = withinEach(got, shade(shading, c.scene.light, *hit, !lit), 1e-4);
-                            if (theirShadow == lit && shadowedInstead)
+                            if (theirShadow == lit && shadowedInstead) {
                                 hint = tr("hint.lab6.li_through_in_shadow",
                                           {{"got", tr(theirShadow ? "what.lab6.shadow" : "what.lab6.lit")}});
-                            else if (lit && shadowedInstead) // inShadow right at the exact point: Li's own, rounded, or no light term
+                                suspects.clear();
+                            } else if (lit && shadowedInstead) { // inShadow right at the exact point: Li's own, rounded, or no light term
                                 hint = tr("hint.lab6.li_acne");
+                                suspects.clear();
+                            }
                         }
-                        judge.expectNear(c.what, got, expected, 1e-4, hint);
+                        judge.expectNear(c.what, got, expected, 1e-4, hint, suspects);
                     }
                 }},
                 where);
@@ -362,7 +386,7 @@ void addLiChecks(LabChecks& checks, CaseRandom& random) {
                {tr("what.lab6.li_away"), {sphere, floor, above}, blue, grey, night, {{0., 0., 6.}, {0., 0., -1.}},
                 tr("hint.lab6.behind_surface")},
                {tr("what.lab6.li_from_below"), {sphere, floor, below}, blue, grey, night, {{0., -3., 1.5}, {0., 1., 0.}},
-                tr("hint.lab6.facing")},
+                tr("hint.lab6.from_below")},
                {tr("what.lab6.li_miss"), {sphere, floor, above}, blue, grey, night, {{0., 0., 0.}, glm::normalize(glm::dvec3(0., 1., 0.2))},
                 tr("hint.lab6.background")},
                {tr("what.lab6.li_drawn", {{"origin", show(drawn.origin)}, {"colour", show(colour)}, {"light", show(light.position)}}),
