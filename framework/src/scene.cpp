@@ -2,20 +2,54 @@
 
 #include "src/shadow_rays.h"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace raylab {
 
 namespace {
 
 thread_local std::uint64_t tShadowRays = 0;
+thread_local float tShadowOriginOffsetUlps = 0.f;
+
+// `p` moved by `ulps` float spacings along the normal of the object nearest to it (setShadowOriginOffsetOnThisThread).
+glm::vec3 movedOffItsSurface(const Scene& scene, const glm::vec3& p, float ulps) {
+    float nearest = std::numeric_limits<float>::infinity();
+    glm::vec3 normal(0.f);
+    for (const SphereGeometry& sphere : scene.spheres) {
+        const glm::vec3 fromCentre = p - sphere.center();
+        const float length = glm::length(fromCentre);
+        if (length > 0.f && std::abs(length - sphere.radius()) < nearest) {
+            nearest = std::abs(length - sphere.radius());
+            normal = fromCentre / length;
+        }
+    }
+    for (const Plane& plane : scene.planes) {
+        const float distance = std::abs(glm::dot(p - plane.point(), plane.normal()));
+        if (distance < nearest) {
+            nearest = distance;
+            normal = plane.normal();
+        }
+    }
+    const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.f});
+    const float spacing = std::nextafter(scale, std::numeric_limits<float>::infinity()) - scale;
+    return p + (ulps * spacing) * normal;
+}
 
 } // namespace
 
 std::uint64_t shadowRaysTracedByThisThread() { return tShadowRays; }
 
-bool Scene::occluded(const Ray& ray, float tMin, float tMax) const {
+void setShadowOriginOffsetOnThisThread(float ulps) { tShadowOriginOffsetUlps = ulps; }
+
+bool Scene::occluded(const Ray& given, float tMin, float tMax) const {
     ++tShadowRays;
+    const Ray ray = tShadowOriginOffsetUlps == 0.f
+                        ? given
+                        : Ray{movedOffItsSurface(*this, given.origin, tShadowOriginOffsetUlps), given.direction};
     // The open interval (tMin, tMax) of floats is the closed one between their neighbours, the
     // interval the shapes test.
     const float lo = std::nextafter(tMin, std::numeric_limits<float>::infinity());

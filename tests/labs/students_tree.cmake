@@ -2,14 +2,15 @@
 # `raylab grade` then builds what it needs; its own test suite (the one its README tells students to
 # run) passes with no lab written (each lab skipped), with lab 1 written (lab 1 passes, the others
 # skipped) and with every lab written (all pass, none skipped); the instructors' commands it does not
-# build (raylab numerics) say so.
+# build (raylab numerics) say so; a student's own correct labs get every point there, as grade-class
+# gives them.
 #
 #   cmake -DSTEP=<step> -DRAYLAB=<raylab program> -DSOLUTIONS=<solutions/> -DWORK=<scratch folder>
-#         [-DGENERATOR=...] [-DCCACHE=<ccache>] -P tests/labs/students_tree.cmake
+#         -DVARIANT=<applied variant> [-DGENERATOR=...] [-DCCACHE=<ccache>] -P tests/labs/students_tree.cmake
 # It runs in steps, one ctest test each (tests/CMakeLists.txt), each in the tree the steps before it
 # left (ctest prints nothing while a test runs; with a warm compiler cache each step lasts seconds): distribute,
 # build-framework, build-figures, grade-builds, build-suite, suite-none, instructors-commands,
-# suite-lab1, broken-lab, two-at-once, suite-all. It builds the tree on its own, from its own files: nothing of the
+# suite-lab1, broken-lab, two-at-once, suite-all, variants. It builds the tree on its own, from its own files: nothing of the
 # repository's build is linked (a compiler cache may only skip compiling the same command twice).
 # Every program runs from an argument vector (execute_process), never through a shell.
 cmake_minimum_required(VERSION 3.22) # if(IN_LIST)
@@ -200,6 +201,60 @@ function(step_suite_all)
   suite_passes("${numbers}")
   list(LENGTH numbers count)
   message(STATUS "students' tree: its suite passes with 0, 1 and all ${count} labs written")
+endfunction()
+
+# 6. A student's own correct labs, written from the handouts and not from solutions/ (VARIANT: the
+# folder where the repository's build applied tests/variants/independent_student.patch; lab 1 and
+# any file it leaves from solutions/): every point in the tree's self-grade, where each lab runs over
+# the student's own earlier labs, and the same points, lab by lab, as the instructor's `grade-class`
+# of the same files, where each lab runs over the references of the others (docs/grading.md,
+# "Deterministic figures": rays a rounding apart upstream do not cost a lab its points).
+function(step_variants)
+  if(NOT VARIANT OR NOT IS_DIRECTORY ${VARIANT})
+    message(FATAL_ERROR "students' tree: -DVARIANT=<the applied independent_student variant> is required")
+  endif()
+  tree_labs(folders numbers)
+  foreach(folder IN LISTS folders)
+    write_lab(${folder})
+    file(GLOB files ${VARIANT}/${folder}/*.cpp)
+    foreach(file IN LISTS files)
+      get_filename_component(name ${file} NAME)
+      file(READ ${file} text)
+      file(WRITE ${tree}/labs/${folder}/${name} "${text}")
+    endforeach()
+  endforeach()
+  run(self 0 ${build}/bin/raylab --lang en grade)
+  set(class ${WORK}/variant-class)
+  file(REMOVE_RECURSE ${class})
+  file(MAKE_DIRECTORY ${class}/student)
+  file(COPY ${tree}/labs DESTINATION ${class}/student)
+  # The test's own code: no sandbox needed (grade-class refuses to run without one where bubblewrap
+  # cannot start otherwise), and none changes a point.
+  run(output 0 ${RAYLAB} --lang en grade-class ${class} --out ${WORK}/variant-class-out --no-sandbox)
+  file(STRINGS ${WORK}/variant-class-out/grades.csv rows)
+  list(GET rows 0 header)
+  list(GET rows 1 row)
+  string(REPLACE "," ";" header "${header}")
+  string(REPLACE "," ";" row "${row}")
+  foreach(n IN LISTS numbers)
+    string(REGEX MATCH "lab ${n}: ([0-9.]+) / ([0-9.]+) point" said "${self}")
+    if(NOT said)
+      message(FATAL_ERROR "students' tree: no points of lab ${n} in the self-grade:\n${self}")
+    endif()
+    set(points ${CMAKE_MATCH_1})
+    if(NOT points STREQUAL CMAKE_MATCH_2)
+      message(FATAL_ERROR "students' tree: a student's own correct labs: lab ${n} ${points} / ${CMAKE_MATCH_2} in the self-grade:\n${self}")
+    endif()
+    list(FIND header "lab${n}" column)
+    if(column EQUAL -1)
+      message(FATAL_ERROR "students' tree: no column lab${n} in grades.csv: ${header}")
+    endif()
+    list(GET row ${column} graded)
+    if(NOT graded STREQUAL points)
+      message(FATAL_ERROR "students' tree: lab ${n}: ${points} points in the self-grade, ${graded} by grade-class:\n${self}\n${output}")
+    endif()
+  endforeach()
+  message(STATUS "students' tree: a student's own correct labs get every point, the same as grade-class gives them")
 endfunction()
 
 run_step()

@@ -46,6 +46,10 @@ int countNonFinitePixels(const Image8& reference, const Image8& student) {
     return count;
 }
 
+// The ambiguous pixels it excuses are those whose colour changes under rays a rounding apart from the
+// reference's (reference_render.cpp's ambiguousPixels: the centre ray moved, the shadow rays' points
+// moved off their surfaces): what a correct lab upstream of the figure's, written another way, can
+// change. Any other pixel is held to 1 LSB, so a mistake that changes more than those pixels fails.
 ImageVerdict compareDeterministic(const FigureReference& reference, const Image8& student) {
     ImageVerdict v;
     if (!precheck(reference, student, v)) return v;

@@ -4,6 +4,7 @@
 
 #include "src/figure.h"
 #include "src/parallel.h"
+#include "src/shadow_rays.h"
 
 #include <glm/common.hpp>
 
@@ -19,6 +20,20 @@ namespace {
 // How far from the centre ray a neighbour ray of ambiguousPixels is, in pixels.
 constexpr float kAmbiguity = 2e-3f;
 
+// How far off its surface, in float spacings at its scale, ambiguousPixels moves the point a shadow
+// ray leaves, on each side: a few times the rounding of a hit point (half a spacing per coordinate,
+// plus t's own few ulps), so that it covers any correct formula upstream (docs/grading.md).
+constexpr float kOffSurfaceUlps = 4.f;
+
+// While alive, the shadow rays of this thread leave their points moved off their surfaces (src/shadow_rays.h).
+class ShadowOriginsMoved {
+public:
+    explicit ShadowOriginsMoved(float ulps) { setShadowOriginOffsetOnThisThread(ulps); }
+    ~ShadowOriginsMoved() { setShadowOriginOffsetOnThisThread(0.f); }
+    ShadowOriginsMoved(const ShadowOriginsMoved&) = delete;
+    ShadowOriginsMoved& operator=(const ShadowOriginsMoved&) = delete;
+};
+
 // The rays of a figure, as every render of it sees them (figure.h's SceneRender).
 class FigureRays {
 public:
@@ -33,15 +48,27 @@ private:
     float m_width, m_height;
 };
 
+bool differ(const Color& a, const Color& b) {
+    for (int k = 0; k < 3; ++k)
+        if (std::abs(int(toByte(a[k])) - int(toByte(b[k]))) > 1) return true;
+    return false;
+}
+
+// A pixel is ambiguous when its colour changes by more than 1 LSB under rays a rounding apart from
+// the reference's: its centre ray moved by kAmbiguity (a silhouette, a shadow's edge, a grazing hit
+// through the pixel's centre), or its shadow rays leaving from points kOffSurfaceUlps off their
+// surfaces, either side (a shadow ray that grazes the surface it leaves: the terminator of a sphere
+// lit from the side, where one correct lab's hit point shadows itself and another's does not).
 bool ambiguousAt(const FigureRays& rays, int i, int j) {
     const float x = float(i) + 0.5f, y = float(j) + 0.5f;
     const Color centre = rays.at(x, y);
     for (float dx : {-kAmbiguity, 0.f, kAmbiguity})
-        for (float dy : {-kAmbiguity, 0.f, kAmbiguity}) {
-            const Color c = rays.at(x + dx, y + dy);
-            for (int k = 0; k < 3; ++k)
-                if (std::abs(int(toByte(c[k])) - int(toByte(centre[k]))) > 1) return true;
-        }
+        for (float dy : {-kAmbiguity, 0.f, kAmbiguity})
+            if (differ(rays.at(x + dx, y + dy), centre)) return true;
+    for (float ulps : {-kOffSurfaceUlps, kOffSurfaceUlps}) {
+        const ShadowOriginsMoved moved(ulps);
+        if (differ(rays.at(x, y), centre)) return true;
+    }
     return false;
 }
 
