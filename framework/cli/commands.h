@@ -79,8 +79,10 @@ std::filesystem::path newerSourceFile(const std::vector<std::filesystem::path>& 
 // nothing changed or this program could not be built). The build folder is locked meanwhile
 // (grader::lockBuildFolder). In a students' tree, a lab that does not compile is built from its stub
 // into this program, so that it still runs (lastBuildProblem says why; grader::labsNotBuilt which).
+// GradingBuild: the other targets are the grading programs of `agentLabs`; when only the labs' code
+// changed since they were built (from here or by hand), they alone are rebuilt, not this program.
 FreshBuild ensureFreshBuild(const Context& context, const std::vector<std::string>& targets, BuildInputs inputs,
-                            bool missing = false);
+                            bool missing = false, const std::vector<int>& agentLabs = {});
 // The grading programs brought up to date (ensureFreshBuild): lab `lab`'s alone, or all of them (0).
 void ensureFreshAgents(const Context& context, int lab);
 // This build's grading programs of `labs`: those whose code the last build compiled, and the labs

@@ -195,7 +195,8 @@ void ensureFreshAgents(const Context& context, int lab) {
     bool isolated = false;
     const bool noAgent = grader::findAgents(build::kBinaryDir, courseLabs().numbers(), isolated).empty();
     const std::string agents = lab != 0 ? grader::labAgentTarget(build::kBinaryDir, lab) : "raylab-agents";
-    ensureFreshBuild(context, {thisProgram(), agents}, BuildInputs::GradingBuild, noAgent);
+    ensureFreshBuild(context, {thisProgram(), agents}, BuildInputs::GradingBuild, noAgent,
+                     lab != 0 ? std::vector<int>{lab} : courseLabs().numbers());
 }
 
 BuiltAgents agentsOfThisBuild(const grader::LabCatalog& course, const std::vector<int>& labs) {
@@ -213,7 +214,8 @@ fs::path lastBuildProblemFile() { return fs::path(build::kBuildDir) / "raylab-bu
 
 std::string lastBuildProblem() { return readWholeFile(lastBuildProblemFile()).value_or(""); }
 
-FreshBuild ensureFreshBuild(const Context& context, const std::vector<std::string>& targets, BuildInputs inputs, bool missing) {
+FreshBuild ensureFreshBuild(const Context& context, const std::vector<std::string>& targets, BuildInputs inputs, bool missing,
+                            const std::vector<int>& agentLabs) {
     const fs::path program = programInBuild(targets.front());
     // The program, or the last rebuild from here when it is later; a program not built yet (the
     // figures' build makes raylab alone, not the grading agents) is built now.
@@ -225,9 +227,15 @@ FreshBuild ensureFreshBuild(const Context& context, const std::vector<std::strin
         const fs::path changed = newerSourceFile(inputs == BuildInputs::GradingBuild ? graderInputs() : studentLabFolders(false), built);
         if (inputs == BuildInputs::GradingBuild && changed.empty()) {
             // Only the labs' code may have changed: the grading programs run it, this program does not
-            // (their last build from here is what counts: `raylab lab` rebuilds this program alone).
+            // (their last build, from here or by hand, is what counts: `raylab lab` rebuilds this
+            // program alone).
             const std::vector<std::string> agents(targets.begin() + 1, targets.end());
-            const auto agentsBuilt = std::max(writtenAt(rebuiltStamp(targets)), writtenAt(rebuiltStamp(agents)));
+            bool isolated = false;
+            const std::vector<grader::AgentPlan> programs = grader::findAgents(build::kBinaryDir, agentLabs, isolated);
+            // The oldest of them; a lab without one (never built) has them built again.
+            auto agentsBuilt = programs.size() < agentLabs.size() ? fs::file_time_type::min() : fs::file_time_type::max();
+            for (const grader::AgentPlan& agent : programs) agentsBuilt = std::min(agentsBuilt, writtenAt(agent.program));
+            agentsBuilt = std::max({agentsBuilt, writtenAt(rebuiltStamp(targets)), writtenAt(rebuiltStamp(agents))});
             const fs::path lab = newerSourceFile(studentLabFolders(true), agentsBuilt);
             if (lab.empty()) return FreshBuild::Fresh;
             const std::unique_ptr<FileLock> lock = grader::lockBuildFolder(build::kBuildDir);
