@@ -22,7 +22,9 @@ export CCACHE_DISABLE=1
 unset CMAKE_CXX_COMPILER_LAUNCHER
 # French, where the machine has the locale (`locale -a`); English otherwise, said.
 if locale -a 2>/dev/null | grep -qi '^fr_FR\.utf-\?8$'; then
-  export LANG=fr_FR.UTF-8 LC_ALL=fr_FR.UTF-8
+  export LANG=fr_FR.UTF-8
+  unset LC_ALL
+  export LC_NUMERIC=C # this script's own figures: 1.5, not 1,5
 else
   echo "measure_student_day: no fr_FR.UTF-8 locale here (locale-gen): measured in English" >&2
 fi
@@ -79,7 +81,7 @@ timed "edit, grade --lab $n (again)" build/bin/raylab grade --lab "$n"
 (cd "$tp1" && exec build/bin/raylab watch "$n" --no-open) >"$work/watch.log" 2>&1 &
 watcher=$!
 trap 'kill $watcher 2>/dev/null || true' EXIT
-refreshed() { grep -c -E 'refreshed|actualisée|rafraîchie' "$work/watch.log" || true; }
+refreshed() { grep -c -E 'page refreshed|page à jour' "$work/watch.log" || true; }
 for _ in $(seq 1 600); do [ "$(refreshed)" -ge 1 ] && break; sleep 0.1; done
 for k in 1 2 3; do
   before=$(refreshed)
