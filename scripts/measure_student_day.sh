@@ -38,7 +38,7 @@ timed() {
   shift
   before=$(load)
   (cd "$work/tp1" && /usr/bin/time -f "%e %U %S" -o "$work/$name.time" "$@") >"$work/$name.log" 2>&1 || status=$?
-  read -r wall user system <"$work/$name.time"
+  read -r wall user system < <(tail -n 1 "$work/$name.time") # after "Command exited with non-zero status N"
   printf '%-34s %8.1f s wall %8.1f s CPU  exit %d  load %s -> %s\n' "$name" "$wall" "$(echo "$user + $system" | bc)" \
     "$status" "$before" "$(load)"
 }
