@@ -230,16 +230,16 @@ FreshBuild ensureFreshBuild(const Context& context, const std::vector<std::strin
             // (their last build, from here or by hand, is what counts: `raylab lab` rebuilds this
             // program alone).
             const std::vector<std::string> agents(targets.begin() + 1, targets.end());
-            bool isolated = false;
-            const std::vector<grader::AgentPlan> programs = grader::findAgents(build::kBinaryDir, agentLabs, isolated);
-            // The oldest of them; a lab without one (never built) has them built again.
-            auto agentsBuilt = programs.size() < agentLabs.size() ? fs::file_time_type::min() : fs::file_time_type::max();
-            for (const grader::AgentPlan& agent : programs) agentsBuilt = std::min(agentsBuilt, writtenAt(agent.program));
-            agentsBuilt = std::max({agentsBuilt, writtenAt(rebuiltStamp(targets)), writtenAt(rebuiltStamp(agents))});
-            const fs::path lab = newerSourceFile(studentLabFolders(true), agentsBuilt);
-            if (lab.empty()) return FreshBuild::Fresh;
+            // Each lab's program against the files of the labs it is built from; a lab whose code did
+            // not compile at the last try, unchanged since, is not tried again.
+            const auto tried = std::max(writtenAt(rebuiltStamp(targets)), writtenAt(rebuiltStamp(agents)));
+            const grader::LabCatalog course = courseLabs();
+            const std::vector<int> stale = grader::labsNotBuilt(build::kBinaryDir, labsFolder(), course, agentLabs, tried);
+            if (stale.empty()) return FreshBuild::Fresh;
+            const fs::path changed = newerSourceFile(studentLabFolders(true), tried);
+            const std::string lab = changed.empty() ? "labs/" : fs::relative(changed, build::kSourceDir).generic_string();
             const std::unique_ptr<FileLock> lock = grader::lockBuildFolder(build::kBuildDir);
-            std::printf("%s\n", tr("cli.rebuilding", {{"file", fs::relative(lab, build::kSourceDir).generic_string()}}).c_str());
+            std::printf("%s\n", tr("cli.rebuilding", {{"file", lab}}).c_str());
             buildAndRecord(agents, false); // a lab that does not compile is the grade's to report
             stampRebuilt(agents);
             return FreshBuild::Rebuilt;

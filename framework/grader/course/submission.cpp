@@ -302,14 +302,15 @@ bool compiledFileNewer(const fs::path& folder, fs::file_time_type since) {
 } // namespace
 
 std::vector<int> labsNotBuilt(const fs::path& binDir, const fs::path& labsDir, const LabCatalog& course,
-                              const std::vector<int>& labs) {
+                              const std::vector<int>& labs, fs::file_time_type tried) {
     bool isolated = false;
     findAgents(binDir, course.numbers(), isolated);
     std::vector<int> notBuilt;
     for (int lab : labs) {
         const fs::path program = isolated ? labAgent(binDir, lab) : ownLabAgent(binDir, lab);
         std::error_code error;
-        const auto built = fs::last_write_time(program, error);
+        auto built = fs::last_write_time(program, error);
+        if (!error) built = std::max(built, tried);
         // Graded alone, an agent holds its own lab's files only; else those of the labs it uses too.
         const std::vector<int> sources = isolated ? std::vector<int>{lab} : labClosure(course, lab);
         const bool stale = error || std::any_of(sources.begin(), sources.end(), [&](int source) {

@@ -46,8 +46,11 @@ std::string labAgentTarget(const std::filesystem::path& binDir, int lab);
 // Those of `labs` whose own agent in `binDir` is missing or older than a file the compiler reads in
 // the folder (in `labsDir`) of its lab or, without the reference, of a lab it uses: the last build
 // of that code failed, and what runs there is not what the student wrote.
+// `tried`: a build of them tried then (a lab newer than its program but older than that is one whose
+// code did not compile then, and has not changed since).
 std::vector<int> labsNotBuilt(const std::filesystem::path& binDir, const std::filesystem::path& labsDir,
-                              const LabCatalog& course, const std::vector<int>& labs);
+                              const LabCatalog& course, const std::vector<int>& labs,
+                              std::filesystem::file_time_type tried = std::filesystem::file_time_type::min());
 
 // A build folder's lock (kBuildLockFile in it): raylab builds there one at a time; a second build
 // waits, saying for whom, then finds up to date what the first built.
