@@ -1,7 +1,8 @@
 // The students' tree's own README.md and LISEZMOI.md (`raylab distribute`): nothing about the
 // solutions or out/reference/, every lab's handout, and every command they show exists: each fenced
 // command is run with --help (raylab's), found as a workflow preset of the tree (cmake's), or is an
-// executable file of the tree (scripts/setup.sh). The build command is the one distribute prints.
+// executable file of the tree (scripts/setup.sh) given options of its own. The build command is the
+// one distribute prints.
 #include "grader/lab_catalog.h"
 #include "support/files.h"
 #include "support/run_program.h"
@@ -75,10 +76,14 @@ void checkCommand(const fs::path& tree, const std::vector<std::string>& command,
         const std::vector<std::string> presets = workflowPresets(tree);
         CHECK_MESSAGE(std::find(presets.begin(), presets.end(), command[3]) != presets.end(), presets.size() << " workflow presets");
     } else {
-        REQUIRE(command.size() == 1);
         const fs::path script = tree / command[0];
-        CHECK(fs::is_regular_file(script));
+        REQUIRE(fs::is_regular_file(script));
         CHECK((fs::status(script).permissions() & fs::perms::owner_exec) != fs::perms::none);
+        // its options (setup.sh --tests) are the script's own
+        for (auto option = command.begin() + 1; option != command.end(); ++option) {
+            CHECK_MESSAGE(option->starts_with("--"), *option);
+            CHECK_MESSAGE(readFile(script).find(*option + ")") != std::string::npos, *option << " is not an option of " << script);
+        }
     }
 }
 
