@@ -33,18 +33,25 @@ bool writeFigure(const std::string& id, const std::filesystem::path& file, const
     }
 }
 
+// The lab, as "6", that stands in this program as its stub because its code does not compile, and
+// that kept figure `d` from being drawn: its own lab, else the lab of the stub it stopped in; "" if none.
+std::string brokenLabOf(const SceneDescription& d, const NotDoneYet& todo, const grader::LabCatalog& labs) {
+    if (const int own = labs.labNumberOfFigure(d.id); own != 0 && build::labOrigin(own) == "stubs") return std::to_string(own);
+    if (std::filesystem::path(todo.file()).generic_string().find("framework/stubs/") == std::string::npos) return "";
+    const std::string& lab = todo.lab(); // "lab 6"
+    const std::size_t digit = lab.find_first_of("0123456789");
+    return digit == std::string::npos ? lab : lab.substr(digit);
+}
+
 // Writes the figure's PNG and prints its line; returns false when the figure is not usable.
 bool report(const SceneDescription& d, const FigureResult& r, const std::filesystem::path& file, const grader::LabCatalog& labs) {
     switch (r.status) {
     case FigureResult::Status::NotDoneYet:
-        // A stub of framework/stubs/ stands for a lab whose code does not compile (fresh_build.cpp).
-        if (std::filesystem::path(r.todo->file()).generic_string().find("framework/stubs/") != std::string::npos) {
-            const std::string& lab = r.todo->lab(); // "lab 6"
-            const std::size_t digit = lab.find_first_of("0123456789");
+        // A stub of framework/stubs/ stands for a lab whose code does not compile (fresh_build.cpp):
+        // the figure's own lab, or the lab it stopped in.
+        if (const std::string broken = brokenLabOf(d, *r.todo, labs); !broken.empty()) {
             std::printf("  %-24s %s\n", d.id.c_str(),
-                        tr("figures.does_not_compile", {{"lab", digit == std::string::npos ? lab : lab.substr(digit)},
-                                                        {"log", lastBuildProblemFile().string()}})
-                            .c_str());
+                        tr("figures.does_not_compile", {{"lab", broken}, {"log", lastBuildProblemFile().string()}}).c_str());
             return false;
         }
         std::printf("  %-24s %s\n", d.id.c_str(), tr("figures.todo", {{"message", grader::waitingMessage(labs, d.id, *r.todo)}}).c_str());

@@ -37,13 +37,10 @@ std::vector<fs::path> studentLabFolders(bool everyLab) {
         for (const grader::LabDescription& lab : catalog.labs) folders.push_back(labsFolder() / lab.id);
         return folders;
     }
-    std::istringstream origins(build::kLabOrigins);
-    for (std::string origin; origins >> origin;) {
-        const auto equals = origin.find('=');
+    for (const grader::LabDescription& lab : catalog.labs) {
         // a lab built from its stub because its code did not compile is watched as the others
-        if (equals == std::string::npos || (origin.substr(equals + 1) != "labs" && origin.substr(equals + 1) != "stubs")) continue;
-        const int number = std::atoi(origin.c_str() + 3); // "labN"
-        if (const grader::LabDescription* lab = catalog.lab(number)) folders.push_back(labsFolder() / lab->id);
+        const std::string origin = build::labOrigin(lab.number);
+        if (origin == "labs" || origin == "stubs") folders.push_back(labsFolder() / lab.id);
     }
     return folders;
 }
