@@ -5,6 +5,7 @@
 #include "src/messages.h"
 #include "src/windows_api.h"
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -143,10 +144,19 @@ void chooseLanguage(int argc, char** argv) {
 
 } // namespace
 
+#ifndef _WIN32
+// A reader of the output that goes away (`raylab grade | head`) costs the lines it did not read, not
+// the grade: writes fail, the run goes on and writes its reports. A handler, not SIG_IGN, so that the
+// programs this one starts get the default again.
+extern "C" void carryOnWithoutReader(int) {}
+#endif
+
 int main(int argc, char** argv) {
     using namespace raylab;
 #ifdef _WIN32
     SetConsoleOutputCP(CP_UTF8); // the catalogues' French is UTF-8 (the console's code page is not)
+#else
+    std::signal(SIGPIPE, carryOnWithoutReader);
 #endif
     chooseLanguage(argc, argv);
     CLI::App app{tr("cli.program", {{"impl", tr(std::string("figures.impl_") + build::kImpl)}, {"origins", build::kLabOrigins}})};

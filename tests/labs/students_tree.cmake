@@ -174,7 +174,8 @@ function(step_broken_lab)
 endfunction()
 
 # 7. One build at a time: two `raylab grade` started together after an edit (a pipeline: both run at
-# once) both grade, and the programs are whole after them.
+# once) both grade, and the programs are whole after them. The first one's output goes to the second,
+# which does not read it and may end first: the first grades all the same (no SIGPIPE death).
 function(step_two_at_once)
   tree_labs(folders numbers)
   list(GET folders 0 written)
