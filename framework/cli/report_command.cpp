@@ -8,6 +8,7 @@
 #include "report/report_kit.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -32,6 +33,7 @@ void addReportCommand(CLI::App& app, Context& context) {
             request->buildMessage = std::move(built.message);
         }
         request->out = *out;
+        request->treeOut = std::filesystem::path(build::kSourceDir) / "out";
         request->lang = languageCode(language()); // the global --lang, or the environment's (raylab/messages.h)
         request->threads = context.threads;
         request->progress = stderrIsInteractive();

@@ -147,7 +147,7 @@ std::optional<CloseUp> cropCloseUps(const std::map<std::string, Image8>& images,
 }
 
 // report.md and report.html: this run's generated parts around the student's text of report.md.
-void writePages(const KitContent& content, const fs::path& out) {
+void writePages(const KitContent& content, const fs::path& out, const fs::path& treeOut) {
     const fs::path markdown = out / "report.md";
     PreviousText previous;
     if (fs::exists(markdown)) {
@@ -160,8 +160,14 @@ void writePages(const KitContent& content, const fs::path& out) {
     std::vector<UnplacedText> moved;
     const std::vector<Segment> document = placeStudentText(reportSegments(content), previous, content.words, &moved);
     writeFileAtomically(markdown, toMarkdown(document));
-    writeFileAtomically(out / "report.html", reportHtml(document, content.words));
+    std::vector<std::string> leftOut;
+    const ImageSources images{out / "report.html", {out, treeOut}};
+    writeFileAtomically(out / "report.html", reportHtml(document, content.words, images, leftOut));
     std::printf("%s", movedTextNotice(moved, markdown.string(), content.words).c_str()); // the student must know
+    for (const std::string& address : leftOut)
+        std::printf("%s\n", content.words.text("image_left_out_notice", {{"file", printablePath(markdown)}, {"address", printableName(address)},
+                                                                          {"kit", printablePath(out)}, {"out", printablePath(treeOut)}})
+                                .c_str());
 }
 
 int printPdf(const fs::path& out, const Words& words) {
@@ -199,7 +205,7 @@ int writeReportKit(const ReportRequest& request) {
     compareFigures(figures, images, result, setup.references, out);
     const std::optional<CloseUp> closeUp = cropCloseUps(images, setup.references, loadFiguresInLabOrder(request.scenes, setup.labs),
                                                         request.scenes.empty() ? request.labs : request.scenes, out);
-    writePages(KitContent{words, title, result, setup.labs, std::move(figures), closeUp}, out);
+    writePages(KitContent{words, title, result, setup.labs, std::move(figures), closeUp}, out, request.treeOut);
 
     std::printf("%s", terminalSummary(result).c_str());
     if (title.placeholders) std::printf("%s\n", words.text("fill_title_block", {{"file", (out / "report.toml").string()}}).c_str());

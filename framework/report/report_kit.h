@@ -12,6 +12,7 @@ namespace raylab::report {
 
 struct ReportRequest {
     std::filesystem::path out;        // the kit's folder
+    std::filesystem::path treeOut;    // the tree's out/: report.html shows images from there and the kit alone
     std::string lang = "en";          // "en" or "fr"
     bool pdf = false;                 // also print report.pdf
     int threads = 0;                  // 0: one per core

@@ -189,10 +189,32 @@ void appendLab(std::vector<Segment>& document, const LabOutcome& lab, const KitC
     document.push_back({Segment::Kind::Student, key, std::string("*") + w.text("your_text_hint") + "*\n"});
 }
 
-// Markdown to HTML by cmark, safe: raw HTML and javascript: links are left out.
-std::string markdownToHtml(const std::string& markdown) {
-    const std::unique_ptr<char, decltype(&std::free)> html(
-        cmark_markdown_to_html(markdown.c_str(), markdown.size(), CMARK_OPT_DEFAULT | CMARK_OPT_SMART), &std::free);
+// Markdown to HTML by cmark, safe: raw HTML and javascript: links are left out, and so is an image from
+// outside the allowed folders (image_sources.h): a line of text in its place says so, and its address
+// goes to `leftOut`.
+std::string markdownToHtml(const std::string& markdown, const ImageSources& images, const Words& words,
+                           std::vector<std::string>& leftOut) {
+    const std::unique_ptr<cmark_node, decltype(&cmark_node_free)> document(
+        cmark_parse_document(markdown.c_str(), markdown.size(), CMARK_OPT_DEFAULT | CMARK_OPT_SMART), &cmark_node_free);
+    if (!document) return "";
+    std::vector<cmark_node*> refused; // replaced after the walk, which a change would disturb
+    const std::unique_ptr<cmark_iter, decltype(&cmark_iter_free)> walk(cmark_iter_new(document.get()), &cmark_iter_free);
+    for (cmark_event_type event; (event = cmark_iter_next(walk.get())) != CMARK_EVENT_DONE;) {
+        cmark_node* node = cmark_iter_get_node(walk.get());
+        if (event != CMARK_EVENT_ENTER || cmark_node_get_type(node) != CMARK_NODE_IMAGE) continue;
+        const char* url = cmark_node_get_url(node);
+        if (!imageAllowed(url != nullptr ? url : "", images)) refused.push_back(node);
+    }
+    for (cmark_node* image : refused) {
+        const char* url = cmark_node_get_url(image);
+        leftOut.emplace_back(url != nullptr ? url : "");
+        cmark_node* note = cmark_node_new(CMARK_NODE_TEXT);
+        cmark_node_set_literal(note, words.text("image_left_out", {{"address", leftOut.back()}}).c_str());
+        cmark_node_replace(image, note);
+        cmark_node_free(image);
+    }
+    const std::unique_ptr<char, decltype(&std::free)> html(cmark_render_html(document.get(), CMARK_OPT_DEFAULT | CMARK_OPT_SMART),
+                                                           &std::free);
     return html ? std::string(html.get()) : std::string();
 }
 
@@ -219,12 +241,14 @@ std::vector<Segment> reportSegments(const KitContent& content) {
     return document;
 }
 
-std::string reportHtml(const std::vector<Segment>& document, const Words& words) {
+std::string reportHtml(const std::vector<Segment>& document, const Words& words, const ImageSources& images,
+                       std::vector<std::string>& leftOut) {
     std::string body;
-    for (const Segment& s : document)
-        body += s.kind == Segment::Kind::Student
-                    ? substitute(templates::kStudentTextHtml, {{"key", escapeMarkup(s.key)}, {"content", markdownToHtml(s.text)}})
-                    : markdownToHtml(s.text);
+    for (const Segment& s : document) {
+        const std::string html = markdownToHtml(s.text, images, words, leftOut);
+        body += s.kind == Segment::Kind::Student ? substitute(templates::kStudentTextHtml, {{"key", escapeMarkup(s.key)}, {"content", html}})
+                                                 : html;
+    }
     return substitute(templates::kReportHtml, {{"lang", words.code()},
                                                {"title", escapeMarkup(words.text("title"))},
                                                {"style", templates::kReportCss},

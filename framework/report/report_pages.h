@@ -4,6 +4,7 @@
 
 #include "grader/judge/grade.h"
 #include "raylab/renderer.h"
+#include "report/image_sources.h"
 #include "report/student_text.h"
 #include "report/title_block.h"
 #include "report/words.h"
@@ -46,7 +47,9 @@ struct KitContent {
 // This run's document, each student segment holding its placeholder.
 std::vector<Segment> reportSegments(const KitContent& content);
 
-// report.html: the page template around the document, the student's segments framed.
-std::string reportHtml(const std::vector<Segment>& document, const Words& words);
+// report.html: the page template around the document, the student's segments framed; the address of
+// each image left out (image_sources.h) is added to `leftOut`.
+std::string reportHtml(const std::vector<Segment>& document, const Words& words, const ImageSources& images,
+                       std::vector<std::string>& leftOut);
 
 } // namespace raylab::report

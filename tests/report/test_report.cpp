@@ -196,7 +196,10 @@ TEST_CASE("a re-run keeps the student's text: in place, rendered in the HTML, es
         REQUIRE(at != std::string::npos);
         md.replace(at + marker.size(), placeholder.size(), text);
     };
-    writeIn(2, "Lab 2: the camera *looks* down **-z**; see `generateRay`.\n\n- one\n- two\n");
+    // Images: one the kit rendered, and two from elsewhere, which report.html and the PDF leave out.
+    const std::string figure = "figures/" + courseFigures().front().second->id + ".png";
+    writeIn(2, "Lab 2: the camera *looks* down **-z**; see `generateRay`.\n\n- one\n- two\n\n![mine](" + figure +
+                   ") ![leak](/etc/hostname) ![up](../../../secret.png)\n");
     writeIn(3, "<script>alert('lab 3')</script> & the sphere.\n");
     // Lab 3's section moved to the top of the file.
     const std::size_t lab3 = md.find("<!-- raylab:student lab3 -->");
@@ -229,6 +232,13 @@ TEST_CASE("a re-run keeps the student's text: in place, rendered in the HTML, es
     CHECK(html.find("<li>one</li>") != std::string::npos);
     CHECK(html.find("<script>alert") == std::string::npos);
     CHECK(html.find("A conclusion written after every marker.") != std::string::npos);
+    CHECK(html.find("<img src=\"" + figure + "\" alt=\"mine\"") != std::string::npos);
+    for (const std::string address : {"/etc/hostname", "../../../secret.png"}) {
+        CHECK_MESSAGE(html.find("src=\"" + address) == std::string::npos, address);
+        CHECK_MESSAGE(html.find("[image left out: " + address + "]") != std::string::npos, address);
+        CHECK_MESSAGE(output.find(file + ": the image " + address + " is left out of report.html and the PDF") != std::string::npos,
+                      output);
+    }
 }
 
 TEST_CASE("the title block comes from report.toml: created with placeholders, then the student's; errors name the line and key") {
