@@ -6,6 +6,7 @@
 #include "grader/lab_catalog.h"
 #include "grader/sandbox/process.h"
 #include "src/messages.h"
+#include "src/text.h"
 #include "watch/file_watcher.h"
 #include "watch/http_rules.h"
 #include "watch/pixel_inspector.h"
@@ -95,7 +96,17 @@ int runWatch(const WatchOptions& o, const Context& context) {
     watch::WatchServer server(page, settings.out, watch::newToken(),
                               [&inspector](const std::string& figure, int x, int y) { return inspector.inspect(figure, x, y); });
     server.bind(o.port);
+    // The server's thread is stopped and joined on every way out, an exception's too: a joinable
+    // thread left behind would end the program (std::terminate) instead of saying what went wrong.
     std::thread serving([&server] { server.serve(); });
+    const struct StopServing {
+        watch::WatchServer& server;
+        std::thread& serving;
+        ~StopServing() {
+            server.stop();
+            serving.join();
+        }
+    } stopServing{server, serving};
     watch::FileWatcher files({labsFolder() / watched->id});
     std::printf("%s\n", tr("watch.serving", {{"lab", std::to_string(lab)}, {"address", server.address()},
                                              {"folder", "labs/" + watched->id + "/"}, {"how", files.how()}})
@@ -109,10 +120,16 @@ int runWatch(const WatchOptions& o, const Context& context) {
     bool first = true;
     while (g_stop == 0) {
         if (first || !changed.empty()) {
-            if (!first) std::printf("%s\n", tr("watch.saved", {{"file", fs::relative(changed.front(), build::kSourceDir).generic_string()}}).c_str());
-            std::fflush(stdout);
-            session.refresh(changed);
-            std::printf("%s\n", tr("watch.refreshed", {{"address", server.address()}}).c_str());
+            // Whatever a save brings (a file name of any bytes, a compiler's output of any kind), the
+            // page keeps serving: a problem is said, and the next save tries again.
+            try {
+                if (!first) std::printf("%s\n", tr("watch.saved", {{"file", printablePath(fs::relative(changed.front(), build::kSourceDir))}}).c_str());
+                std::fflush(stdout);
+                session.refresh(changed);
+                std::printf("%s\n", tr("watch.refreshed", {{"address", server.address()}}).c_str());
+            } catch (const std::exception& e) {
+                std::printf("%s\n", tr("watch.problem", {{"problem", printableText(e.what())}}).c_str());
+            }
             std::fflush(stdout);
             first = false;
         }
@@ -123,8 +140,6 @@ int runWatch(const WatchOptions& o, const Context& context) {
                 changed.insert(changed.end(), more.begin(), more.end());
         }
     }
-    server.stop();
-    serving.join();
     std::printf("%s\n", tr("watch.stopped").c_str());
     return 0;
 }

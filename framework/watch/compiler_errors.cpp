@@ -1,6 +1,8 @@
 #include "watch/compiler_errors.h"
 
 #include <algorithm>
+#include <charconv>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -24,6 +26,15 @@ std::string treeFile(const fs::path& named, const fs::path& sourceDir) {
     return !rest.empty() && fs::is_regular_file(sourceDir / rest, error) ? rest.generic_string() : named.generic_string();
 }
 
+// A line or column number; none when it does not fit an int (`#error x:99999999999:1: error: y` is
+// echoed by the compiler under its error: that line is the student's text, not an error).
+std::optional<int> number(const std::ssub_match& digits) {
+    int value = 0;
+    const auto [end, error] = std::from_chars(&*digits.first, &*digits.first + digits.length(), value);
+    if (error != std::errc() || end != &*digits.first + digits.length()) return std::nullopt;
+    return value;
+}
+
 } // namespace
 
 std::vector<CompilerError> compilerErrors(const std::string& output, const fs::path& sourceDir) {
@@ -35,8 +46,9 @@ std::vector<CompilerError> compilerErrors(const std::string& output, const fs::p
     for (std::string line; std::getline(lines, line);) {
         std::smatch m;
         if (!std::regex_match(line, m, gnu) && !std::regex_match(line, m, msvc)) continue;
-        CompilerError e{fs::path(m[1].str()).lexically_normal().generic_string(), std::stoi(m[2]),
-                        m[3].matched ? std::stoi(m[3]) : 0, m[4]};
+        const std::optional<int> lineNumber = number(m[2]), column = m[3].matched ? number(m[3]) : 0;
+        if (!lineNumber || !column) continue;
+        CompilerError e{fs::path(m[1].str()).lexically_normal().generic_string(), *lineNumber, *column, m[4]};
         if (e.file.starts_with(top)) e.file.erase(0, top.size());
         else if (fs::path(e.file).is_relative()) e.file = treeFile(e.file, sourceDir);
         const auto same = [&](const CompilerError& o) {

@@ -37,13 +37,17 @@ std::string pageDocument(const std::string& graded, const PageFacts& facts) {
     state["phase"] = facts.phase;
     state["language"] = languageCode(language());
     state["words"] = pageWords();
-    state["changed"] = facts.changed;
+    Json changed = Json::array();
+    for (const std::string& file : facts.changed) changed.push_back(printableText(file));
+    state["changed"] = changed;
     Json errors = Json::array();
     for (const CompilerError& e : compilerErrors(facts.buildOutput, facts.sourceDir))
-        errors.push_back({{"file", e.file}, {"line", e.line}, {"column", e.column}, {"message", printableText(e.message)}});
+        errors.push_back({{"file", printableText(e.file)}, {"line", e.line}, {"column", e.column}, {"message", printableText(e.message)}});
     state["build"] = {{"errors", errors}, {"output", printableText(facts.buildOutput)}};
     state["seconds"] = {{"build", facts.buildSeconds}, {"grade", facts.gradeSeconds}};
-    return state.dump();
+    return jsonText(state);
 }
+
+std::string jsonText(const Json& value) { return value.dump(-1, ' ', false, Json::error_handler_t::replace); }
 
 } // namespace raylab::watch

@@ -4,6 +4,8 @@
 // build's that compiled: the document says it is stale ("stale": true, on itself and on each figure
 // and check), beside the compiler's errors, until a build compiles again.
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,5 +24,9 @@ struct PageFacts {
 // `graded`: the last grade, as JSON members ("figures", "checks", "labs", "problems"); the document,
 // as JSON text, in the reader's language.
 std::string pageDocument(const std::string& graded, const PageFacts& facts);
+
+// JSON text that never throws: every name and message is made printable before it goes in (so it is
+// UTF-8); a byte that slipped through would become U+FFFD, not an exception that ends the watch.
+std::string jsonText(const nlohmann::json& value);
 
 } // namespace raylab::watch

@@ -5,6 +5,7 @@
 #include "grader/inspector/inspector_steps.h"
 #include "grader/protocol/protocol.h"
 #include "grader/sandbox/sandbox.h"
+#include "watch/page_document.h"
 #include "src/messages.h"
 #include "src/scene_file.h"
 #include "src/text.h"
@@ -127,14 +128,14 @@ PixelInspector::PixelInspector(const WatchSettings& settings, const grader::LabC
     : m_settings(settings), m_labs(labs), m_agents(agents) {}
 
 std::string PixelInspector::inspect(const std::string& figure, int x, int y) const {
-    Json answer{{"figure", figure}, {"x", x}, {"y", y}, {"rows", Json::array()}, {"first", -1}, {"note", ""}};
+    Json answer{{"figure", printableText(figure)}, {"x", x}, {"y", y}, {"rows", Json::array()}, {"first", -1}, {"note", ""}};
     try {
         return inspectPixel(answer, figure, x, y);
     } catch (const std::exception& e) { // a scene file that cannot be read, a step's mistake: said, never the end of the watch
         answer["rows"] = Json::array();
         answer["first"] = -1;
         answer["note"] = printableText(e.what());
-        return answer.dump();
+        return jsonText(answer);
     }
 }
 
@@ -147,18 +148,18 @@ std::string PixelInspector::inspectPixel(Json& answer, const std::string& figure
     std::error_code error;
     if (lab == 0 || !fs::is_regular_file(sceneFile, error)) {
         answer["note"] = tr("watch.no_figure", {{"figure", printableText(figure)}});
-        return answer.dump();
+        return jsonText(answer);
     }
     const grader::LabDescription* own = m_labs.lab(lab);
     if (own == nullptr || !inspector::hasInspector(own->id)) {
         answer["note"] = tr("watch.no_inspector", {{"lab", std::to_string(lab)}});
-        return answer.dump();
+        return jsonText(answer);
     }
     const SceneDescription d = loadSceneFile(sceneFile);
     if (x < 0 || y < 0 || x >= d.width || y >= d.height) {
         answer["note"] = tr("watch.outside", {{"x", std::to_string(x)}, {"y", std::to_string(y)},
                                              {"width", std::to_string(d.width)}, {"height", std::to_string(d.height)}});
-        return answer.dump();
+        return jsonText(answer);
     }
 
     // Each lab's rows, from its grading folder: the camera's first, then what its ray meets.
@@ -170,7 +171,7 @@ std::string PixelInspector::inspectPixel(Json& answer, const std::string& figure
             for (const inspector::InspectorStep step : inspector::inspectorSteps(l->id, stage)) step(pixel, asked);
     if (asked.rows().empty()) {
         answer["note"] = tr("watch.not_inspected", {{"figure", printableText(figure)}, {"lab", std::to_string(lab)}});
-        return answer.dump();
+        return jsonText(answer);
     }
 
     // The student's values, from the lab's agent in the grading sandbox.
@@ -185,7 +186,7 @@ std::string PixelInspector::inspectPixel(Json& answer, const std::string& figure
     }
     answer["note"] = printableText(answers.why);
     addRows(answer, asked.rows(), answers, m_labs);
-    return answer.dump();
+    return jsonText(answer);
 }
 
 } // namespace raylab::watch

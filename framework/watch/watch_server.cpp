@@ -120,7 +120,14 @@ WatchServer::WatchServer(PageState& page, fs::path root, std::string token, Insp
             response.status = 405;
             return httplib::Server::HandlerResponse::Handled;
         }
-        m_impl->route(request, response);
+        try {
+            m_impl->route(request, response);
+        } catch (const std::exception&) { // said in the console's words, never the exception's text in the answer
+            response = httplib::Response();
+            response.status = 500;
+            response.set_header("Cache-Control", "no-store");
+            response.set_content(tr("watch.not_answered"), "text/plain; charset=utf-8");
+        }
         return httplib::Server::HandlerResponse::Handled;
     });
 }

@@ -116,9 +116,9 @@ void WatchSession::refresh(const std::vector<fs::path>& changed) {
         grader::GradeResult result = grader::gradeCode(setup, agents, isolated);
         result.title = "raylab watch " + std::to_string(m_settings.lab);
         grader::writeReports(result, setup.references, m_settings.out / "report");
-        m_graded = gradedJson(result, setup.references, m_settings.out).dump();
+        m_graded = jsonText(gradedJson(result, setup.references, m_settings.out));
     } catch (const std::exception& e) {
-        m_graded = Json{{"problems", Json::array({printableText(e.what())})}}.dump();
+        m_graded = jsonText(Json{{"problems", Json::array({printableText(e.what())})}});
     }
     m_gradeSeconds = secondsSince(start);
     publish("ready", changed);

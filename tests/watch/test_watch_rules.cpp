@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <set>
+#include <stdexcept>
 #include <thread>
 
 namespace fs = std::filesystem;
@@ -99,7 +100,10 @@ TEST_CASE("compiler errors: file, line, column and message, each once, relative 
                                "/src/tree/labs/lab3_sphere/sphere_geometry.cpp:23:12: error: 'nromal' was not declared in this scope\n"
                                "/src/tree/labs/lab3_sphere/sphere_geometry.cpp:30:1: warning: no return statement\n"
                                "C:\\\\tp\\\\labs\\\\lab2.cpp(12,5): error C2065: 'x': undeclared identifier\r\n"
-                               "gmake[2]: *** [framework/CMakeFiles/x.dir/build.make:76: x.o] Error 1\n";
+                               "gmake[2]: *** [framework/CMakeFiles/x.dir/build.make:76: x.o] Error 1\n"
+                               // The student's `#error x:99999999999:1: error: y`, echoed under its error:
+                               // that line's number does not fit an int, and is no error of its own.
+                               "    7 | #error x:99999999999:1: error: y\n";
     const std::vector<CompilerError> errors = compilerErrors(output, "/src/tree");
     REQUIRE(errors.size() == 2);
     CHECK(errors[0].file == "labs/lab3_sphere/sphere_geometry.cpp");
@@ -175,6 +179,16 @@ TEST_CASE("while the latest save does not compile, the last good grade is marked
     raylab::setLanguage(raylab::Language::En);
     CHECK(french["words"]["stale"] == "périmé");
     CHECK(french["words"]["stale_banner"].get<std::string>().find("ne compile pas\u00A0:") != std::string::npos);
+    // A file named with bytes that are not UTF-8 (`#line 1 "\xff<b>.cpp"`) and a saved file so named:
+    // shown as their bytes, never an exception.
+    facts.buildOutput = "\xff<b>.cpp:1:1: error: y\n";
+    facts.changed = {"labs/lab3_sphere/\xe9t\xe9.cpp"};
+    const auto named = nlohmann::json::parse(pageDocument(graded, facts));
+    REQUIRE(named["build"]["errors"].size() == 1);
+    CHECK(named["build"]["errors"][0]["file"] == "\\xFF<b>.cpp");
+    CHECK(named["changed"][0] == "labs/lab3_sphere/\\xE9t\\xE9.cpp");
+    facts.buildOutput.clear();
+    facts.changed.clear();
     // A grade that is no JSON object (it never is) makes a page, not an exception.
     CHECK(nlohmann::json::parse(pageDocument("not json", facts))["stale"] == false);
 }
@@ -257,10 +271,12 @@ struct Served {
     raylab::watch::WatchServer server;
     int port;
     std::thread serving;
-    explicit Served(const fs::path& root)
-        : server(page, root, "0123456789abcdef0123456789abcdef",
-                 [](const std::string& figure, int x, int y) { return figure + " " + std::to_string(x) + " " + std::to_string(y); }),
-          port(server.bind(0)), serving([this] { server.serve(); }) {}
+    // The inspector answers with what it was asked, unless the test gives its own.
+    explicit Served(const fs::path& root, Inspector inspector = [](const std::string& figure, int x, int y) {
+        return figure + " " + std::to_string(x) + " " + std::to_string(y);
+    })
+        : server(page, root, "0123456789abcdef0123456789abcdef", std::move(inspector)), port(server.bind(0)),
+          serving([this] { server.serve(); }) {}
     ~Served() {
         server.stop();
         serving.join();
@@ -313,6 +329,20 @@ TEST_CASE("the state: at once without a version, when a newer one is published w
     served.page.publish(R"({"phase":"building"})");
     poll.join();
     CHECK(waited == std::pair{200, std::string(R"({"version":2,"phase":"building"})")});
+}
+
+TEST_CASE("an answer that fails is a 500 with the page's words, never the exception's text; the server goes on") {
+    Served served(freshFolder("watch-failing"), [](const std::string& figure, int, int) -> std::string {
+        throw std::runtime_error("secret detail of " + figure);
+    });
+    const std::string at = "/0123456789abcdef0123456789abcdef/";
+    httplib::Client client("127.0.0.1", served.port);
+    const auto answer = client.Get((at + "inspect?figure=%FF&x=1&y=2").c_str());
+    REQUIRE(answer);
+    CHECK(answer->status == 500);
+    CHECK(answer->body == raylab::tr("watch.not_answered"));
+    for (const auto& [name, value] : answer->headers) CHECK_MESSAGE(value.find("secret") == std::string::npos, name);
+    CHECK(served.get(at + "state").first == 200); // still serving
 }
 
 TEST_CASE("a port already taken is said, naming it, in the language chosen (not the test's locale)") {
