@@ -5,6 +5,7 @@
 
 #include "grader/lab_catalog.h"
 #include "grader/sandbox/process.h"
+#include "src/atomic_file.h"
 #include "src/messages.h"
 #include "src/text.h"
 #include "watch/file_watcher.h"
@@ -21,6 +22,7 @@
 #include <iterator>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace raylab::cli {
@@ -58,8 +60,26 @@ int latestLabWithCode(const grader::LabCatalog& labs) {
     return latest;
 }
 
+// The file the browser is given, which leads it to the page: never the page's address, whose token any
+// user of the machine would read on the browser's command line (ps) and then open the page with. The
+// file is in a folder its owner alone may enter; nothing when that cannot be made so.
+std::optional<fs::path> browserLauncher(const fs::path& out, const std::string& address) {
+    const fs::path folder = out / "browser";
+    std::error_code error;
+    fs::create_directories(folder, error);
+    fs::permissions(folder, fs::perms::owner_all, fs::perm_options::replace, error);
+#ifndef _WIN32 // Windows: the folder's access is the user profile's, inherited
+    if (error || (fs::status(folder, error).permissions() & (fs::perms::group_all | fs::perms::others_all)) != fs::perms::none)
+        return std::nullopt;
+#endif
+    const fs::path page = folder / "open.html";
+    writeFileAtomically(page, "<!doctype html>\n<meta charset=\"utf-8\">\n<meta http-equiv=\"refresh\" content=\"0; url=" + address +
+                                  "\">\n<title>raylab watch</title>\n<a href=\"" + address + "\">raylab watch</a>\n");
+    return page;
+}
+
 // Opens the page in the desktop's browser where there is one; nothing where there is not (a server, CI).
-void openInBrowser(const std::string& address) {
+void openInBrowser(const fs::path& out, const std::string& address) {
 #if defined(_WIN32)
     const fs::path opener = grader::findProgram("explorer");
 #elif defined(__APPLE__)
@@ -68,7 +88,12 @@ void openInBrowser(const std::string& address) {
     const bool desktop = std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr;
     const fs::path opener = desktop ? grader::findProgram("xdg-open") : fs::path();
 #endif
-    if (!opener.empty()) grader::runProcess({opener.string(), address}, {.output = grader::kNullDevice});
+    if (opener.empty()) return;
+    try {
+        const std::optional<fs::path> launcher = browserLauncher(out, address);
+        if (launcher) grader::runProcess({opener.string(), launcher->string()}, {.output = grader::kNullDevice});
+    } catch (const std::exception&) { // the address is printed: the student opens it
+    }
 }
 
 int runWatch(const WatchOptions& o, const Context& context) {
@@ -112,7 +137,7 @@ int runWatch(const WatchOptions& o, const Context& context) {
                                              {"folder", "labs/" + watched->id + "/"}, {"how", files.how()}})
                             .c_str());
     std::fflush(stdout);
-    if (!o.noOpen) openInBrowser(server.address());
+    if (!o.noOpen) openInBrowser(settings.out, server.address());
 
     std::signal(SIGINT, onWatchStop);
     std::signal(SIGTERM, onWatchStop);

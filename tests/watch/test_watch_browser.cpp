@@ -40,10 +40,11 @@ void writeLabsOneToThree() {
     }
 }
 
-// `raylab watch 3` running in the tree until stopped with Ctrl-C (SIGINT), its output in a file.
+// `raylab watch 3` running in the tree until stopped with Ctrl-C (SIGINT), its output in a file; with
+// `desktop`, it opens the browser (xdg-open, first found in that folder, on the display :0).
 class Watch {
 public:
-    explicit Watch(const fs::path& output) : m_output(output) {
+    explicit Watch(const fs::path& output, const fs::path& desktop = {}) : m_output(output) {
         fs::remove(output);
         m_pid = fork();
         if (m_pid == 0) {
@@ -52,7 +53,14 @@ public:
             dup2(fd, 2);
             if (chdir(kTree.c_str()) != 0) _exit(126);
             const std::string program = (kTree / "build" / "bin" / "raylab").string();
-            execl(program.c_str(), program.c_str(), "watch", "3", "--no-open", static_cast<char*>(nullptr));
+            if (desktop.empty()) {
+                execl(program.c_str(), program.c_str(), "watch", "3", "--no-open", static_cast<char*>(nullptr));
+            } else {
+                const char* path = std::getenv("PATH");
+                setenv("PATH", (desktop.string() + ":" + (path != nullptr ? path : "/usr/bin:/bin")).c_str(), 1);
+                setenv("DISPLAY", ":0", 1);
+                execl(program.c_str(), program.c_str(), "watch", "3", static_cast<char*>(nullptr));
+            }
             _exit(127);
         }
     }
@@ -108,6 +116,36 @@ TEST_CASE("the students' tree with labs 1 to 3 written, built") {
         {RAYLAB_CMAKE_COMMAND, "--build", (kTree / "build").string(), "-j", "2", "--target", "raylab", "raylab-agents"},
         out / "watch-build.txt");
     REQUIRE_MESSAGE(built.status == 0, built.output);
+}
+
+} // TEST_SUITE
+
+TEST_SUITE("watch opens the browser") {
+
+TEST_CASE("the browser is given a file its owner alone can read, never the page's token") {
+    REQUIRE_MESSAGE(fs::exists(kTree / "build" / "bin" / "raylab"), "the tree is built by the test 'watch_browser_tests/watch tree'");
+    const fs::path out = fs::path(RAYLAB_WATCH_TREE).parent_path();
+    // A desktop whose xdg-open writes down what it was given, and a copy of the file it was given.
+    const fs::path desktop = out / "watch-desktop";
+    fs::remove_all(desktop);
+    fs::create_directories(desktop);
+    const fs::path given = desktop / "given.txt", copied = desktop / "copied.html";
+    raylab::writeFileAtomically(desktop / "xdg-open", "#!/bin/sh\nprintf '%s\\n' \"$@\" > '" + given.string() + ".partial'\ncp \"$1\" '" +
+                                                          copied.string() + "'\nmv '" + given.string() + ".partial' '" + given.string() + "'\n");
+    fs::permissions(desktop / "xdg-open", fs::perms::owner_all);
+    Watch watch(out / "watch-output-opened.txt", desktop);
+    const std::string address = watch.address();
+    REQUIRE_MESSAGE(!address.empty(), readFile(out / "watch-output-opened.txt"));
+    for (int k = 0; k < 600 && !fs::exists(given); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    REQUIRE_MESSAGE(fs::exists(given), readFile(out / "watch-output-opened.txt"));
+    const std::string arguments = readFile(given);
+    const std::string token = address.substr(address.size() - 33, 32);
+    CHECK_MESSAGE(arguments.find(token) == std::string::npos, arguments); // nothing a `ps` shows opens the page
+    const fs::path launcher = arguments.substr(0, arguments.find('\n'));
+    CHECK(readFile(copied).find("url=" + address + "\"") != std::string::npos); // the file leads to the page
+    const fs::perms folder = fs::status(launcher.parent_path()).permissions();
+    CHECK((folder & (fs::perms::group_all | fs::perms::others_all)) == fs::perms::none); // no other user enters
+    CHECK(watch.stop() == 0);
 }
 
 } // TEST_SUITE
