@@ -21,6 +21,14 @@ namespace {
 
 // A long poll waits at most this long, under the browsers' and httplib's timeouts.
 constexpr std::chrono::seconds kLongPoll{20};
+// The server's threads: each open tab holds one in its long poll, each slow client one until it has
+// sent its request or stopped sending for kReadTimeout; httplib's default (8 on 2 cores) let 8 tabs
+// or 10 slow clients keep the page from answering. Beyond kLongPolls waiting at once, a tab's poll
+// waits kBusyPoll only, so tabs never take the threads the page's other requests need.
+constexpr std::size_t kThreads = 48;
+constexpr int kLongPolls = 24;
+constexpr std::chrono::seconds kBusyPoll{2};
+constexpr time_t kReadTimeoutSeconds = 2;
 
 std::string contentType(const fs::path& file) {
     const std::string extension = file.extension().string();
@@ -54,6 +62,7 @@ struct WatchServer::Impl {
     std::mutex starting;
     bool stopped = false, serving = false;
     std::atomic<bool> finished{false};
+    std::atomic<int> polling{0}; // the long polls waiting now
 
     // What the page asks under its token; false when there is no such thing.
     bool answer(const std::string& asked, const httplib::Request& request, httplib::Response& response) {
@@ -65,8 +74,11 @@ struct WatchServer::Impl {
             response.set_content(templates::kWatchCss, "text/css; charset=utf-8");
         } else if (asked == "state") {
             const long long since = request.has_param("since") ? std::atoll(request.get_param_value("since").c_str()) : -1;
-            response.set_content(page.after(since < 0 ? 0 : std::uint64_t(since), since < 0 ? std::chrono::seconds(0) : kLongPoll),
-                                 "application/json");
+            const bool room = since >= 0 && polling.fetch_add(1) < kLongPolls;
+            const std::chrono::seconds wait = since < 0 ? std::chrono::seconds(0) : room ? kLongPoll : kBusyPoll;
+            const std::string state = page.after(since < 0 ? 0 : std::uint64_t(since), wait);
+            if (since >= 0) polling.fetch_sub(1);
+            response.set_content(state, "application/json");
         } else if (asked == "inspect" && inspector) {
             response.set_content(inspector(request.get_param_value("figure"), integerParam(request, "x"), integerParam(request, "y")),
                                  "application/json");
@@ -114,6 +126,8 @@ WatchServer::WatchServer(PageState& page, fs::path root, std::string token, Insp
     });
     // A browser keeps its connection open between requests: stop() waits for it, at most this long.
     m_impl->server.set_keep_alive_timeout(1);
+    m_impl->server.set_read_timeout(kReadTimeoutSeconds, 0);
+    m_impl->server.new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
     // Every method and path reaches route(): the rules hold for all of them, and only GET answers.
     m_impl->server.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
         if (request.method != "GET") {

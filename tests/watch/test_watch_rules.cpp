@@ -16,11 +16,20 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <stdexcept>
 #include <thread>
+
+#ifndef _WIN32
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+#endif
 
 namespace fs = std::filesystem;
 using namespace raylab::watch;
@@ -344,6 +353,56 @@ TEST_CASE("an answer that fails is a 500 with the page's words, never the except
     for (const auto& [name, value] : answer->headers) CHECK_MESSAGE(value.find("secret") == std::string::npos, name);
     CHECK(served.get(at + "state").first == 200); // still serving
 }
+
+#ifndef _WIN32
+// A client that began its request and sends one more header line every 200 ms, never ending it (as a
+// slow or hostile client does), until `stop`.
+void dripRequest(int port, const std::atomic<bool>& stop) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(std::uint16_t(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (fd < 0 || ::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0) return;
+    const std::string start = "GET /0123456789abcdef0123456789abcdef/ HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n";
+    ::send(fd, start.data(), start.size(), MSG_NOSIGNAL);
+    while (!stop) {
+        ::send(fd, "X-Slow: 1\r\n", 11, MSG_NOSIGNAL);
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    }
+    ::close(fd);
+}
+
+TEST_CASE("the page answers beside 10 slow clients and 8 tabs waiting for a change") {
+    Served served(freshFolder("watch-busy"));
+    served.page.publish(R"({"phase":"ready"})");
+    const std::string at = "/0123456789abcdef0123456789abcdef/";
+    std::atomic<bool> stop{false};
+    std::vector<std::thread> clients;
+    for (int k = 0; k < 10; ++k) clients.emplace_back([&] { dripRequest(served.port, stop); });
+    std::atomic<int> polled{0};
+    for (int k = 0; k < 8; ++k) // each tab waits for the version after 1: up to 20 s
+        clients.emplace_back([&] {
+            if (served.get(at + "state?since=1").first == 200) ++polled;
+        });
+    std::this_thread::sleep_for(std::chrono::milliseconds(500)); // all of them connected and waiting
+    // The page and its state while they all wait: within 10 s, half the long polls' 20 (not a
+    // benchmark: an answer that waits for them is no answer).
+    httplib::Client client("127.0.0.1", served.port);
+    client.set_read_timeout(10, 0);
+    client.set_connection_timeout(10, 0);
+    const httplib::Headers host{{"Host", "127.0.0.1:" + std::to_string(served.port)}};
+    const auto page = client.Get(at.c_str(), host);
+    CHECK((page && page->status == 200));
+    const auto state = client.Get((at + "state").c_str(), host);
+    CHECK((state && state->body == R"({"version":1,"phase":"ready"})"));
+    CHECK(polled == 0); // the tabs were still waiting
+    served.page.publish(R"({"phase":"building"})"); // wakes the tabs
+    stop = true;
+    for (std::thread& t : clients) t.join();
+    CHECK(polled == 8);
+}
+#endif
 
 TEST_CASE("a port already taken is said, naming it, in the language chosen (not the test's locale)") {
     Served first(freshFolder("watch-port"));
