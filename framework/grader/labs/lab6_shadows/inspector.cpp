@@ -84,6 +84,55 @@ std::string named(const std::vector<std::string>& names) {
 
 void put(std::vector<double>& in, const glm::dvec3& v) { in.insert(in.end(), {v.x, v.y, v.z}); }
 
+// The rows of light `k`'s shadow ray from `position` (to `lightPosition`, `distance` away, along `l`):
+// its origin and direction, what it meets (the reference's, and the objects the student's inShadow
+// finds, each asked alone), the nearest occluder's t, and whether the point is in shadow.
+void shadowRayRows(Inspection& inspection, const std::vector<Object>& scene, int k, const glm::dvec3& position,
+                   const glm::dvec3& lightPosition, const glm::dvec3& l, double distance) {
+    const ReferenceRay shadowRay{position, l};
+    inspection.add({.key = "shadow_origin", .lab = 6, .reference = vec(position), .index = k, .referenceOnly = true,
+                    .takes = {"ray"}});
+    inspection.add({.key = "shadow_direction", .lab = 6, .reference = vec(l), .index = k, .referenceOnly = true,
+                    .takes = {"ray"}});
+    std::vector<std::string> hiding, names;
+    std::optional<double> nearestOccluder;
+    std::vector<int> calls;
+    for (const Object& o : scene) {
+        names.push_back(o.name());
+        if (const std::optional<double> at = o.hit(shadowRay, kShadowRayStart, distance)) {
+            hiding.push_back(o.name());
+            if (!nearestOccluder || *at < *nearestOccluder) nearestOccluder = *at;
+        }
+        std::vector<double> in;
+        o.append(in, false);
+        put(in, position);
+        put(in, lightPosition);
+        calls.push_back(inspection.call(probes::inShadow, in));
+    }
+    // The objects the student's inShadow finds between the point and the light, each alone.
+    const auto theirs = [calls, names](const Outputs& outputs) -> Json {
+        std::vector<std::string> found;
+        for (std::size_t c = 0; c < calls.size(); ++c) {
+            const Json answer = values(calls[c], 0, 0)(outputs);
+            if (answer.is_null()) return {};
+            if (answer == true) found.push_back(names[c]);
+        }
+        return named(found);
+    };
+    inspection.add({.key = "occluders", .function = "inShadow", .lab = 6, .reference = named(hiding), .student = theirs,
+                    .index = k, .takes = {"ray"}});
+    if (nearestOccluder)
+        inspection.add({.key = "occluder_t", .lab = 6, .reference = *nearestOccluder, .index = k, .referenceOnly = true,
+                        .takes = {"ray"}});
+    const std::string none = named({});
+    inspection.add({.key = "in_shadow", .function = "inShadow", .lab = 6, .reference = !hiding.empty(),
+                    .student = [theirs, none](const Outputs& outputs) -> Json {
+                        const Json found = theirs(outputs);
+                        return found.is_null() ? Json() : Json(found != none);
+                    },
+                    .index = k, .takes = {"ray"}});
+}
+
 void shadows(PixelContext& pixel, Inspection& inspection) {
     const SceneDescription& d = pixel.scene;
     const bool withShadows = d.shading == "point_light";
@@ -119,50 +168,7 @@ void shadows(PixelContext& pixel, Inspection& inspection) {
         const double distance = glm::length(toLight);
         const glm::dvec3 l = toLight / distance;
         inspection.add({.key = "lab6_light", .lab = 6, .reference = vec(lightPosition), .index = k});
-        if (withShadows) {
-            const ReferenceRay shadowRay{position, l};
-            inspection.add({.key = "shadow_origin", .lab = 6, .reference = vec(position), .index = k, .referenceOnly = true,
-                            .takes = {"ray"}});
-            inspection.add({.key = "shadow_direction", .lab = 6, .reference = vec(l), .index = k, .referenceOnly = true,
-                            .takes = {"ray"}});
-            std::vector<std::string> hiding, names;
-            std::optional<double> nearestOccluder;
-            std::vector<int> calls;
-            for (const Object& o : scene) {
-                names.push_back(o.name());
-                if (const std::optional<double> at = o.hit(shadowRay, kShadowRayStart, distance)) {
-                    hiding.push_back(o.name());
-                    if (!nearestOccluder || *at < *nearestOccluder) nearestOccluder = *at;
-                }
-                std::vector<double> in;
-                o.append(in, false);
-                put(in, position);
-                put(in, lightPosition);
-                calls.push_back(inspection.call(probes::inShadow, in));
-            }
-            // The objects the student's inShadow finds between the point and the light, each alone.
-            const auto theirs = [calls, names](const Outputs& outputs) -> Json {
-                std::vector<std::string> found;
-                for (std::size_t c = 0; c < calls.size(); ++c) {
-                    const Json answer = values(calls[c], 0, 0)(outputs);
-                    if (answer.is_null()) return {};
-                    if (answer == true) found.push_back(names[c]);
-                }
-                return named(found);
-            };
-            inspection.add({.key = "occluders", .function = "inShadow", .lab = 6, .reference = named(hiding), .student = theirs,
-                            .index = k, .takes = {"ray"}});
-            if (nearestOccluder)
-                inspection.add({.key = "occluder_t", .lab = 6, .reference = *nearestOccluder, .index = k, .referenceOnly = true,
-                                .takes = {"ray"}});
-            const std::string none = named({});
-            inspection.add({.key = "in_shadow", .function = "inShadow", .lab = 6, .reference = !hiding.empty(),
-                            .student = [theirs, none](const Outputs& outputs) -> Json {
-                                const Json found = theirs(outputs);
-                                return found.is_null() ? Json() : Json(found != none);
-                            },
-                            .index = k, .takes = {"ray"}});
-        }
+        if (withShadows) shadowRayRows(inspection, scene, k, position, lightPosition, l, distance);
         // Lambert's term of this light alone: colour / pi * I * max(n . l, 0) / r^2.
         const glm::dvec3 lambert = nearest->colour * std::numbers::inv_pi * intensity * (std::max(glm::dot(n, l), 0.) / (distance * distance));
         std::vector<double> in{0., 0.}; // no ambient, no shadow test
