@@ -154,6 +154,10 @@ int runWatch(const WatchOptions& o, const Context& context) {
                 std::printf("%s\n", tr("watch.refreshed", {{"address", server.address()}}).c_str());
             } catch (const std::exception& e) {
                 std::printf("%s\n", tr("watch.problem", {{"problem", printableText(e.what())}}).c_str());
+                try {
+                    session.showProblem(e.what());
+                } catch (const std::exception&) { // said in the console already
+                }
             }
             std::fflush(stdout);
             first = false;

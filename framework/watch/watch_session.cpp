@@ -67,6 +67,9 @@ Json gradedJson(const grader::GradeResult& result, const grader::ReferenceSet& r
     return {{"figures", figures}, {"checks", checks}, {"labs", labs}, {"problems", problems}};
 }
 
+// A grade that is a problem alone: what kept the lab from being graded.
+std::string problemOnly(const std::string& problem) { return jsonText(Json{{"problems", Json::array({printableText(problem)})}}); }
+
 } // namespace
 
 WatchSession::WatchSession(WatchSettings settings, PageState& page, std::mutex& agents)
@@ -118,10 +121,15 @@ void WatchSession::refresh(const std::vector<fs::path>& changed) {
         grader::writeReports(result, setup.references, m_settings.out / "report");
         m_graded = jsonText(gradedJson(result, setup.references, m_settings.out));
     } catch (const std::exception& e) {
-        m_graded = jsonText(Json{{"problems", Json::array({printableText(e.what())})}});
+        m_graded = problemOnly(e.what());
     }
     m_gradeSeconds = secondsSince(start);
     publish("ready", changed);
+}
+
+void WatchSession::showProblem(const std::string& problem) {
+    m_graded = problemOnly(problem);
+    publish("ready", {});
 }
 
 void WatchSession::publish(const std::string& phase, const std::vector<fs::path>& changed) {

@@ -35,6 +35,9 @@ public:
     // Builds, grades and publishes; `changed`: the saved files that asked for it (empty: the first run).
     void refresh(const std::vector<std::filesystem::path>& changed);
 
+    // Shows `problem` on the page in place of the grade (what stopped a refresh), the watch going on.
+    void showProblem(const std::string& problem);
+
     const WatchSettings& settings() const { return m_settings; }
 
 private:

@@ -6,6 +6,7 @@
 #include "watch/page_document.h"
 #include "watch/page_state.h"
 #include "watch/watch_server.h"
+#include "watch/watch_session.h"
 
 #include "src/atomic_file.h"
 #include "src/messages.h"
@@ -20,6 +21,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <mutex>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -200,6 +202,22 @@ TEST_CASE("while the latest save does not compile, the last good grade is marked
     facts.changed.clear();
     // A grade that is no JSON object (it never is) makes a page, not an exception.
     CHECK(nlohmann::json::parse(pageDocument("not json", facts))["stale"] == false);
+}
+
+TEST_CASE("a problem that stopped a refresh is shown on the page, made printable, in place of the grade") {
+    PageState page;
+    std::mutex agents;
+    WatchSettings settings;
+    settings.lab = 3;
+    settings.out = freshFolder("watch-problem");
+    settings.sourceDir = "/tree";
+    WatchSession session(settings, page, agents);
+    session.showProblem("cannot read labs/lab3_sphere/\xff.cpp\x1b[2J");
+    const auto shown = nlohmann::json::parse(page.after(0, std::chrono::milliseconds(0)));
+    CHECK(shown["phase"] == "ready");
+    CHECK(shown["lab"] == 3);
+    REQUIRE(shown["problems"].size() == 1);
+    CHECK(shown["problems"][0] == "cannot read labs/lab3_sphere/\\xFF.cpp\\x1B[2J");
 }
 
 TEST_CASE("the files that count as code") {
