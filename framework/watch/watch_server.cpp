@@ -9,9 +9,15 @@
 #include <httplib.h>
 
 #include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <functional>
 #include <mutex>
-#include <thread>
 #include <stdexcept>
+#include <thread>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace raylab::watch {
 
@@ -45,6 +51,55 @@ int integerParam(const httplib::Request& request, const char* name) {
         return -1;
     }
 }
+
+// The server's threads, a pool of our own: httplib's ThreadPool, inline in its header, calls OpenSSL
+// where the library was built with it (Debian 13), which this program does not link. enqueue()
+// returns void in httplib 0.11 (Debian 12) and bool (accepted) since.
+using Enqueued = decltype(std::declval<httplib::TaskQueue&>().enqueue(std::function<void()>()));
+
+class ServerThreads final : public httplib::TaskQueue {
+public:
+    explicit ServerThreads(std::size_t count) {
+        for (std::size_t k = 0; k < count; ++k) m_threads.emplace_back([this] { work(); });
+    }
+    Enqueued enqueue(std::function<void()> task) override {
+        {
+            const std::lock_guard lock(m_mutex);
+            m_tasks.push_back(std::move(task));
+        }
+        m_ready.notify_one();
+        return static_cast<Enqueued>(true); // accepted (nothing when httplib asks for void)
+    }
+    void shutdown() override { // the tasks queued are run first
+        {
+            const std::lock_guard lock(m_mutex);
+            m_stopping = true;
+        }
+        m_ready.notify_all();
+        for (std::thread& t : m_threads) t.join();
+    }
+
+private:
+    void work() {
+        for (;;) {
+            std::function<void()> task;
+            {
+                std::unique_lock lock(m_mutex);
+                m_ready.wait(lock, [this] { return m_stopping || !m_tasks.empty(); });
+                if (m_tasks.empty()) return;
+                task = std::move(m_tasks.front());
+                m_tasks.pop_front();
+            }
+            task();
+        }
+    }
+
+    std::vector<std::thread> m_threads;
+    std::deque<std::function<void()>> m_tasks;
+    std::mutex m_mutex;
+    std::condition_variable m_ready;
+    bool m_stopping = false;
+};
 
 } // namespace
 
@@ -127,7 +182,7 @@ WatchServer::WatchServer(PageState& page, fs::path root, std::string token, Insp
     // A browser keeps its connection open between requests: stop() waits for it, at most this long.
     m_impl->server.set_keep_alive_timeout(1);
     m_impl->server.set_read_timeout(kReadTimeoutSeconds, 0);
-    m_impl->server.new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
+    m_impl->server.new_task_queue = [] { return new ServerThreads(kThreads); };
     // Every method and path reaches route(): the rules hold for all of them, and only GET answers.
     m_impl->server.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
         if (request.method != "GET") {
