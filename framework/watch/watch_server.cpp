@@ -1,12 +1,11 @@
 #include "watch/watch_server.h"
 
+#include "watch/bounded_server.h"
 #include "watch/http_rules.h"
 #include "watch/templates.h"
 
 #include "src/atomic_file.h"
 #include "src/messages.h"
-
-#include <httplib.h>
 
 #include <atomic>
 #include <condition_variable>
@@ -15,7 +14,6 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -28,7 +26,7 @@ namespace {
 // A long poll waits at most this long, under the browsers' and httplib's timeouts.
 constexpr std::chrono::seconds kLongPoll{20};
 // The server's threads: each open tab holds one in its long poll, each slow client one until it has
-// sent its request or stopped sending for kReadTimeout; httplib's default (8 on 2 cores) let 8 tabs
+// sent its request's head (at most kHeadTime) or stopped sending for kReadTimeout; httplib's default (8 on 2 cores) let 8 tabs
 // or 10 slow clients keep the page from answering. Beyond kLongPolls waiting at once, a tab's poll
 // waits kBusyPoll only, so tabs never take the threads the page's other requests need.
 constexpr std::size_t kThreads = 48;
@@ -110,7 +108,7 @@ struct WatchServer::Impl {
     fs::path root;
     std::string token;
     Inspector inspector;
-    httplib::Server server;
+    BoundedServer server; // each request's head within limits (bounded_server.h)
     int port = 0;
     // httplib's stop() does nothing to a server that is not listening yet: stop() waits for serve()
     // to have started listening, or keeps it from starting.
@@ -179,9 +177,8 @@ WatchServer::WatchServer(PageState& page, fs::path root, std::string token, Insp
         setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
 #endif
     });
-    // A browser keeps its connection open between requests: stop() waits for it, at most this long.
-    m_impl->server.set_keep_alive_timeout(1);
     m_impl->server.set_read_timeout(kReadTimeoutSeconds, 0);
+    m_impl->server.set_payload_max_length(kMaxHeadBytes); // the page sends no body
     m_impl->server.new_task_queue = [] { return new ServerThreads(kThreads); };
     // Every method and path reaches route(): the rules hold for all of them, and only GET answers.
     m_impl->server.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {

@@ -1,5 +1,6 @@
 // raylab watch's parts that decide alone: what the server serves (the token, the Host header, the
 // files of its folder), the compiler's errors it shows, the long poll's versions and the file watcher.
+#include "watch/bounded_server.h"
 #include "watch/compiler_errors.h"
 #include "watch/file_watcher.h"
 #include "watch/http_rules.h"
@@ -389,6 +390,110 @@ void dripRequest(int port, const std::atomic<bool>& stop) {
         std::this_thread::sleep_for(std::chrono::milliseconds(200));
     }
     ::close(fd);
+}
+
+// A connection to the server on `port`, sending bytes as a client may, raw.
+struct RawClient {
+    int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    explicit RawClient(int port) {
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_port = htons(std::uint16_t(port));
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        const timeval timeout{10, 0}; // a test that fails fails in 10 s, it does not hang
+        ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
+        ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &timeout, sizeof timeout);
+        const int buffer = 64 * 1024; // what the client holds back itself
+        ::setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &buffer, sizeof buffer);
+        REQUIRE(::connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0);
+    }
+    ~RawClient() { ::close(fd); }
+    RawClient(const RawClient&) = delete;
+    RawClient& operator=(const RawClient&) = delete;
+    // The bytes the server took of `bytes` before it closed the connection (all of them if it did not).
+    std::size_t send(const std::string& bytes) const {
+        std::size_t sent = 0;
+        while (sent < bytes.size()) {
+            const auto n = ::send(fd, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+            if (n <= 0) break;
+            sent += std::size_t(n);
+        }
+        return sent;
+    }
+    // What the server answers, up to its closing the connection.
+    std::string answer() const {
+        std::string got;
+        char buffer[4096];
+        for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) got.append(buffer, std::size_t(n));
+        return got;
+    }
+};
+
+// A request for the page with its Host header, then `headers` more headers "X-Header-k: k", then
+// `lastHeader` (when not empty) and the empty line.
+std::string pageRequest(int port, int headers, const std::string& lastHeader = "") {
+    std::string request = "GET /0123456789abcdef0123456789abcdef/ HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n";
+    for (int k = 0; k < headers; ++k) request += "X-Header-" + std::to_string(k) + ": " + std::to_string(k) + "\r\n";
+    if (!lastHeader.empty()) request += lastHeader + "\r\n";
+    return request + "\r\n";
+}
+
+// A request for the page whose head (request line, headers and the empty line) is `bytes` long, in
+// header lines of at most 8000 bytes (httplib's own limit for one is 8192).
+std::string pageRequestOfSize(int port, std::size_t bytes) {
+    std::string request = pageRequest(port, 0);
+    request.resize(request.size() - 2); // without the empty line yet
+    while (request.size() + 2 < bytes) {
+        const std::size_t line = std::min<std::size_t>(8000, bytes - 2 - request.size());
+        REQUIRE(line >= 12); // "X-Fill: " + at least 2 + "\r\n"
+        const std::size_t next = bytes - 2 - request.size() - line; // what a next line would have
+        const std::size_t take = next > 0 && next < 12 ? line - 12 : line;
+        request += "X-Fill: " + std::string(take - 10, 'a') + "\r\n";
+    }
+    return request + "\r\n";
+}
+
+std::string statusLine(const std::string& answer) { return answer.substr(0, answer.find("\r\n")); }
+
+TEST_CASE("a request's head past its limits is refused before it is kept: 100 lines, 64 KB, 5 s") {
+    Served served(freshFolder("watch-heads"));
+    // The request line and 99 headers (Host and 98 others): answered; one header more: refused.
+    const auto asked = [&](const std::string& request) {
+        const RawClient client(served.port);
+        client.send(request);
+        return statusLine(client.answer());
+    };
+    CHECK(asked(pageRequest(served.port, 98)) == "HTTP/1.1 200 OK");
+    CHECK(asked(pageRequest(served.port, 99)) == "HTTP/1.1 431 Request Header Fields Too Large");
+    // Bytes: a head of exactly 64 KB is read, one byte more is refused.
+    REQUIRE(pageRequestOfSize(served.port, raylab::watch::kMaxHeadBytes).size() == raylab::watch::kMaxHeadBytes);
+    CHECK(asked(pageRequestOfSize(served.port, raylab::watch::kMaxHeadBytes)) == "HTTP/1.1 200 OK");
+    CHECK(asked(pageRequestOfSize(served.port, raylab::watch::kMaxHeadBytes + 1)) == "HTTP/1.1 431 Request Header Fields Too Large");
+    {   // 30 MB of headers and no token: the server stops taking them (it took them all before).
+        const RawClient client(served.port);
+        std::string flood = "GET / HTTP/1.1\r\n";
+        while (flood.size() < 30'000'000) flood += "X-Flood: " + std::string(1000, 'f') + "\r\n";
+        CHECK(client.send(flood) < 12'000'000); // the limit, its drain and the sockets' buffers
+    }
+    {   // A head sent one line every 200 ms: refused after 5 s, the connection closed.
+        const RawClient client(served.port);
+        const auto start = std::chrono::steady_clock::now();
+        client.send("GET /0123456789abcdef0123456789abcdef/ HTTP/1.1\r\n");
+        std::string answer;
+        std::atomic<bool> answered{false};
+        std::thread reading([&] {
+            answer = client.answer();
+            answered = true;
+        });
+        while (!answered && std::chrono::steady_clock::now() - start < std::chrono::seconds(9)) {
+            client.send("X-Slow: 1\r\n");
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        }
+        reading.join();
+        CHECK(statusLine(answer) == "HTTP/1.1 408 Request Timeout");
+        CHECK(std::chrono::steady_clock::now() - start >= raylab::watch::kHeadTime);
+    }
+    CHECK(served.get("/0123456789abcdef0123456789abcdef/").first == 200); // still serving
 }
 
 TEST_CASE("the page answers beside 10 slow clients and 8 tabs waiting for a change") {
