@@ -31,7 +31,8 @@ constexpr int kSendFlags = 0; // macOS: httplib sets SO_NOSIGPIPE; Windows has n
 // Waits until `sock` is ready for `events` (POLLIN, POLLOUT) or `deadline`.
 bool ready(socket_t sock, short events, Clock::time_point deadline) {
     for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+        // Rounded up: a deadline 0.4 ms away is waited for, not taken as passed.
+        const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()).count();
         if (left <= 0) return false;
         pollfd watched{};
         watched.fd = sock;
@@ -92,7 +93,7 @@ public:
         const Clock::time_point deadline = m_headDone ? Clock::now() + m_readTimeout
                                                       : std::min(Clock::now() + m_readTimeout, m_headDeadline);
         if (!ready(m_sock, POLLIN, deadline)) {
-            if (!m_headDone && Clock::now() >= m_headDeadline) m_refusal = Refusal::TooSlow;
+            if (!m_headDone && deadline == m_headDeadline) m_refusal = Refusal::TooSlow;
             return -1;
         }
         const auto n = ::recv(m_sock, ptr, static_cast<int>(std::min<size_t>(size, 1 << 20)), 0);
