@@ -14,6 +14,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <set>
 #include <stdexcept>
 
 namespace raylab::cli {
@@ -42,12 +43,14 @@ void makeSignatures(const std::vector<fs::path>& folders, const fs::path& bin, c
         setup.scratch = fs::temp_directory_path() / ("raylab-signature-" + m.id);
         fs::remove_all(setup.scratch);
         const std::map<std::string, Image8> pictures = renderFigures(setup, agent);
-        const fs::path out = m.folder / "mistakes" / m.id;
         std::string kept, removed;
+        std::set<fs::path> touched;
         for (const FigureReference& r : references.figures) {
             const auto picture = pictures.find(r.id);
             if (picture == pictures.end()) continue;
+            const fs::path out = signatureFolder(folders, r.id, m.id); // with the figure, not the mistake
             const fs::path file = out / (r.id + ".png");
+            touched.insert(out);
             if (compareImage(r, picture->second).passed) {
                 if (fs::remove(file)) removed += " " + r.id;
                 continue;
@@ -57,7 +60,8 @@ void makeSignatures(const std::vector<fs::path>& folders, const fs::path& bin, c
             kept += " " + r.id;
         }
         std::error_code error;
-        if (fs::is_empty(out, error)) fs::remove(out, error);
+        for (const fs::path& out : touched)
+            if (fs::is_empty(out, error)) fs::remove(out, error);
         std::printf("  %-28s signatures:%s%s%s\n", m.id.c_str(), kept.empty() ? " none among the figures rendered" : kept.c_str(),
                     removed.empty() ? "" : "; removed (the figure now passes):", removed.c_str());
         fs::remove_all(setup.scratch);

@@ -105,6 +105,30 @@ TEST_CASE("the mistakes' catalogues of two labs: one id is one mistake, the seco
     }
 }
 
+TEST_CASE("a mistake's signatures are kept with each figure's reference, in whichever lab's folder it is") {
+    // The mistake is lab 2's (its catalogue in `catalogue`); "later" is a later lab whose figure it changes.
+    const Folder catalogue, later;
+    catalogue.write("mistakes.toml", kMistake);
+    writeReference(later.root, statistical()); // figure "fig"
+    const Image8 own{4, 2, std::vector<std::uint8_t>(4 * 2 * 3, 10)}, changed{4, 2, std::vector<std::uint8_t>(4 * 2 * 3, 20)};
+    CHECK(signatureFolder({catalogue.root, later.root}, "fig", "fovy_not_halved") == later.root / "mistakes/fovy_not_halved");
+    CHECK(signatureFolder({catalogue.root, later.root}, "own", "fovy_not_halved") == catalogue.root / "mistakes/fovy_not_halved");
+    fs::create_directories(catalogue.root / "mistakes/fovy_not_halved");
+    fs::create_directories(later.root / "mistakes/fovy_not_halved");
+    fs::create_directories(later.root / "mistakes/a_left_out_labs_mistake");
+    writePng(catalogue.root / "mistakes/fovy_not_halved/own.png", own);
+    writePng(later.root / "mistakes/fovy_not_halved/fig.png", changed);
+    writePng(later.root / "mistakes/a_left_out_labs_mistake/fig.png", own); // no catalogue lists it: not read
+    const std::vector<Mistake> mistakes = loadMistakes({catalogue.root, later.root});
+    REQUIRE(mistakes.size() == 1);
+    REQUIRE(mistakes[0].signatures.size() == 2);
+    CHECK(mistakes[0].signatures[0].first == "own");
+    CHECK(mistakes[0].signatures[0].second.rgb == own.rgb);
+    CHECK(mistakes[0].signatures[1].first == "fig");
+    CHECK(mistakes[0].signatures[1].second.rgb == changed.rgb);
+    CHECK(loadMistakes({later.root}).empty()); // signatures alone make no mistake
+}
+
 TEST_CASE("the mistakes' catalogue: an unknown key, a wrong type, a NaN or a missing value names the file, line and key") {
     const Folder folder;
     const auto error = [&](const std::string& text) {

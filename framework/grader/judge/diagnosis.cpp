@@ -3,6 +3,7 @@
 #include "src/messages.h"
 #include "src/toml_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -65,12 +66,28 @@ void loadCatalogue(const fs::path& referenceFolder, std::vector<Mistake>& mistak
                 r.fail(list[k]->get("id"), where + "id",
                        tr("toml.mistake_twice", {{"id", mistake.id}, {"file", (other.folder / "mistakes.toml").string()}}));
         mistake.folder = referenceFolder;
-        const fs::path folder = referenceFolder / "mistakes" / mistake.id;
-        if (fs::is_directory(folder, error))
-            for (const auto& entry : fs::directory_iterator(folder))
-                if (entry.path().extension() == ".png")
-                    mistake.signatures.emplace_back(entry.path().stem().string(), readImage(entry.path()));
         mistakes.push_back(std::move(mistake));
+    }
+}
+
+// The files of `folder` (none when there is no such folder), by name: the same order on every system.
+std::vector<fs::path> sortedEntries(const fs::path& folder) {
+    std::vector<fs::path> entries;
+    std::error_code error;
+    if (fs::is_directory(folder, error))
+        for (const auto& entry : fs::directory_iterator(folder)) entries.push_back(entry.path());
+    std::sort(entries.begin(), entries.end());
+    return entries;
+}
+
+// The signatures kept in one reference folder, whichever catalogue lists their mistakes.
+void loadSignatures(const fs::path& referenceFolder, std::vector<Mistake>& mistakes) {
+    for (const fs::path& folder : sortedEntries(referenceFolder / "mistakes")) {
+        const auto mistake = std::find_if(mistakes.begin(), mistakes.end(),
+                                          [&](const Mistake& m) { return m.id == folder.filename().string(); });
+        if (mistake == mistakes.end()) continue;
+        for (const fs::path& file : sortedEntries(folder))
+            if (file.extension() == ".png") mistake->signatures.emplace_back(file.stem().string(), readImage(file));
     }
 }
 
@@ -79,7 +96,15 @@ void loadCatalogue(const fs::path& referenceFolder, std::vector<Mistake>& mistak
 std::vector<Mistake> loadMistakes(const std::vector<fs::path>& referenceFolders) {
     std::vector<Mistake> mistakes;
     for (const fs::path& folder : referenceFolders) loadCatalogue(folder, mistakes);
+    for (const fs::path& folder : referenceFolders) loadSignatures(folder, mistakes);
     return mistakes;
+}
+
+fs::path signatureFolder(const std::vector<fs::path>& referenceFolders, const std::string& figure, const std::string& mistake) {
+    std::error_code error;
+    const auto holder = std::find_if(referenceFolders.begin(), referenceFolders.end(),
+                                     [&](const fs::path& folder) { return fs::exists(folder / (figure + ".toml"), error); });
+    return (holder != referenceFolders.end() ? *holder : referenceFolders.at(0)) / "mistakes" / mistake;
 }
 
 Image8 downsample(const Image8& image) {

@@ -1,7 +1,9 @@
 #pragma once
 // The catalogue of classic mistakes, each lab's in its grading folder (framework/grader/labs/<lab>/references/
 // mistakes.toml), and their signatures: each mistake's rendering of the figures it changes, a quarter
-// of the size (references/mistakes/<mistake>/<figure>.png beside it). A failing image is matched against them.
+// of the size, kept with the figure (references/mistakes/<mistake>/<figure>.png in the folder of the
+// figure's reference, whichever lab's the mistake is): a new lab's figures and their signatures stay in
+// its own folder. A failing image is matched against them.
 
 #include "raylab/image_io.h"
 
@@ -18,7 +20,7 @@ namespace raylab::grader {
 inline constexpr int kSignatureScale = 4; // signatures are averaged over 4 x 4 pixel blocks
 
 struct Mistake {
-    std::string id;    // its patch framework/grader/labs/<lab>/mistakes/<id>.patch, its signatures' references/mistakes/<id>/
+    std::string id;    // its patch framework/grader/labs/<lab>/mistakes/<id>.patch, its signatures' <figure's references>/mistakes/<id>/
     std::string nameEn, nameFr; // "fovy not halved", "fovy non divisé par deux"
     std::string hintEn, hintFr; // "use tan(fovy / 2): fovy is the full angle"
     std::string label; // its number in the handouts, "2.1": M2.1 in English, E2.1 in French; may be empty
@@ -44,8 +46,14 @@ struct Diagnosis {
 };
 
 // Reads the catalogues (mistakes.toml of each reference folder that has one) and every signature
-// present; a missing signature folder leaves it empty. Throws when two mistakes have one id.
+// present in any of the folders; a mistake with none has none, and a signature of a mistake that no
+// catalogue lists (a lab left out of the course) is not read. Throws when two mistakes have one id.
 std::vector<Mistake> loadMistakes(const std::vector<std::filesystem::path>& referenceFolders);
+
+// Where mistake `mistake`'s signature of figure `figure` is kept: mistakes/<mistake>/ in the folder
+// of `referenceFolders` that holds the figure's reference (<figure>.toml), else in the first one.
+std::filesystem::path signatureFolder(const std::vector<std::filesystem::path>& referenceFolders, const std::string& figure,
+                                      const std::string& mistake);
 
 // Averages kSignatureScale x kSignatureScale blocks (an image that does not divide keeps its
 // whole blocks only).
