@@ -2,9 +2,9 @@
 # Measures what three hostile students cost a class run (issue 34, docs/grading.md "A hostile class,
 # measured"): `raylab grade-class` of N students, copies of solutions/, once without and once with
 # three more that break the rules:
-#   a staller  tests/grading/bad_submissions/stops_itself.patch  lab 1 raises SIGSTOP (held until lab 1's time budget)
-#   a forker   tests/grading/bad_submissions/forks.patch         lab 3 forks 100,000 sleeping children a call
-#   a flood    tests/grading/bad_builds/huge_error.patch         lab 2's compile error is about 1 GB
+#   a staller  tests/instructors/bad_submissions/stops_itself.patch  lab 1 raises SIGSTOP (held until lab 1's time budget)
+#   a forker   tests/instructors/bad_submissions/forks.patch         lab 3 forks 100,000 sleeping children a call
+#   a flood    tests/instructors/bad_builds/huge_error.patch         lab 2's compile error is about 1 GB
 # and prints each run's wall and CPU time, the disk its results take (out/ without the class's build
 # folder) and its largest file, the hostile students' rows of grades.csv, and whether every other
 # student got full points.
@@ -23,9 +23,9 @@ work="${RAYLAB_MEASURE_DIR:-/var/tmp/raylab-hostile-class}"
 honest="${1:-27}"
 [ -x "$raylab" ] || { echo "no $raylab: build it first (cmake --build build --target raylab raylab-agents)" >&2; exit 2; }
 hostile=(
-  "staller:$source_repo/tests/grading/bad_submissions/stops_itself.patch"
-  "forker:$source_repo/tests/grading/bad_submissions/forks.patch"
-  "flood:$source_repo/tests/grading/bad_builds/huge_error.patch"
+  "staller:$source_repo/tests/instructors/bad_submissions/stops_itself.patch"
+  "forker:$source_repo/tests/instructors/bad_submissions/forks.patch"
+  "flood:$source_repo/tests/instructors/bad_builds/huge_error.patch"
 )
 
 load() { cut -d' ' -f1-3 /proc/loadavg; }

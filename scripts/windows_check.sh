@@ -117,7 +117,7 @@ expect "raylab grade (solutions)" 0 "$status" "$output" "total: $total / $total"
 no_agent_left "raylab grade (solutions)"
 
 step "an endless loop in lab 1: raylab grade --timeout 5"
-patch -s -p1 -d "$tree/labs" <"$root/tests/grading/bad_submissions/endless_loop.patch"
+patch -s -p1 -d "$tree/labs" <"$root/tests/instructors/bad_submissions/endless_loop.patch"
 rebuild
 began=$SECONDS
 winrun grade --timeout 5
@@ -130,7 +130,7 @@ no_agent_left "raylab grade (endless loop)"
 
 step "a crash in lab 2: raylab grade"
 cp "$root/solutions/lab1_first_image/"*.cpp "$tree/labs/lab1_first_image/"
-patch -s -p1 -d "$tree/labs" <"$root/tests/grading/bad_submissions/crash.patch"
+patch -s -p1 -d "$tree/labs" <"$root/tests/instructors/bad_submissions/crash.patch"
 rebuild
 winrun grade --timeout 30
 expect "raylab grade (crash)" 1 "$status" "$output" \

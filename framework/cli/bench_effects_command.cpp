@@ -62,7 +62,7 @@ void samples(SceneDescription& d, SamplerKind kind, int n) {
     d.samples = n;
 }
 
-// The bench scene shaded with the reference Lambert shading (framework/study/lambert_shading.cpp):
+// The bench scene shaded with the reference Lambert shading (framework/study/instructors/lambert_shading.cpp):
 // without a light it traces no shadow ray; with one, a shadow ray for each hit that faces it.
 void lambert(SceneDescription& d, bool light) {
     samples(d, SamplerKind::Center, 1);

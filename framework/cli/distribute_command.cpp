@@ -1,10 +1,8 @@
 // raylab distribute: writes the tree students receive: everything but the reference solutions and
-// what would give them away (the mistakes in each lab's grading folder, the valid variants and bad
-// submissions of tests/ are patches against the solutions, which show their lines; the studies and tests that hold a lab's answer are
-// built only where solutions/ is). It builds, runs and self-grades on its own: the
-// labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's references (each
-// lab's framework/grader/labs/<lab>/references/) go with it, and the reference of each lab the course
-// gives (left out, the framework calls its functions) in framework/given/<lab>/.
+// what would give them away, by where it lives (answerFolder below). It builds, runs and self-grades
+// on its own: the labs' descriptions (labs/<lab>/lab.toml: items and points) and the grader's
+// references (each lab's framework/grader/labs/<lab>/references/) go with it, and the reference of
+// each lab the course gives (left out, the framework calls its functions) in framework/given/<lab>/.
 // tests/grading/distribute_ships_no_solution.cpp checks what it writes.
 #include "build_info.h"
 #include "commands.h"
@@ -37,24 +35,26 @@ grader::LabCatalog courseCatalog(const fs::path& source) {
     return grader::loadLabCatalog(source / "labs");
 }
 
-// Paths relative to the source tree that are not handed out.
-const std::set<std::string> kWithheld{"solutions", "tests/variants", "tests/grading/bad_submissions",
-                                      ".git", "out", "compile_commands.json", ".cache",
-                                      // raylab bench's yardstick writes the solutions' formulas out
-                                      "framework/study/yardstick.cpp",
-                                      // lab 3's intersection, written out for raylab numerics and study
-                                      // intersection (built only where solutions/ is), and what needs it
-                                      "framework/study/sphere_formulas.h", "framework/study/numerics_study.h",
-                                      "framework/study/intersection_study.cpp", "framework/study/image_study.cpp",
-                                      "framework/study/accumulation_study.cpp", "framework/cli/numerics_command.cpp",
-                                      "tests/numerics",
-                                      // the reference shading with point lights: a lab on shadows' answer
-                                      "framework/study/lambert_shading.cpp",
-                                      // a complete lab 3 sphere that counts its calls, and its test
-                                      "tests/study/counting_sphere.cpp", "tests/study/counting_sphere.h",
-                                      "tests/study/test_render_work.cpp",
-                                      // the toy lab's answer, a lab's solution in the toy-lab test's tree
-                                      "tests/labs/toy/solution"};
+// What a students' tree leaves out follows from where a file lives, never from a list of files
+// (docs/instructors.md, "The student distribution"): a folder named `solutions` (the answers: the
+// labs' references, a toy lab's), a folder named `instructors` (what holds or is made from an answer,
+// built only where solutions/ is: studies that write a lab's formulas out, the tests that need them,
+// the valid variants and bad submissions, patches against the solutions), a grading folder's
+// `mistakes/` (patches too; its references/mistakes/, the signatures self-grading names, ships), and the
+// labs the course leaves out (labFoldersWithheld). Nor is what is not the project's: git's folder, the
+// builds and what they write.
+bool answerFolder(const fs::path& relative) {
+    const std::vector<fs::path> parts(relative.begin(), relative.end());
+    if (std::any_of(parts.begin(), parts.end(), [](const fs::path& part) { return part == "solutions" || part == "instructors"; }))
+        return true;
+    return parts.size() >= 5 && parts[0] == "framework" && parts[1] == "grader" && parts[2] == "labs" &&
+           parts[4] == "mistakes";
+}
+
+bool workspaceProduct(const fs::path& relative) {
+    const std::string top = relative.begin()->string();
+    return top == ".git" || top == ".cache" || top == "out" || top == "compile_commands.json" || top.rfind("build", 0) == 0;
+}
 
 // The pictures under docs/ that the handouts of `lab` (labs/<lab>/*.md) show, Markdown's ![...](...)
 // or HTML's <img src="...">, as paths from the top of the tree.
@@ -75,17 +75,14 @@ void handoutPictures(const fs::path& source, const std::string& lab, std::set<st
     }
 }
 
-// The labs' folders and files that are not handed out: every lab's in solutions/ (kWithheld), its
-// mistakes' patches (against the solutions, they show their lines), and of the labs the course's list
-// (course.toml) leaves out, their folders in labs/ and the grading folders and their pictures in
-// docs/figures/: absent, not a zero. A given lab keeps, of its grading folder, what registers it by
-// name (its shadings and figure steps, cmake/RaylabLabs.cmake).
+// Of the labs the course's list (course.toml) leaves out, their folders in labs/ and the grading
+// folders and their pictures in docs/figures/: absent, not a zero. A given lab keeps, of its grading
+// folder, what registers it by name (its shadings and figure steps, cmake/RaylabLabs.cmake).
 std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::LabCatalog& course) {
     std::set<std::string> folders, absentPictures, coursePictures;
     for (const auto& entry : fs::directory_iterator(source / "labs")) {
         const std::string id = entry.path().filename().string();
         const std::string grading = "framework/grader/labs/" + id;
-        folders.insert(grading + "/mistakes");
         if (!entry.is_directory()) continue;
         if (course.labOfId(id) != nullptr) {
             handoutPictures(source, "labs/" + id, coursePictures);
@@ -113,10 +110,7 @@ std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::L
 }
 
 bool withheld(const fs::path& relative, const std::set<std::string>& labFolders) {
-    const std::string text = relative.generic_string();
-    if (kWithheld.count(text) || labFolders.count(text)) return true;
-    const std::string top = relative.begin()->string();
-    return top.rfind("build", 0) == 0; // build folders
+    return answerFolder(relative) || workspaceProduct(relative) || labFolders.count(relative.generic_string()) != 0;
 }
 
 // framework/given/<lab>/ of each given lab: its reference (solutions/<lab>/) and its own header

@@ -18,12 +18,12 @@ using namespace raylab::test;
 
 namespace {
 
-// `student`'s copy of solutions/ in `classDir`, with `patch` (tests/grading/...) applied when given.
+// `student`'s copy of solutions/ in `classDir`, with `patch` (tests/instructors/...) applied when given.
 void addStudent(const fs::path& classDir, const std::string& student, const std::string& patch = "") {
     fs::copy(sourceDir() / "solutions", classDir / student, fs::copy_options::recursive);
     if (patch.empty()) return;
     const ProgramRun applied = runProgram({"patch", "-s", "--batch", "-p1", "-d", (classDir / student).string(), "-i",
-                                           (sourceDir() / "tests/grading" / patch).string()},
+                                           (sourceDir() / "tests/instructors" / patch).string()},
                                           classDir.parent_path() / "patch-output.txt");
     REQUIRE_MESSAGE(applied.status == 0, applied.output);
 }

@@ -1,4 +1,4 @@
-// Valid variants (tests/variants/) are correct solutions written differently: they must pass.
+// Valid variants (tests/instructors/variants/) are correct solutions written differently: they must pass.
 #include "grading_support.h"
 
 using namespace raylab::test;

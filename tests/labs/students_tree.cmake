@@ -205,7 +205,7 @@ function(step_suite_all)
 endfunction()
 
 # 6. A student's own correct labs, written from the handouts and not from solutions/ (VARIANT: the
-# folder where the repository's build applied tests/variants/independent_student.patch; lab 1 and
+# folder where the repository's build applied tests/instructors/variants/independent_student.patch; lab 1 and
 # any file it leaves from solutions/): every point in the tree's self-grade, where each lab runs over
 # the student's own earlier labs, and the same points, lab by lab, as the instructor's `grade-class`
 # of the same files, where each lab runs over the references of the others (docs/grading.md,

@@ -39,7 +39,7 @@ std::string errorOf(const std::string& text) {
 }
 
 // The shadings the course's labs register: those their figures use, and "lambert", the framework's
-// reference with lights (framework/study/lambert_shading.cpp), in alphabetical order.
+// reference with lights (framework/study/instructors/lambert_shading.cpp), in alphabetical order.
 std::vector<std::string> courseShadings() {
     std::set<std::string> names{"lambert"};
     for (const SceneDescription& d : grader::loadFiguresInLabOrder({}, grader::loadLabCatalog(test::kLabsDir)))

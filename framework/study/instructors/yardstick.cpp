@@ -1,4 +1,4 @@
-#include "yardstick.h"
+#include "study/yardstick.h"
 
 #include "raylab/random.h"
 

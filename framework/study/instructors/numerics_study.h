@@ -3,7 +3,7 @@
 // (student or reference) beside the textbook and stable formulas of sphere_formulas.h, against a
 // long double reference, and returns a table. `raylab numerics` runs them all.
 
-#include "table.h"
+#include "study/table.h"
 
 #include <cstdint>
 

@@ -1,9 +1,9 @@
 // raylab numerics: every measurement of docs/numerics.md; raylab study intersection: the
 // intersection's part of it (issue 5's accuracy-against-time study).
-#include "build_info.h"
-#include "commands.h"
+#include "cli/build_info.h"
+#include "cli/commands.h"
 
-#include "../study/numerics_study.h"
+#include "study/instructors/numerics_study.h"
 
 #include "src/atomic_file.h"
 #include "src/messages.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Helpers of the numerics suite: the lab code (the reference solution) against exact answers, and
-// the textbook formula of framework/study/sphere_formulas.h as the foil that shows why.
+// the textbook formula of framework/study/instructors/sphere_formulas.h as the foil that shows why.
 
 #include "sphere_formulas.h"
 
