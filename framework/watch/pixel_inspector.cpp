@@ -9,6 +9,7 @@
 #include "src/messages.h"
 #include "src/scene_file.h"
 #include "src/text.h"
+#include "raylab/image_io.h"
 #include "raylab/todo.h"
 
 #include <nlohmann/json.hpp>
@@ -25,9 +26,9 @@ namespace inspector = grader::inspector;
 
 namespace {
 
-// Whether two values (numbers or lists of numbers, or words) differ beyond float precision; NaN
-// always differs.
-bool differ(const Json& student, const Json& reference) {
+// Whether two values (numbers or lists of numbers, or words) differ beyond float precision, or
+// `inBytes` in their 8 bits; NaN always differs.
+bool differ(const Json& student, const Json& reference, bool inBytes) {
     if (student.is_null()) return true;
     if (reference.is_string() || reference.is_boolean()) return student != reference;
     const Json a = student.is_array() ? student : Json::array({student});
@@ -36,7 +37,8 @@ bool differ(const Json& student, const Json& reference) {
     for (std::size_t k = 0; k < a.size(); ++k) {
         if (!a[k].is_number() || !b[k].is_number()) return true;
         const double x = a[k].get<double>(), y = b[k].get<double>();
-        if (!(std::abs(x - y) <= 1e-4 * std::max(1., std::abs(y)))) return true;
+        if (inBytes ? !std::isfinite(x) || toByte(float(x)) != toByte(float(y)) : !(std::abs(x - y) <= 1e-4 * std::max(1., std::abs(y))))
+            return true;
     }
     return false;
 }
@@ -90,7 +92,7 @@ void addRows(Json& answer, const std::vector<inspector::Row>& rows, const Answer
         const bool framework = row.function.empty() && !row.referenceOnly;
         Json student = framework ? row.reference : row.student ? row.student(answers.outputs) : Json();
         const bool compared = !framework && !row.referenceOnly;
-        const bool differs = compared && !student.is_null() && differ(student, row.reference);
+        const bool differs = compared && !student.is_null() && differ(student, row.reference, row.inBytes);
         if (differs && answer["first"] == -1) answer["first"] = answer["rows"].size();
         std::string follows;
         for (const std::string& taken : row.takes)
@@ -163,7 +165,7 @@ std::string PixelInspector::inspectPixel(Json& answer, const std::string& figure
     }
 
     // Each lab's rows, from its grading folder: the camera's first, then what its ray meets.
-    inspector::PixelContext pixel{d, figure, x, y, m_settings.out / "report" / "images"};
+    inspector::PixelContext pixel{d, figure, x, y, m_settings.out / "report" / "images", m_settings.references};
     inspector::Inspection asked;
     const std::vector<const grader::LabDescription*> labs = stepLabs(m_labs, lab, described);
     for (const inspector::InspectorStage stage : {inspector::InspectorStage::Ray, inspector::InspectorStage::Path})

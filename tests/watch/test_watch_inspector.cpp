@@ -1,5 +1,5 @@
 // The pixel inspector against agents of known code (built by tests/grading from solutions/ and the
-// mistakes' patches): the reference's own agent agrees on every value of a pixel of labs 2 to 5; a
+// mistakes' patches): the reference's own agent agrees on every value of a pixel of labs 1 to 5; a
 // mirrored lookAt basis (mistake M4.1) differs first at the camera's u, and the rows after it say they
 // follow the reference's ray; the same sample offset for every sample (lab 5) first at the second
 // sample; lab 6's shadow rays, and a shadow ray cast away from the light first at what it meets. Run under each sandbox (ctest's RAYLAB_SANDBOX). The
@@ -35,6 +35,8 @@ json inspect(const std::string& program, const std::string& figure, int x, int y
     settings.binDir = bin;
     settings.out = bin / "out";
     const raylab::grader::LabCatalog labs = raylab::grader::loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs"); // each lab's scenes
+    for (const raylab::grader::LabDescription& lab : labs.labs) // the grader's references, as raylab watch has them
+        settings.references.push_back(fs::path(RAYLAB_SOURCE_DIR) / "framework/grader/labs" / lab.id / "references");
     std::mutex agents;
     const raylab::watch::PixelInspector inspector(settings, labs, agents);
     return json::parse(inspector.inspect(figure, x, y));
@@ -89,14 +91,14 @@ std::vector<std::string> names(const json& answer) {
 TEST_SUITE("watch inspector") {
 
 TEST_CASE("the reference's agent agrees with the reference on every value") {
-    for (const auto& [figure, x, y] : inCourse({{"lab2_directions", 10, 390}, {"lab3_cosine", 300, 150},
+    for (const auto& [figure, x, y] : inCourse({{"lab1_gradient", 450, 100}, {"lab2_directions", 10, 390}, {"lab3_cosine", 300, 150},
                                                 {"lab3_placeholder_normal", 250, 180}, {"lab4_d", 150, 100},
                                                 {"lab5_antialiased", 300, 100}})) {
         const json answer = inspect("raylab-agent-reference", figure, x, y);
         INFO(answer.dump(1));
         CHECK(answer["note"] == "");
         CHECK(answer["first"] == -1);
-        CHECK(answer["rows"].size() >= 3);
+        CHECK(answer["rows"].size() >= 2);
         for (const json& row : answer["rows"]) // but the pictures' pixel: nothing was graded into settings.out here
             if (row["name"] != "pixel colour") CHECK(!row["student"].is_null());
     }
@@ -105,10 +107,27 @@ TEST_CASE("the reference's agent agrees with the reference on every value") {
 TEST_CASE("a pixel outside the picture, a figure of no lab: said, nothing run") {
     CHECK(inspect("raylab-agent-reference", "lab3_cosine", 600, 0)["note"] == "pixel (600, 0) is outside the picture (600 x 400)");
     CHECK(inspect("raylab-agent-reference", "../secret", 1, 1)["note"] == "no figure ../secret in this lab");
-    const json gradient = inspect("raylab-agent-reference", "lab1_gradient", 1, 1);
-    CHECK(gradient["rows"].empty());
-    if (labInCourse(1)) // lab 1's grading folder gives no rows: said so
-        CHECK(gradient["note"].get<std::string>().starts_with("no inspector for lab 1:"));
+    CHECK(inspect("raylab-agent-reference", "lab1_gradient", 600, 399)["rows"].empty());
+}
+
+TEST_CASE("lab 1: the colour fillGradient writes at a pixel, beside the reference picture's, in 8 bits") {
+    if (!labInCourse(1)) return;
+    const json agreed = inspect("raylab-agent-reference", "lab1_gradient", 450, 100);
+    INFO(agreed.dump(1));
+    REQUIRE(names(agreed) == std::vector<std::string>{"pixel (i, j) of a W x H image", "colour written at (i, j)"});
+    CHECK(agreed["note"] == "");
+    CHECK(agreed["first"] == -1);
+    CHECK(agreed["rows"][0]["reference"] == json::array({450, 100, 600, 400}));
+    // The reference picture's bytes: red 450 / 599, green 100 / 399, blue 0, each rounded to 8 bits.
+    CHECK(agreed["rows"][1]["reference"] == json::array({192 / 255., 64 / 255., 0.}));
+    CHECK(agreed["rows"][1]["student"][0].get<double>() == doctest::Approx(450. / 599.).epsilon(1e-6));
+    // i and j swapped (mistake M1): red 100 / 399 where the reference has 450 / 599.
+    const json swapped = inspect("raylab-mistake-i_j_swapped", "lab1_gradient", 450, 100);
+    INFO(swapped.dump(1));
+    CHECK(swapped["first"] == 1);
+    CHECK(swapped["rows"][1]["student"][0].get<double>() == doctest::Approx(100. / 399.).epsilon(1e-6));
+    // On the diagonal where i / (W - 1) = j / (H - 1) the swap is not seen: nothing differs.
+    CHECK(inspect("raylab-mistake-i_j_swapped", "lab1_gradient", 0, 0)["first"] == -1);
 }
 
 TEST_CASE("a row the student's code computed on the reference's ray says so, only after the ray differs") {

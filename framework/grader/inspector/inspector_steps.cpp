@@ -55,8 +55,10 @@ StudentValue values(int call, std::size_t from, std::size_t count) {
 Json vec(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
 
 Json PixelContext::picturePixel(const std::string& kind) const {
-    const std::filesystem::path file = images / (figure + "." + kind + ".png");
+    std::filesystem::path file = images / (figure + "." + kind + ".png");
     std::error_code error;
+    for (const std::filesystem::path& folder : references)
+        if (kind == "reference" && !std::filesystem::is_regular_file(file, error)) file = folder / (figure + ".png");
     if (!std::filesystem::is_regular_file(file, error)) return {};
     try {
         const Image8 image = readImage(file);

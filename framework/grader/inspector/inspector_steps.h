@@ -49,6 +49,9 @@ struct Row {
     bool referenceOnly = false;
     std::string gives{};            // what this row is of the pixel's path ("ray", "hit"), when a later row takes it
     std::vector<std::string> takes{}; // the reference's values it is computed on ("ray", "hit", ...)
+    // Compared as a picture holds them, each value rounded to 8 bits (raylab/image_io.h's toByte):
+    // a reference read from a picture, beside the student's exact value.
+    bool inBytes = false;
 };
 
 // The reference's ray through a pixel, in double.
@@ -61,11 +64,13 @@ struct PixelContext {
     std::string figure;
     int x = 0, y = 0;
     std::filesystem::path images{}; // the last grade's pictures: <figure>.student.png, <figure>.reference.png
+    std::vector<std::filesystem::path> references{}; // the grader's references, each lab's folder: <figure>.png
     std::optional<ReferenceRay> ray{}; // made by the step of the camera, for the steps after it
     bool coloured = false;           // a step has given the pixel's colour: a later one does not give another
 
     // The pixel of the last grade's picture `kind` ("student", "reference") as a colour (0 to 1 a
-    // channel); null when there is none.
+    // channel); the reference's is the grader's own where no grade has written it; null when there is
+    // none.
     Json picturePixel(const std::string& kind) const;
 };
 
