@@ -3,6 +3,7 @@
 #include "grader/course_list.h"
 
 #include "src/messages.h"
+#include "src/text.h"
 #include "src/toml_reader.h"
 
 #include <algorithm>
@@ -152,21 +153,28 @@ std::vector<LabFigure> readFigures(const TomlReader& r, const toml::table& root,
 
 std::vector<LabCheck> readChecks(const TomlReader& r, const toml::table& root, const LabDescription& lab) {
     return list<LabCheck>(r, root, "check", [&](const toml::table& t, const std::string& where) {
-        r.onlyKeys(t, where, {"name", "points", "uses"});
-        LabCheck c{r.text(t, where, "name"), points(r, t, where), itemUses(r, lab, t, where, {}), int(t.source().begin.line)};
-        if (c.name.find_first_of(",*?") != std::string::npos)
-            r.fail(t.get("name"), where + "name", "\"" + c.name + "\": doctest's filters split names on , * ?");
+        r.onlyKeys(t, where, {"id", "points", "uses"});
+        LabCheck c{r.text(t, where, "id"), points(r, t, where), itemUses(r, lab, t, where, {}), int(t.source().begin.line)};
+        // It keys a message ([check_title] <id>), a command's argument (raylab grade --item) and a
+        // workflow step's id: short, and the same in every language.
+        const auto lower = [](char k) { return k >= 'a' && k <= 'z'; };
+        const bool word = !c.id.empty() && c.id.size() <= 40 && lower(c.id.front()) &&
+                          std::all_of(c.id.begin(), c.id.end(), [&](char k) { return lower(k) || (k >= '0' && k <= '9') || k == '_'; });
+        if (!word)
+            r.fail(t.get("id"), where + "id",
+                   "\"" + printableText(c.id) + "\": a check's id is 1 to 40 lower-case letters, digits and _, from a letter "
+                   "(its sentence is its title, [check_title] in the grading folder's messages)");
         return c;
     });
 }
 
-// Figure ids and check names share one namespace within a lab.
+// Figure ids and check ids share one namespace within a lab.
 void rejectDuplicateNames(const TomlReader& r, const toml::table& root, const LabDescription& lab) {
     std::map<std::string, int> seen;
     for (const LabFigure& f : lab.figures)
         if (seen[f.id]++) r.fail(root.get("figure"), "figure", "the id " + f.id + " is there twice");
     for (const LabCheck& c : lab.checks)
-        if (seen[c.name]++) r.fail(root.get("check"), "check", "the name \"" + c.name + "\" is there twice");
+        if (seen[c.id]++) r.fail(root.get("check"), "check", "the id \"" + c.id + "\" is there twice");
 }
 
 // A given lab is the framework's: what uses it uses the framework, not a lab graded on its own.
@@ -222,7 +230,7 @@ const LabFigure* LabDescription::figure(const std::string& wanted) const {
 
 const LabCheck* LabDescription::check(const std::string& wanted) const {
     for (const LabCheck& c : checks)
-        if (c.name == wanted) return &c;
+        if (c.id == wanted) return &c;
     return nullptr;
 }
 
@@ -337,7 +345,7 @@ LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {
     if (const std::optional<std::vector<int>> course = loadCourseList(courseFile(labs), catalog.numbers()))
         leaveOut(catalog, *course);
     addGivenReferences(catalog, labs);
-    std::map<std::string, const LabDescription*> figureOwner, fileOwner;
+    std::map<std::string, const LabDescription*> itemOwner, fileOwner; // the figures' and checks' ids, the files
     for (std::size_t k = 0; k < catalog.labs.size(); ++k) {
         const LabDescription& lab = catalog.labs[k];
         if (k > 0 && catalog.labs[k - 1].number == lab.number)
@@ -354,10 +362,17 @@ LabCatalog loadLabCatalog(const fs::path& labs, const fs::path& scenes) {
                 throw std::runtime_error(lab.file.string() + ": function: file " + name + " is also a file of " +
                                          it->second->file.string() + " (a lab file's name is unique in the course)");
         for (const LabFigure& f : lab.figures)
-            if (const auto [it, added] = figureOwner.emplace(f.id, &lab); !added)
+            if (const auto [it, added] = itemOwner.emplace(f.id, &lab); !added)
                 throw std::runtime_error(lab.file.string() + ": figure: " + f.id + " is also a figure of " +
                                          it->second->file.string());
     }
+    // A check's id keys its title in the merged messages and `raylab grade --item`: unique in the course.
+    for (const LabDescription& lab : catalog.labs)
+        for (const LabCheck& c : lab.checks)
+            if (const auto [it, added] = itemOwner.emplace(c.id, &lab); !added && it->second != &lab)
+                throw std::runtime_error(lab.file.string() + ":" + std::to_string(c.line) + ": check: " + c.id +
+                                         " is also a check or a figure of " + it->second->file.string() +
+                                         " (a check's id is unique in the course)");
     return catalog;
 }
 

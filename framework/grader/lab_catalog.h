@@ -29,7 +29,8 @@ struct LabFigure {
 };
 
 struct LabCheck {
-    std::string name; // the check's name, as the agent reports it
+    std::string id; // short and stable: its results, mistakes.toml and checks.cpp name it; its title is
+                    // [check_title] <id> of the lab's messages (titleInLanguage)
     double points = 0.;
     std::vector<int> uses; // the other labs whose code it calls (none unless it says)
     int line = 0;          // of its [[check]] in lab.toml
@@ -50,7 +51,7 @@ struct LabDescription {
 
     const std::string& title(const std::string& lang) const { return lang == "fr" ? titleFr : titleEn; }
     const LabFigure* figure(const std::string& id) const;
-    const LabCheck* check(const std::string& name) const;
+    const LabCheck* check(const std::string& id) const;
     // The files a student writes (the functions' files, each once, in their order): what the grader
     // copies from a submission, each name unique in the course.
     std::vector<std::string> files() const;

@@ -463,7 +463,8 @@ TEST_CASE("classroom.yml: GitHub Classroom's shape, a build, a step per check an
     REQUIRE(steps.IsSequence());
     std::map<std::string, double> expected; // every item of the labs' descriptions, with its points
     for (const LabDescription& lab : courseSetup().labs.labs) {
-        for (const LabCheck& c : lab.checks) expected[c.name] = c.points;
+        for (const LabCheck& c : lab.checks) // its step shows its title
+            expected[raylab::titleInLanguage(raylab::Language::En, c.id)] = c.points;
         for (const LabFigure& f : lab.figures) expected[f.id] = f.points;
     }
     std::map<std::string, double> graded;
@@ -549,7 +550,8 @@ TEST_CASE("a submission's lab files are found at its top, in labs/, in one wrapp
 TEST_CASE("one item alone: its lab, its verdict and points; an unknown name is refused") {
     const LabCatalog catalog = courseSetup().labs;
     CHECK(labOfItem(catalog, "lab1_gradient") == 1);
-    CHECK(labOfItem(catalog, "updateViewport: the viewport of the default camera") == 2);
+    CHECK(labOfItem(catalog, "default_viewport") == 2); // a check's id
+    CHECK_THROWS_AS(labOfItem(catalog, "updateViewport: the viewport of the default camera"), std::invalid_argument); // its title
     CHECK_THROWS_AS(labOfItem(catalog, "no such check"), std::invalid_argument);
     GradeResult r;
     r.checks.push_back({2, "a", false, "expected 1, got 2. Hint: h", 0., 3.});
@@ -566,7 +568,7 @@ TEST_CASE("one item alone: its lab, its verdict and points; an unknown name is r
 
 TEST_CASE("results.json speaks the grade's language: the items' names, the total and each lab's points") {
     GradeResult r;
-    r.checks.push_back({3, "intersect: a ray through the centre hits the near side", true, "", 2., 2.});
+    r.checks.push_back({3, "near_side", true, "", 2., 2.}); // shown by its title
     r.figures.push_back({});
     r.figures.back().lab = 3;
     r.figures.back().id = "lab3_flat";
@@ -595,7 +597,7 @@ TEST_CASE("GitHub Classroom: points that are not whole numbers are refused, nami
     CHECK_NOTHROW(classroomWorkflow(catalog));
     LabCheck& check = catalog.labs.at(1).checks.front();
     check.points = 0.5;
-    const std::string named = "\"" + check.name + "\" is worth 0.5 points";
+    const std::string named = "\"" + check.id + "\" is worth 0.5 points";
     CHECK_THROWS_WITH_AS(classroomWorkflow(catalog), doctest::Contains(named.c_str()), std::invalid_argument);
     CHECK_THROWS_WITH_AS(classroomWorkflow(catalog), doctest::Contains("whole number"), std::invalid_argument);
 }
@@ -607,7 +609,7 @@ TEST_CASE("the step ids are unique and fit GitHub's ids; the commands quote the 
         CHECK(ids.insert(s.id).second);
         CHECK(s.id.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") == std::string::npos);
     }
-    CHECK(classroomCommand({"x", "it's", 1.}) == "build/bin/raylab grade --item 'it'\\''s' --report out/item-report");
+    CHECK(classroomCommand({"x", "it's", "It's", 1.}) == "build/bin/raylab grade --item 'it'\\''s' --report out/item-report");
 }
 
 } // TEST_SUITE

@@ -367,7 +367,7 @@ TEST_CASE("class-page on a class of 100 students: the time it takes") {
                 std::ofstream(copy / lab.id / file) << "// " << name << "\n" << text; // a line of their own, at least
             }
             outcome.labs.push_back({lab.number, double(s % 9), 8., false});
-            for (const auto& check : lab.checks) outcome.items.push_back({false, lab.number, check.name, (s + lab.number) % 3 != 0, false, {}});
+            for (const auto& check : lab.checks) outcome.items.push_back({false, lab.number, check.id, (s + lab.number) % 3 != 0, false, {}});
         }
         raylab::grader::writeStudentOutcome(outcome, out / "students" / name / "outcome.json");
         raylab::writeFileAtomically(out / "students" / name / "result.json",

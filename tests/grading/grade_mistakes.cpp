@@ -4,6 +4,8 @@
 // not have, and a check that reaches the mistake through another function names the function to fix.
 #include "grading_support.h"
 
+#include "src/messages.h"
+
 #include <algorithm>
 #include <map>
 
@@ -11,9 +13,10 @@ using namespace raylab::test;
 
 TEST_SUITE("mistakes") {
 
-// What the hints must not say for a mistake, by check-name prefix: a cause the code does not have.
+// What the hints must not say for a mistake, by the prefix of the check's English title: a cause the
+// code does not have.
 struct WrongCause {
-    std::string checks; // the checks concerned: their names start with this
+    std::string checks; // the checks concerned: their English titles start with this
     std::string text;   // it must not appear in their messages
 };
 
@@ -30,7 +33,7 @@ const std::map<std::string, std::vector<WrongCause>> kWrongCauses{
     {"direction_not_normalized", {{"generateRay: a camera away", "topLeft includes"}, {"generateRay: the centre", "sx goes right"}}},
 };
 
-// What the hints must say for a mistake, by check-name prefix: a check that calls the mistaken
+// What the hints must say for a mistake, by the prefix of the check's English title: a check that calls the mistaken
 // function only through another names the function to fix; every failing check so named says it.
 const std::map<std::string, std::vector<WrongCause>> kRightCauses{
     // Li is right for the far hit that intersect returns: intersect is the function to fix.
@@ -86,14 +89,14 @@ TEST_CASE("each catalogued mistake is caught and named") {
         if (const auto wrong = kWrongCauses.find(m.id); wrong != kWrongCauses.end())
             for (const CheckOutcome& c : r.checks)
                 for (const WrongCause& cause : wrong->second)
-                    if (c.name.rfind(cause.checks, 0) == 0)
+                    if (raylab::titleInLanguage(raylab::Language::En, c.name).rfind(cause.checks, 0) == 0)
                         CHECK_MESSAGE(c.message.find(cause.text) == std::string::npos,
                                       c.name << " names a cause the code does not have: " << c.message);
         if (const auto right = kRightCauses.find(m.id); right != kRightCauses.end())
             for (const WrongCause& cause : right->second) {
                 int said = 0;
                 for (const CheckOutcome& c : r.checks)
-                    if (c.name.rfind(cause.checks, 0) == 0 && !c.passed) {
+                    if (raylab::titleInLanguage(raylab::Language::En, c.name).rfind(cause.checks, 0) == 0 && !c.passed) {
                         ++said;
                         CHECK_MESSAGE(c.message.find(cause.text) != std::string::npos, c.name << " does not say \"" << cause.text
                                                                                               << "\": " << c.message);

@@ -31,14 +31,14 @@ TEST_CASE("every check the grader runs is in its lab's description, and the othe
     const GradeSetup setup = courseSetup(); // loadGradeSetup refuses a mismatch (unit_points.cpp shows it)
     std::set<std::string> listed;
     for (const FunctionCheck& c : functionChecks(setup.labs, 1)) {
-        listed.insert(c.name);
+        listed.insert(c.id);
         const LabDescription* lab = setup.labs.lab(c.lab);
-        REQUIRE_MESSAGE((lab != nullptr && lab->check(c.name) != nullptr), "lab " << c.lab << ": \"" << c.name << "\"");
-        CHECK(c.points == lab->check(c.name)->points);
+        REQUIRE_MESSAGE((lab != nullptr && lab->check(c.id) != nullptr), "lab " << c.lab << ": \"" << c.id << "\"");
+        CHECK(c.points == lab->check(c.id)->points);
     }
     for (const LabDescription& lab : setup.labs.labs)
         for (const LabCheck& check : lab.checks)
-            CHECK_MESSAGE(listed.count(check.name), lab.file.string() << " names \"" << check.name << "\", which no check has");
+            CHECK_MESSAGE(listed.count(check.id), lab.file.string() << " names \"" << check.id << "\", which no check has");
 }
 
 TEST_CASE("the stubs of labs/ get zero, each check saying what to write") {
@@ -48,7 +48,7 @@ TEST_CASE("the stubs of labs/ get zero, each check saying what to write") {
     const GradeResult r = gradeCode(setup, agents, true);
     fs::remove_all(setup.scratch);
     CHECK(r.score() == 0.);
-    const CheckOutcome* c = findCheck(r, "generateRay: directions are unit vectors");
+    const CheckOutcome* c = findCheck(r, "unit_directions");
     REQUIRE(c);
     CHECK(c->message.find("lab 2 not done yet: write PerspectiveCamera::updateViewport") != std::string::npos);
     const FigureOutcome* f = findFigure(r, "lab3_cosine");

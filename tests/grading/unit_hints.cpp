@@ -34,12 +34,12 @@ std::vector<std::pair<std::string, std::string>> judge(int lab, const Answer& an
     const std::vector<FunctionCheck> checks = labChecks(*labs.lab(lab), random);
     std::vector<std::pair<std::string, std::string>> messages;
     for (const FunctionCheck& check : checks) {
-        if (!only.empty() && check.name != only) continue;
+        if (!only.empty() && check.id != only) continue;
         std::vector<std::vector<double>> outputs;
         for (const auto& call : check.calls) outputs.push_back(answer(call));
         Judge judge;
         check.judge(outputs, judge);
-        messages.emplace_back(check.name, judge.message());
+        messages.emplace_back(check.id, judge.message());
     }
     return messages;
 }
@@ -105,7 +105,7 @@ TEST_CASE("lab 1: a pixel never written, a division by zero and an integer divis
 TEST_CASE("lab 3: an inward normal is told to point outwards, a normal of length r to divide by r") {
     for (const bool inward : {true, false}) {
         CAPTURE(inward);
-        const std::string name = "computeNormal: unit and pointing outwards";
+        const std::string name = "normal";
         const auto messages = judge(
             3,
             [inward](const protocol::Call& call) {
@@ -138,7 +138,7 @@ TEST_CASE("lab 2: sx and sy swapped is not blamed on the position of a camera aw
         const glm::dvec3 d = glm::normalize(glm::dvec3(wide / 2. - sx * wide, h / 2. - sy * h, 1.));
         return std::vector<double>{position.x, position.y, position.z, d.x, d.y, d.z};
     };
-    const auto messages = judge(2, swapped, "generateRay: a camera away from the origin starts its rays at its position");
+    const auto messages = judge(2, swapped, "moved_camera");
     REQUIRE(messages.size() == 1);
     const std::string& message = messages[0].second;
     CHECK_FALSE(message.empty());
@@ -166,7 +166,7 @@ TEST_CASE("lab 4: u and v made rightly from an unnormalized w are sent to w, and
         out.insert(out.end(), {h, wide, topLeft.x, topLeft.y, topLeft.z});
         return out;
     };
-    for (const char* name : {"lookAt: the basis of the handout's four cameras", "lookAt: the viewport follows the new frame"}) {
+    for (const char* name : {"four_cameras", "viewport_follows"}) {
         const auto messages = judge(4, unnormalizedW, name);
         REQUIRE(messages.size() == 1);
         const std::string& message = messages[0].second;
@@ -259,7 +259,7 @@ Answer lookAtAnswer(std::function<void(const glm::dvec3& w, const glm::dvec3& up
 TEST_CASE("lab 4: u and v exchanged are told so, not the order of cross(up, w); a mirrored u is told its order, v sent to u") {
     if (!raylab::test::labInCourse(std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs", 4)) return;
     const LanguageScope english(raylab::Language::En);
-    const std::string basis = "lookAt: the basis of the handout's four cameras";
+    const std::string basis = "four_cameras";
     const std::string exchanged = judge(4, lookAtAnswer([](const glm::dvec3& w, const glm::dvec3& up, glm::dvec3& u, glm::dvec3& v) {
                                             v = glm::normalize(glm::cross(up, w));
                                             u = glm::cross(w, v);

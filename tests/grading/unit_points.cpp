@@ -51,11 +51,11 @@ caption = { en = "A picture", fr = "Une image" }
 points = 1.5
 
 [[check]]
-name = "trace: a check"
+id = "a_check"
 points = 3
 
 [[check]]
-name = "trace: another check"
+id = "another_check"
 points = 1
 uses = [1]
 )toml";
@@ -83,11 +83,11 @@ TEST_CASE("a lab's items, points, titles and the labs it uses") {
     CHECK(catalog.figure("lab2_picture")->uses == std::vector<int>{1}); // the lab's, unless it says
     CHECK(catalog.labOfFigure("lab2_picture") == &lab);
     CHECK(catalog.figurePoints("lab2_picture", 7.) == 1.5);
-    CHECK(catalog.checkPoints(2, "trace: a check") == 3.);
+    CHECK(catalog.checkPoints(2, "a_check") == 3.);
     CHECK_THROWS_AS(catalog.checkPoints(2, "unknown"), std::logic_error); // no silent default
-    CHECK_THROWS_AS(catalog.checkPoints(1, "trace: a check"), std::logic_error);
-    CHECK(lab.check("trace: a check")->uses.empty()); // a check runs its own lab's code unless it says
-    CHECK(lab.check("trace: another check")->uses == std::vector<int>{1});
+    CHECK_THROWS_AS(catalog.checkPoints(1, "a_check"), std::logic_error);
+    CHECK(lab.check("a_check")->uses.empty()); // a check runs its own lab's code unless it says
+    CHECK(lab.check("another_check")->uses == std::vector<int>{1});
 }
 
 TEST_CASE("a figure's lab is the lab.toml that lists it: the scenes in the order of their lab") {
@@ -133,8 +133,21 @@ TEST_CASE("a bad description is refused, naming the file, the line and the key")
     refused(replaced(kLab2, "file = \"code.cpp\"", "file = \"../lab1_first/code.cpp\""), "is not a plain file name");
     refused(replaced(kLab2, "file = \"code.cpp\"", "file = \"lab.toml\""), "is not a plain file name");
     refused(replaced(kLab2, ", fr = \"Rayons\" }", " }"), "title.fr: missing");
-    refused(replaced(kLab2, "[[check]]\nname = \"trace: another check\"", "[[check]]\nname = \"trace: a check\""),
-            "check: the name \"trace: a check\" is there twice");
+    refused(replaced(kLab2, "[[check]]\nid = \"another_check\"", "[[check]]\nid = \"a_check\""),
+            "check: the id \"a_check\" is there twice");
+    // An id keys a message, a command's argument and a workflow step: a sentence is its title, not its id.
+    refused(replaced(kLab2, "id = \"a_check\"", "id = \"trace: a check\""),
+            ":18: [[check]] #1 id: \"trace: a check\": a check's id is 1 to 40 lower-case letters, digits and _, from a letter");
+    refused(replaced(kLab2, "id = \"a_check\"", "id = \"A_check\""), ":18: [[check]] #1 id: \"A_check\"");
+    refused(replaced(kLab2, "id = \"a_check\"", "id = \"\""), ":18: [[check]] #1 id: expected a non-empty string");
+    refused(replaced(kLab2, "id = \"a_check\"", "name = \"a_check\""), ":18: [[check]] #1 name: unknown key (known keys: id, points, uses)");
+    // Unique in the course: another lab's check or figure of that id is refused, naming both.
+    course.lab("lab1_first", kLab1 + "\n[[check]]\nid = \"a_check\"\npoints = 1\n");
+    refused(kLab2, "lab.toml:17: check: a_check is also a check or a figure of "); // its [[check]]'s line
+    refused(replaced(kLab2, "id = \"a_check\"", "id = \"lab2_picture\""), "check: the id \"lab2_picture\" is there twice");
+    course.lab("lab1_first", kLab1 + "\n[[check]]\nid = \"lab2_picture\"\npoints = 1\n");
+    refused(kLab2, "check: lab2_picture is also a check or a figure of ");
+    course.lab("lab1_first", kLab1);
     refused(replaced(kLab2, "number = 2\n", "number = 2\n[oops\n"), "lab.toml:2:6: not valid TOML: ");
     course.lab("lab2_rays", kLab2);
     course.lab("lab1_again", replaced(kLab1, "lab1_first", "lab1_again"));
@@ -186,7 +199,7 @@ TEST_CASE("a lab the course leaves out is given when the framework calls its fun
     CHECK(catalog.lab(1) == nullptr); // not graded
     CHECK(catalog.lab(2)->uses.empty()); // the given lab is the framework's
     CHECK(catalog.figure("lab2_picture")->uses.empty());
-    CHECK(catalog.lab(2)->check("trace: another check")->uses.empty());
+    CHECK(catalog.lab(2)->check("another_check")->uses.empty());
     CHECK_FALSE(catalog.lab(2)->frameworkCalls);
 
     course.lab("lab1_first", kLab1); // its own functions only: left out, it is absent, and lab 2 cannot use it
@@ -244,8 +257,8 @@ TEST_CASE(
     CHECK(checks[0].lab == 3);
 
     // Renamed in lab.toml only: the code's check is in no lab.toml, lab.toml's has no code.
-    const std::string code = checks[0].name, file = lab.file.string(), line = std::to_string(lab.checks[0].line);
-    lab.checks[0].name = "intersect: renamed in lab.toml";
+    const std::string code = checks[0].id, file = lab.file.string(), line = std::to_string(lab.checks[0].line);
+    lab.checks[0].id = "intersect: renamed in lab.toml";
     CHECK(lab.checks[0].line > 10);
     try {
         labChecks(lab, random);
@@ -255,7 +268,7 @@ TEST_CASE(
         CHECK_MESSAGE(message.find("framework/grader/labs/lab3_sphere/checks.cpp:") != std::string::npos, message);
         CHECK_MESSAGE(message.find("the check \"" + code + "\" is not in " + file) != std::string::npos, message);
         CHECK_MESSAGE(message.find(file + ":" + line +
-                                   ": the check \"intersect: renamed in lab.toml\" has no code: "
+                                   ": the check \"renamed_in_lab_toml\" has no code: "
                                    "framework/grader/labs/lab3_sphere/checks.cpp:") != std::string::npos,
                       message);
     }

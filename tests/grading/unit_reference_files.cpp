@@ -52,7 +52,7 @@ lab = 2
 function = "PerspectiveCamera::updateViewport (perspective_camera.cpp)"
 hint = "use tan(fovy / 2)"
 hint_fr = "utilisez tan(fovy / 2)"
-check = "updateViewport: the viewport of the default camera"
+check = "default_viewport"
 )toml";
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -86,7 +86,7 @@ TEST_CASE("the mistakes' catalogue: a mistake is read whole") {
     CHECK(mistakes[0].nameFr == "fovy non divisé par deux");
     CHECK(mistakes[0].lab == 2);
     CHECK(mistakes[0].label == "2.1");
-    CHECK(mistakes[0].check == "updateViewport: the viewport of the default camera");
+    CHECK(mistakes[0].check == "default_viewport");
     CHECK(loadMistakes({folder.root / "none"}).empty()); // no catalogue: no mistake to diagnose
 }
 

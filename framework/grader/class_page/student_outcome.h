@@ -15,7 +15,7 @@ namespace raylab::grader {
 struct ItemVerdict {
     bool figure = false; // else a function check
     int lab = 0;
-    std::string name;    // the check's name as lab.toml writes it, or the figure's id
+    std::string name;    // the check's id as lab.toml writes it (shown by its title), or the figure's id
     bool passed = false;
     bool stopped = false;              // its run ended without its answer (a crash, a limit)
     std::vector<std::string> mistakes; // the catalogue's ids diagnosed in it

@@ -59,7 +59,7 @@ int labOfItem(const LabCatalog& catalog, const std::string& item) {
     for (const LabDescription& lab : catalog.labs)
         if (lab.check(item) || lab.figure(item)) return lab.number;
     throw std::invalid_argument("--item \"" + item +
-                                "\": no check has that name and no figure that id (their list is in labs/*/lab.toml)");
+                                "\": no check and no figure has that id (their list is in labs/*/lab.toml)");
 }
 
 GradeResult onlyItem(const GradeResult& result, const std::string& item) {
@@ -87,8 +87,9 @@ std::vector<ClassroomStep> classroomSteps(const LabCatalog& catalog) {
     std::vector<ClassroomStep> steps;
     std::set<std::string> taken;
     for (const LabDescription& lab : catalog.labs) {
-        for (const LabCheck& c : lab.checks) steps.push_back({stepId(lab.number, c.name, taken), c.name, c.points});
-        for (const LabFigure& f : lab.figures) steps.push_back({stepId(lab.number, f.id, taken), f.id, f.points});
+        for (const LabCheck& c : lab.checks)
+            steps.push_back({stepId(lab.number, c.id, taken), c.id, titleInLanguage(Language::En, c.id), c.points});
+        for (const LabFigure& f : lab.figures) steps.push_back({stepId(lab.number, f.id, taken), f.id, f.id, f.points});
     }
     return steps;
 }
@@ -115,9 +116,9 @@ std::string classroomWorkflow(const LabCatalog& catalog) {
         "    - name: Checkout code\n      uses: actions/checkout@v4\n"
         "    - name: Build\n      run: " + yamlString(classroomBuildCommand()) + "\n";
     for (const ClassroomStep& s : steps) {
-        yaml += "    - name: " + yamlString(s.name) + "\n      id: " + s.id +
+        yaml += "    - name: " + yamlString(s.title) + "\n      id: " + s.id +
                 "\n      if: always()\n      uses: classroom-resources/autograding-command-grader@v1\n      with:\n        test-name: " +
-                yamlString(s.name) + "\n        setup-command: ''\n        command: " + yamlString(classroomCommand(s)) +
+                yamlString(s.title) + "\n        setup-command: ''\n        command: " + yamlString(classroomCommand(s)) +
                 "\n        timeout: 10\n        max-score: " + std::to_string(std::lround(s.points)) + "\n";
     }
     yaml += "    - name: HTML report\n      if: always()\n      run: build/bin/raylab grade --report out/report || true\n"

@@ -34,7 +34,8 @@ GradeResult onlyItem(const GradeResult& result, const std::string& item);
 
 struct ClassroomStep {
     std::string id;      // the step's id: letters, digits and '-', unique
-    std::string name;    // the check's name or the figure's id, as `raylab grade --item` takes it
+    std::string name;    // the check's or the figure's id, as `raylab grade --item` takes it
+    std::string title;   // what the workflow shows: the check's title in English, the figure's id
     double points = 0.;
 };
 

@@ -167,7 +167,7 @@ void writeJUnitXml(const GradeResult& result, const fs::path& file) {
             cases << "</testcase>\n";
         };
         for (const CheckOutcome& c : result.checks)
-            if (c.lab == lab) item(c.name, c.passed, c.message);
+            if (c.lab == lab) item(titleInLanguage(c.name), c.passed, c.message);
         for (const FigureOutcome& f : result.figures)
             if (f.lab == lab) item("figure " + f.id, f.passed, itemOutput(f));
         if (tests == 0) continue;

@@ -49,8 +49,8 @@ public:
     void resolveCheck(Item& item, bool passed, const std::string& message, int stubLab = 0) {
         if (item.resolved) return;
         item.resolved = true;
-        m_reported.order.push_back(item.check->name);
-        m_reported.checks[item.check->name] = CheckOutcome{item.check->lab, item.check->name, passed, message, 0., 0., stubLab};
+        m_reported.order.push_back(item.check->id);
+        m_reported.checks[item.check->id] = CheckOutcome{item.check->lab, item.check->id, passed, message, 0., 0., stubLab};
     }
     void resolveFigure(Item& item, RenderedFigure figure) {
         if (item.resolved) return;
@@ -63,12 +63,12 @@ public:
         if (!item.resolved) {
             if (item.check) {
                 resolveCheck(item, false, reason);
-                m_reported.checks[item.check->name].stopped = true;
+                m_reported.checks[item.check->id].stopped = true;
             } else {
                 resolveFigure(item, RenderedFigure{std::nullopt, reason, 0, true});
             }
         } else if (item.check) {
-            CheckOutcome& c = m_reported.checks[item.check->name];
+            CheckOutcome& c = m_reported.checks[item.check->id];
             if (c.passed) c = CheckOutcome{c.lab, c.name, false, reason, 0., 0., 0, true};
         } else {
             RenderedFigure& f = m_reported.figures[item.figure->id];

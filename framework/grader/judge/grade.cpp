@@ -109,7 +109,7 @@ void addBuildProblem(GradeResult& result, const std::vector<int>& unbuilt, const
 void addUnbuiltLab(const GradeSetup& setup, GradeResult& result, int lab) {
     if (const LabDescription* description = setup.labs.lab(lab))
         for (const LabCheck& check : description->checks)
-            addCheck(setup, result, CheckOutcome{lab, check.name, false, tr("grade.does_not_build"), 0., 0.});
+            addCheck(setup, result, CheckOutcome{lab, check.id, false, tr("grade.does_not_build"), 0., 0.});
     for (const FigureReference& reference : setup.references.figures)
         if (reference.lab == lab) result.figures.push_back(figureAtZero(setup, reference, tr("grade.does_not_build")));
 }
@@ -141,8 +141,8 @@ void addReportedChecks(const GradeSetup& setup, GradeResult& result, const Repor
         if (reported.checks.at(name).lab == lab) addCheck(setup, result, reported.checks.at(name));
     if (const LabDescription* description = setup.labs.lab(lab))
         for (const LabCheck& check : description->checks)
-            if (!reported.checks.count(check.name))
-                addCheck(setup, result, CheckOutcome{lab, check.name, false, tr("grade.check_never_ran"), 0., 0.});
+            if (!reported.checks.count(check.id))
+                addCheck(setup, result, CheckOutcome{lab, check.id, false, tr("grade.check_never_ran"), 0., 0.});
 }
 
 // Every figure of the lab as the agent rendered it, graded, or failed with why it has no picture.

@@ -12,7 +12,7 @@ namespace raylab::grader {
 
 struct CheckOutcome {
     int lab = 0;
-    std::string name;
+    std::string name; // the check's id (lab.toml); shown as its title, titleInLanguage(name)
     bool passed = false;
     std::string message; // expected / got / hint, or why it never ran
     double points = 0., maxPoints = 0.;

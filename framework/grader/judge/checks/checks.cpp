@@ -180,7 +180,7 @@ std::vector<FunctionCheck> labChecks(const LabDescription& lab, CaseRandom& rand
         for (const LabCheck& c : lab.checks)
             problems.push_back(
                 tr("check.lab_without_code",
-                   {{"lab_toml", labToml}, {"line", std::to_string(c.line)}, {"name", c.name}, {"id", lab.id}}));
+                   {{"lab_toml", labToml}, {"line", std::to_string(c.line)}, {"name", c.id}, {"id", lab.id}}));
         if (!problems.empty()) refuse(problems);
         return {};
     }
@@ -189,22 +189,22 @@ std::vector<FunctionCheck> labChecks(const LabDescription& lab, CaseRandom& rand
     std::vector<FunctionCheck> checks;
     std::set<std::string> coded;
     for (LabChecks::Added& a : added.added()) {
-        const LabCheck* declared = lab.check(a.check.name);
+        const LabCheck* declared = lab.check(a.check.id);
         if (declared == nullptr) {
             problems.push_back(tr("check.not_in_lab_toml",
-                                  {{"where", a.where.shown()}, {"name", a.check.name}, {"lab_toml", labToml}}));
+                                  {{"where", a.where.shown()}, {"name", a.check.id}, {"lab_toml", labToml}}));
             continue;
         }
-        coded.insert(a.check.name);
+        coded.insert(a.check.id);
         a.check.lab = lab.number;
         a.check.points = declared->points;
         checks.push_back(std::move(a.check));
     }
     for (const LabCheck& c : lab.checks)
-        if (coded.count(c.name) == 0)
+        if (coded.count(c.id) == 0)
             problems.push_back(tr("check.no_code", {{"lab_toml", labToml},
                                                     {"line", std::to_string(c.line)},
-                                                    {"name", c.name},
+                                                    {"name", c.id},
                                                     {"registered", registered->where.shown()}}));
     if (!problems.empty()) refuse(problems);
     return checks;

@@ -70,7 +70,7 @@ std::string show(const glm::dvec3& v);
 using Outputs = protocol::NumberReader;
 
 struct FunctionCheck {
-    std::string name; // as its lab's lab.toml declares it
+    std::string id; // as its lab's lab.toml declares it
     std::vector<protocol::Call> calls;
     // Judges the outputs of `calls` (one list a call, each of the size its probe gives).
     std::function<void(const std::vector<std::vector<double>>& outputs, Judge& judge)> judge;

@@ -70,7 +70,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     // Drawn sizes never equal the fixed ones: an answer learnt by heart for those fails these.
     const int width = random.integer(6, 40), height = random.integer(4, 30);
     checks.add(gradientCheck(
-        "fillGradient: the corners and the middle of a 5 x 3 image", {{5, 3}, {width, height}},
+        "corners_and_middle", {{5, 3}, {width, height}},
         [](const std::vector<Gradient>& textures, Judge& judge) {
             const Gradient& fixed = textures[0];
             auto pixel = [](int i, int j) { return tr("what.lab1.pixel", {{"i", std::to_string(i)}, {"j", std::to_string(j)}}); };
@@ -89,7 +89,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
         }));
 
     const int otherWidth = random.integer(8, 40), otherHeight = random.integer(5, 30);
-    checks.add(gradientCheck("fillGradient: every pixel is written", {{7, 4}, {otherWidth, otherHeight}},
+    checks.add(gradientCheck("every_pixel", {{7, 4}, {otherWidth, otherHeight}},
                             [](const std::vector<Gradient>& textures, Judge& judge) {
                                 for (const Gradient& g : textures)
                                     for (int j = 0; j < g.height; ++j)
@@ -98,7 +98,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
                             }));
 
     const int tall = random.integer(4, 20), wide = random.integer(5, 20);
-    checks.add(gradientCheck("fillGradient: a 1-pixel-wide or 1-pixel-high image has no NaN",
+    checks.add(gradientCheck("one_pixel_wide",
                             {{1, 3}, {4, 1}, {1, tall}, {wide, 1}},
                             [](const std::vector<Gradient>& textures, Judge& judge) {
                                 for (const Gradient& g : textures) g.expectPixel(judge, g.width - 1, g.height - 1, 1e-6);

@@ -134,7 +134,7 @@ void expectRays(Judge& judge, const Camera& c, const SeenViewport& viewport, con
 void addChecks(LabChecks& checks, CaseRandom& random) {
     const Camera handout{600, 400, 60.};
     const Camera drawn = drawnCamera(random);
-    checks.add({"updateViewport: the viewport of the default camera",
+    checks.add({"default_viewport",
                {handout.viewport(), drawn.viewport()},
                [handout, drawn](const auto& out, Judge& judge) {
                    expectViewport(judge, handout, out[0], false);
@@ -143,7 +143,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
 
     const Camera square{100, 100, 90.}, wide{100, 100, CaseRandom::asFloat(random.uniform(20., 120.))};
     checks.add(
-        {"updateViewport: fovy is in degrees and halved",
+        {"fovy_degrees",
          {square.viewport(), wide.viewport()},
          [square, wide](const auto& out, Judge& judge) {
       const std::string hint = tr("hint.lab2.fovy_degrees_halved");
@@ -171,7 +171,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
         calls.push_back(other.ray(p.sx, p.sy));
     calls.push_back(handout.viewport());
     calls.push_back(other.viewport());
-    checks.add({"generateRay: the centre and the four corners of the default camera", calls,
+    checks.add({"centre_and_corners", calls,
                [handout, other, corners, drawnPoints, fixedCorners](const auto& out, Judge& judge) {
                    const std::size_t viewports = fixedCorners + drawnPoints.size();
                    expectRays(judge, handout, SeenViewport(handout, out[viewports]), corners, out, 0);
@@ -190,7 +190,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     for (const auto& [sx, sy] : screen)
         calls.push_back(unit.ray(sx, sy));
     checks.add(
-        {"generateRay: directions are unit vectors", calls, [screen](const auto& out, Judge& judge) {
+        {"unit_directions", calls, [screen](const auto& out, Judge& judge) {
       // A direction that ignores (sx, sy), such as Ray{}'s, is a unit vector without normalizing anything.
       const glm::dvec3 first = rayDirection(out[0]);
       bool follows = false;
@@ -217,7 +217,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     // position's fault, and the hint says so instead of blaming the position.
     Camera awayAtOrigin = away, drawnAtOrigin = drawnAway;
     awayAtOrigin.position = drawnAtOrigin.position = glm::dvec3(0.);
-    checks.add({"generateRay: a camera away from the origin starts its rays at its position",
+    checks.add({"moved_camera",
                {away.ray(0., 0.), drawnAway.ray(sx, sy), away.viewport(), drawnAway.viewport(),
                 awayAtOrigin.ray(0., 0.), drawnAtOrigin.ray(sx, sy)},
                [away, drawnAway, sx, sy](const auto& out, Judge& judge) {

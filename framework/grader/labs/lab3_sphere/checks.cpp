@@ -284,7 +284,7 @@ void addIntersectChecks(LabChecks& checks, CaseRandom& random) {
         const std::string hint = tr("hint.lab3.quadratic");
         const Sphere s = drawnSphere(random);
         const Ray r = rayTowards(random, s, 0.);
-        addIntersect(checks, "intersect: a ray through the centre hits the near side",
+        addIntersect(checks, "near_side",
                      {{tr("what.lab3.origin_along_z"), kSphere, kAlongZ, 0., kInf, 2., 1e-5, hint},
                       {tr("what.lab3.towards_centre", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf,
                        *nearestHit(s, r), 1e-4, hint}});
@@ -296,7 +296,7 @@ void addIntersectChecks(LabChecks& checks, CaseRandom& random) {
         const Ray atCentre{r.origin, CaseRandom::asFloat(glm::normalize(s.centre - r.origin))};
         const std::string hitHint = tr("hint.lab3.miss_needs_hit");
         addIntersect(
-            checks, "intersect: a ray beside the sphere misses",
+            checks, "beside_misses",
             {{tr("what.lab3.beside_fixed"), kSphere, {{2., 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
              {tr("what.lab3.beside", {{"origin", show(r.origin)}, {"sphere", describe(s)}}), s, r, 0., kInf, -1., 0., hint},
              {tr("what.lab3.through_fixed"), kSphere, {{0.5, 0., 0.}, {0., 0., 1.}}, 0., kInf, 0., 0., hitHint, true},
@@ -310,7 +310,7 @@ void addIntersectChecks(LabChecks& checks, CaseRandom& random) {
                        double(random.integer(1, 3))};
         const double k = random.integer(int(s.radius) + 1, 10);
         const Ray r{s.centre + glm::dvec3(s.radius, 0., -k), {0., 0., 1.}};
-        addIntersect(checks, "intersect: a tangent ray touches the sphere",
+        addIntersect(checks, "tangent",
                      {{tr("what.lab3.tangent_fixed"),
                        kSphere,
                        {{1., 0., 0.}, {0., 0., 1.}},
@@ -326,7 +326,7 @@ void addIntersectChecks(LabChecks& checks, CaseRandom& random) {
         const std::string hint = tr("hint.lab3.inside");
         const Sphere s = drawnSphere(random);
         const Ray r{s.centre, CaseRandom::asFloat(random.unitVector())};
-        addIntersect(checks, "intersect: from inside the sphere the far root is the hit",
+        addIntersect(checks, "from_inside",
                      {{tr("what.lab3.inside_fixed"),
                        kSphere,
                        {{0., 0., 3.}, {0., 0., 1.}},
@@ -343,7 +343,7 @@ void addIntersectChecks(LabChecks& checks, CaseRandom& random) {
         const Sphere s = drawnSphere(random);
         const glm::dvec3 d = CaseRandom::asFloat(random.unitVector());
         const Ray r{CaseRandom::asFloat(s.centre + d * (s.radius * random.uniform(1.5, 5.))), d};
-        addIntersect(checks, "intersect: a sphere behind the ray is not hit",
+        addIntersect(checks, "behind",
                      {{tr("what.lab3.behind_fixed"),
                        kSphere,
                        {{0., 0., 5.}, {0., 0., 1.}},
@@ -360,14 +360,14 @@ void addIntersectChecks(LabChecks& checks, CaseRandom& random) {
                        {r.origin, -d}, 0., kInf, 0., 0., hitHint, true}});
     }
     addIntersect(
-        checks, "intersect: tMin and tMax bound the hit",
+        checks, "t_bounds",
         {{tr("what.lab3.t_max", {{"t", show(1.5)}}), kSphere, kAlongZ, 0., 1.5, -1., 0., tr("hint.lab3.t_max")},
          {tr("what.lab3.t_min", {{"t", show(2.5)}}), kSphere, kAlongZ, 2.5, kInf, 4., 1e-5, tr("hint.lab3.t_min")}});
     {
         const std::string hint = tr("hint.lab3.not_unit");
         const double scale = CaseRandom::asFloat(random.uniform(0.3, 5.));
         addIntersect(
-            checks, "intersect: a direction that is not unit length",
+            checks, "not_unit_direction",
             {{tr("what.lab3.origin_along", {{"direction", show(glm::dvec3(0., 0., 2.))}}), kSphere, {{0., 0., 0.}, {0., 0., 2.}}, 0., kInf, 1., 1e-5, hint},
              {tr("what.lab3.origin_along", {{"direction", show(glm::dvec3(0., 0., scale))}}),
               kSphere,
@@ -382,7 +382,7 @@ void addIntersectChecks(LabChecks& checks, CaseRandom& random) {
         const Sphere far{{0., 0., 1000.}, 1.};
         const double offset = CaseRandom::asFloat(random.uniform(0., 0.9));
         const std::string hint = tr("hint.lab3.far_1000");
-        addFarIntersect(checks, "intersect: a sphere 1000 radii away",
+        addFarIntersect(checks, "far_1000",
                      {{tr("what.lab3.at_radius", {{"offset", show(0.5)}}),
                        far,
                        {{0.5, 0., 0.}, {0., 0., 1.}},
@@ -412,7 +412,7 @@ void addIntersectChecks(LabChecks& checks, CaseRandom& random) {
         const Sphere far{{0., 0., 10000.}, 1.};
         const std::string hint = tr("hint.lab3.far_10000");
         addFarIntersect(
-            checks, "intersect: a sphere 10000 radii away keeps its silhouette",
+            checks, "far_10000",
             {{tr("what.lab3.at_radii", {{"offset", show(1.1)}}), far, {{1.1, 0., 0.}, {0., 0., 1.}}, 0., kInf, -1., 0., hint},
              {tr("what.lab3.at_radius", {{"offset", show(0.9)}}),
               far,
@@ -439,7 +439,7 @@ void addNormalCheck(LabChecks& checks, CaseRandom& random) {
         return tr("hint.lab3.normal");
     };
     checks.add(
-        {"computeNormal: unit and pointing outwards", calls, [cases, hint](const auto& out, Judge& judge) {
+        {"normal", calls, [cases, hint](const auto& out, Judge& judge) {
       const std::string what[] = {tr("what.lab3.normal_at", {{"point", show(glm::dvec3(0., 0., 2.))}}),
                                   tr("what.lab3.normal_radius_2", {{"point", show(glm::dvec3(1., 2., 5.))}}),
                                   tr("what.lab3.normal_of", {{"point", show(cases[2].second)}, {"sphere", describe(cases[2].first)}})};
@@ -461,7 +461,7 @@ void addLiChecks(LabChecks& checks, CaseRandom& random) {
     {
         const std::string hitHint = tr("hint.lab3.flat_hit");
         const std::string missHint = tr("hint.lab3.flat_miss");
-        addLi(checks, "Li: flat shading sees the sphere's colour or the background",
+        addLi(checks, "flat",
               {{tr("what.lab3.flat_z"), kFlat, kSphere, kBlue, kGrey, kAlongZ, 1e-6, hitHint},
                {tr("what.lab3.flat_x"),
                 kFlat,
@@ -477,7 +477,7 @@ void addLiChecks(LabChecks& checks, CaseRandom& random) {
     {
         const std::string hint = tr("hint.lab3.cosine");
         // From (0.6, 0, 0) along +z: the hit is (0.6, 0, 2.2), n = (0.6, 0, -0.8), -d.n = 0.8.
-        addLi(checks, "Li: cosine shading is colour times the cosine -d.n",
+        addLi(checks, "cosine",
               {{tr("what.lab3.cosine_z"), kCosine, kSphere, kBlue, kGrey, kAlongZ, 1e-5, tr("hint.lab3.cosine_facing")},
                {tr("what.lab3.cosine_from", {{"origin", show(glm::dvec3(0.6, 0., 0.))}}),
                 kCosine,
@@ -490,7 +490,7 @@ void addLiChecks(LabChecks& checks, CaseRandom& random) {
                {tr("what.lab3.cosine_drawn", {{"origin", show(hitting.origin)}, {"scene", drawnScene}}), kCosine, drawn, colour, background, hitting,
                 1e-4, hint}});
     }
-    addLi(checks, "Li: the placeholder normal faces the ray",
+    addLi(checks, "placeholder_normal",
           {{tr("what.lab3.placeholder_z"), kPlaceholder, kSphere, kBlue, kGrey, kAlongZ, 1e-5, tr("hint.lab3.placeholder")},
            {tr("what.lab3.placeholder_drawn", {{"origin", show(hitting.origin)}, {"scene", drawnScene}}), kPlaceholder,
             drawn, colour, background, hitting, 1e-5, tr("hint.lab3.placeholder")}});

@@ -103,7 +103,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     cameras.push_back({tr("what.lab4.oblique_camera", {{"up", show(obliqueUp)}}), {4., -1., 0.}, {-1., -1., 2.}, obliqueUp});
     cameras.push_back(drawnCamera(random));
     cameras.push_back(drawnCamera(random));
-    checks.add(lookAtCheck("lookAt: the basis of the handout's four cameras", cameras,
+    checks.add(lookAtCheck("four_cameras", cameras,
                           [](const LookAt& c, const Built& b, Judge& judge) {
                               auto what = [&c](const char* part) {
                                   return tr("what.lab4.part", {{"camera", c.name}, {"part", part}});
@@ -137,7 +137,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
 
     const std::vector<LookAt> moved{handoutCameras()[3], drawnCamera(random)};
     checks.add(lookAtCheck(
-        "lookAt: the viewport follows the new frame", moved, [](const LookAt& c, const Built& b, Judge& judge) {
+        "viewport_follows", moved, [](const LookAt& c, const Built& b, Judge& judge) {
             // A screen placed rightly in a wrong frame: updateViewport was called, the frame is at fault.
             const glm::dvec3 ownTopLeft =
          b.position - b.w + b.v * (b.viewportHeight / 2.) - b.u * (b.viewportWidth / 2.);
@@ -164,7 +164,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     const LookAt origin{"", {0., 0., 0.}, {0., 0., 1.}, {0., 1., 0.}};
     const LookAt turned{"", {0., 0., 0.}, {0., 0., -1.}, {0., 1., 0.}};
     checks.add(
-        {"lookAt: the default camera as a lookAt camera", {origin.call(), turned.call()}, [](const auto& out, Judge& judge) {
+        {"default_as_lookat", {origin.call(), turned.call()}, [](const auto& out, Judge& judge) {
       const Built b(out[0]), t(out[1]);
       judge.expectNear("u", b.u, {-1., 0., 0.}, 1e-6, tr("hint.lab4.default_u"));
       judge.expectNear("v", b.v, {0., 1., 0.}, 1e-6, tr("hint.lab4.default_v"));
@@ -182,7 +182,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     // Along an axis, so that the view and up are exactly parallel in float too.
     const glm::dvec3 along{0., double(random.integer(1, 9)) * (random.integer(0, 1) ? 1. : -1.), 0.};
     checks.add(
-        {"lookAt: a degenerate camera is refused with an error",
+        {"degenerate_refused",
          {valid.call(), refusedCall({0., 0., 0.}, {0., 2., 0.}, {0., 1., 0.}),
           refusedCall({1., 2., 3.}, {1., 2., 3.}, {0., 1., 0.}), refusedCall(p, p, {0., 1., 0.}),
           refusedCall(p, p + along, {0., 2., 0.})},

@@ -61,7 +61,7 @@ void judgePixel(Judge& judge, const Pixel& p, const Rendered& r) {
 
 void addChecks(LabChecks& checks, CaseRandom& random) {
     const int drawnCount = random.integer(2, 64);
-    checks.add({"setNbPixelSamples: stores N and refuses fewer than 1",
+    checks.add({"sample_count",
                {{probes::setSamples, {9.}},
                 {probes::setSamples, {double(drawnCount)}},
                 {probes::setSamples, {0.}},
@@ -85,7 +85,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     std::vector<protocol::Call> calls;
     for (const Pixel& p : pixels)
         calls.push_back(p.call());
-    checks.add({"renderPixel: N rays and their average", calls, [pixels](const auto& out, Judge& judge) {
+    checks.add({"average", calls, [pixels](const auto& out, Judge& judge) {
                    for (std::size_t k = 0; k < pixels.size(); ++k)
                        judgePixel(judge, pixels[k], Rendered(out[k]));
                }});
@@ -96,7 +96,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     calls.clear();
     for (const Pixel& p : distinct)
         calls.push_back(p.call());
-    checks.add({"renderPixel: each sample takes its own offset from the sampler", calls,
+    checks.add({"own_offsets", calls,
                [distinct](const auto& out, Judge& judge) {
                    for (std::size_t k = 0; k < distinct.size(); ++k) {
                        const Rendered r(out[k]);
@@ -118,7 +118,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     calls.clear();
     for (const Pixel& p : twoPixels)
         calls.push_back(p.call());
-    checks.add({"renderPixel: each pixel takes its own offsets", calls, [twoPixels](const auto& out, Judge& judge) {
+    checks.add({"pixel_offsets", calls, [twoPixels](const auto& out, Judge& judge) {
                    std::vector<std::vector<std::pair<double, double>>> offsets;
                    for (std::size_t k = 0; k < twoPixels.size(); ++k) {
                        const Pixel& p = twoPixels[k];

@@ -151,7 +151,7 @@ void addShadowChecks(LabChecks& checks, CaseRandom& random) {
         const Sphere behind{CaseRandom::asFloat(point - 2. * l), CaseRandom::asFloat(random.uniform(0.5, 1.))};
         const Light light{CaseRandom::asFloat(point + distance * l)};
         addShadowCheck(
-            checks, "inShadow: a point that sees its light is lit",
+            checks, "lit",
             {{tr("what.lab6.ground_lit"), {{{5., 1., 5.}, 1.}, ground, {{0., 4., 3.}}}, {1., 0., 2.}, false,
               tr("hint.lab6.lit")},
              {tr("what.lab6.sphere_behind", {{"point", show(glm::dvec3(0.))}, {"sphere", describe({{0., -2., 0.}, 1.})}}),
@@ -173,7 +173,7 @@ void addShadowChecks(LabChecks& checks, CaseRandom& random) {
         const Sphere between{CaseRandom::asFloat(point + l * (distance * random.uniform(0.35, 0.65))),
                              CaseRandom::asFloat(random.uniform(0.3, 0.8))};
         const Light light{CaseRandom::asFloat(point + distance * l)};
-        addShadowCheck(checks, "inShadow: an object between the point and its light casts a shadow",
+        addShadowCheck(checks, "occluder",
                        {{tr("what.lab6.ground_under", {{"point", show(glm::dvec3(0., 0., 3.))}}),
                          {{{0., 2., 3.}, 1.}, ground, {{0., 5., 3.}}},
                          {0., 0., 3.},
@@ -199,7 +199,7 @@ void addShadowChecks(LabChecks& checks, CaseRandom& random) {
         const glm::dvec3 point = CaseRandom::asFloat(drawn.point + across * random.uniform(0.5, 2.) - kUnder * normal);
         const Light light{CaseRandom::asFloat(point + random.uniform(3., 6.) * glm::normalize(normal + 0.5 * across))};
         addShadowCheck(
-            checks, "inShadow: the surface under the point does not shadow it (no shadow acne)",
+            checks, "no_acne",
             {{tr("what.lab6.under_ground", {{"depth", show(kUnder)}}), {{}, ground, {{0., 4., 2.}}},
               {0.3, -kUnder, 2.1}, false, tr("hint.lab6.acne")},
              {tr("what.lab6.under_sphere", {{"depth", show(kUnder)}, {"sphere", describe(sphere)}}),
@@ -222,7 +222,7 @@ void addShadowChecks(LabChecks& checks, CaseRandom& random) {
         const Sphere beyond{CaseRandom::asFloat(point + l * (distance + radius + random.uniform(0.5, 2.))),
                             CaseRandom::asFloat(radius)};
         const Light light{CaseRandom::asFloat(point + distance * l)};
-        addShadowCheck(checks, "inShadow: an object beyond the light casts no shadow",
+        addShadowCheck(checks, "beyond_light",
                        {{tr("what.lab6.beyond", {{"point", show(glm::dvec3(0., 0., 3.))}}),
                          {{{0., 4., 3.}, 1.}, ground, {{0., 2., 3.}}},
                          {0., 0., 3.},
@@ -379,7 +379,7 @@ void addLiChecks(LabChecks& checks, CaseRandom& random) {
         const double angle = random.uniform(0., 2. * std::numbers::pi), offset = random.uniform(0., 0.7);
         const Ray drawn{CaseRandom::asFloat(glm::dvec3(offset * std::cos(angle), offset * std::sin(angle), 0.)), {0., 0., 1.}};
         const std::string lambert = tr("hint.lab6.lambert");
-        addLi(checks, "Li: Lambert's reflection of a point light without shadows", {0.15, false},
+        addLi(checks, "lambert", {0.15, false},
               {{tr("what.lab6.li_front"), {sphere, floor, above}, blue, grey, night, {{0., 0., 0.}, {0., 0., 1.}}, lambert},
                {tr("what.lab6.li_floor"), {sphere, floor, above}, blue, grey, night, {{0., 0., 0.}, glm::normalize(glm::dvec3(0.5, -1., 2.))},
                 lambert},
@@ -402,7 +402,7 @@ void addLiChecks(LabChecks& checks, CaseRandom& random) {
         const auto towards = [&eye](const glm::dvec3& target) { return Ray{eye, glm::normalize(target - eye)}; };
         const double angle = random.uniform(0., 2. * std::numbers::pi), offset = random.uniform(0., 0.4);
         const glm::dvec3 shadowed = CaseRandom::asFloat(glm::dvec3(offset * std::cos(angle), 0., 4. + offset * std::sin(angle)));
-        addLi(checks, "Li: a point in shadow keeps only the ambient light", {0.1, true},
+        addLi(checks, "ambient_in_shadow", {0.1, true},
               {{tr("what.lab6.li_in_shadow", {{"point", show(glm::dvec3(0.2, 0., 4.1))}}), {floating, ground, light}, red, grey,
                 night, towards({0.2, 0., 4.1}), tr("hint.lab6.ambient_only")},
                {tr("what.lab6.li_in_shadow", {{"point", show(shadowed)}}), {floating, ground, light}, red, grey, night,

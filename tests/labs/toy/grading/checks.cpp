@@ -24,9 +24,9 @@ void addColourCheck(LabChecks& checks, const std::string& name, const glm::dvec3
 }
 
 void addChecks(LabChecks& checks, CaseRandom& random) {
-    addColourCheck(checks, "toyColour: the ray straight ahead", {0., 0., 1.});
-    addColourCheck(checks, "toyColour: a ray to the side", {-1., 0., 0.});
-    addColourCheck(checks, "toyColour: a direction drawn at grading time", CaseRandom::asFloat(random.unitVector()));
+    addColourCheck(checks, "straight_ahead", {0., 0., 1.});
+    addColourCheck(checks, "to_the_side", {-1., 0., 0.});
+    addColourCheck(checks, "drawn_direction", CaseRandom::asFloat(random.unitVector()));
 }
 
 } // namespace
