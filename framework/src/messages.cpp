@@ -101,10 +101,8 @@ const std::map<std::string, std::string>& messageCatalogue(Language language) {
     return language == Language::Fr ? fr : en;
 }
 
-std::string titleInLanguage(const std::string& name) { return titleInLanguage(language(), name); }
-
-std::string titleInLanguage(Language language, const std::string& name) {
-    const auto& catalogue = messageCatalogue(language);
+std::string titleInLanguage(const std::string& name) {
+    const auto& catalogue = messageCatalogue(language());
     const auto found = catalogue.find("check_title." + name);
     return found != catalogue.end() ? found->second : name;
 }

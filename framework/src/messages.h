@@ -33,11 +33,9 @@ using MessageArgs = std::vector<std::pair<std::string_view, std::string>>;
 std::string tr(std::string_view id, MessageArgs args = {});
 std::string tr(Language language, std::string_view id, MessageArgs args = {});
 
-// A check's id or a lab function's name (as lab.toml writes them) as the reader sees it: its title
-// in [check_title] of the language's catalogue (every check has one in each language; a function
-// named in words, in French), else the name itself (a function's C++ name).
+// A check's id or a lab function's name (as lab.toml writes them) as the reader sees it: its title in
+// [check_title] of the language's catalogue (a check has one in each language), else the name itself.
 std::string titleInLanguage(const std::string& name);
-std::string titleInLanguage(Language language, const std::string& name);
 
 // What is wrong with a message's placeholders, "" when nothing: each { opens {name} or
 // {name|one|other} (a name: letters, digits, _), or is doubled ({{) for a brace.

@@ -464,7 +464,7 @@ TEST_CASE("classroom.yml: GitHub Classroom's shape, a build, a step per check an
     std::map<std::string, double> expected; // every item of the labs' descriptions, with its points
     for (const LabDescription& lab : courseSetup().labs.labs) {
         for (const LabCheck& c : lab.checks) // its step shows its title
-            expected[raylab::titleInLanguage(raylab::Language::En, c.id)] = c.points;
+            expected[raylab::tr(raylab::Language::En, "check_title." + c.id)] = c.points;
         for (const LabFigure& f : lab.figures) expected[f.id] = f.points;
     }
     std::map<std::string, double> graded;

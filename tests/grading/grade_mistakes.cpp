@@ -89,14 +89,14 @@ TEST_CASE("each catalogued mistake is caught and named") {
         if (const auto wrong = kWrongCauses.find(m.id); wrong != kWrongCauses.end())
             for (const CheckOutcome& c : r.checks)
                 for (const WrongCause& cause : wrong->second)
-                    if (raylab::titleInLanguage(raylab::Language::En, c.name).rfind(cause.checks, 0) == 0)
+                    if (raylab::tr(raylab::Language::En, "check_title." + c.name).rfind(cause.checks, 0) == 0)
                         CHECK_MESSAGE(c.message.find(cause.text) == std::string::npos,
                                       c.name << " names a cause the code does not have: " << c.message);
         if (const auto right = kRightCauses.find(m.id); right != kRightCauses.end())
             for (const WrongCause& cause : right->second) {
                 int said = 0;
                 for (const CheckOutcome& c : r.checks)
-                    if (raylab::titleInLanguage(raylab::Language::En, c.name).rfind(cause.checks, 0) == 0 && !c.passed) {
+                    if (raylab::tr(raylab::Language::En, "check_title." + c.name).rfind(cause.checks, 0) == 0 && !c.passed) {
                         ++said;
                         CHECK_MESSAGE(c.message.find(cause.text) != std::string::npos, c.name << " does not say \"" << cause.text
                                                                                               << "\": " << c.message);

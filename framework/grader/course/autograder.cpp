@@ -88,7 +88,7 @@ std::vector<ClassroomStep> classroomSteps(const LabCatalog& catalog) {
     std::set<std::string> taken;
     for (const LabDescription& lab : catalog.labs) {
         for (const LabCheck& c : lab.checks)
-            steps.push_back({stepId(lab.number, c.id, taken), c.id, titleInLanguage(Language::En, c.id), c.points});
+            steps.push_back({stepId(lab.number, c.id, taken), c.id, tr(Language::En, "check_title." + c.id), c.points});
         for (const LabFigure& f : lab.figures) steps.push_back({stepId(lab.number, f.id, taken), f.id, f.id, f.points});
     }
     return steps;
