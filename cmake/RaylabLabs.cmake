@@ -57,43 +57,52 @@ function(raylab_course_labs out)
   set(${out} ${listed} PARENT_SCOPE)
 endfunction()
 
-# raylab_framework_calls(OUT FILE): whether lab.toml FILE says `framework_calls = true`, a key of its
-# heading (before its first [table]); the grader's catalogue reads the same key strictly. CMake cannot
-# parse TOML: the key is one line.
-function(raylab_framework_calls out file)
-  set_property(DIRECTORY ${CMAKE_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${file})
-  file(STRINGS ${file} lines REGEX "^[ \t]*(framework_calls[ \t]*=|\\[)")
-  set(value OFF)
+# raylab_heading_value(OUT FILE KEY VALUE EXAMPLE): the value of KEY in lab.toml FILE, a key of its
+# heading (before its first [table]) on one line, as the regular expression VALUE's first group
+# matches it; empty when the key is absent. CMake cannot parse TOML: the grader's catalogue reads the
+# same keys strictly. A line VALUE does not match stops the configuration, showing EXAMPLE.
+function(raylab_heading_value out file key value example)
+  file(STRINGS ${file} lines REGEX "^[ \t]*(${key}[ \t]*=|\\[)")
+  set(found "")
   foreach(line IN LISTS lines)
     if(line MATCHES "^[ \t]*\\[")
       break()
     endif()
-    if(NOT line MATCHES "^[ \t]*framework_calls[ \t]*=[ \t]*(true|false)[ \t]*(#.*)?$")
-      message(FATAL_ERROR "${file}: expected one line `framework_calls = true` (or false): ${line}")
+    if(NOT line MATCHES "^[ \t]*${key}[ \t]*=[ \t]*${value}[ \t]*(#.*)?$")
+      message(FATAL_ERROR "${file}: expected one line ${example}: ${line}")
     endif()
-    if(CMAKE_MATCH_1 STREQUAL "true")
-      set(value ON)
-    endif()
+    set(found "${CMAKE_MATCH_1}")
   endforeach()
-  set(${out} ${value} PARENT_SCOPE)
+  set(${out} "${found}" PARENT_SCOPE)
 endfunction()
 
-# raylab_lab_uses(OUT FILE): the labs that lab.toml FILE says its lab uses (`uses = [2, 3]`, a key of
-# its heading, before its first [table]); the grader's catalogue reads the same key strictly. A lab's
+# raylab_framework_calls(OUT FILE): whether lab.toml FILE says `framework_calls = true`.
+function(raylab_framework_calls out file)
+  set_property(DIRECTORY ${CMAKE_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${file})
+  raylab_heading_value(value ${file} framework_calls "(true|false)" "`framework_calls = true` (or false)")
+  if(value STREQUAL "true")
+    set(${out} ON PARENT_SCOPE)
+  else()
+    set(${out} OFF PARENT_SCOPE)
+  endif()
+endfunction()
+
+# raylab_lab_uses(OUT FILE): the labs that lab.toml FILE says its lab uses (`uses = [2, 3]`). A lab's
 # own agent in a tree without the reference links these labs' code from labs/ (framework/grader/).
 function(raylab_lab_uses out file)
-  file(STRINGS ${file} lines REGEX "^[ \t]*(uses[ \t]*=|\\[)")
-  set(uses "")
-  foreach(line IN LISTS lines)
-    if(line MATCHES "^[ \t]*\\[")
-      break()
-    endif()
-    if(NOT line MATCHES "^[ \t]*uses[ \t]*=[ \t]*\\[([0-9, \t]*)\\][ \t]*(#.*)?$")
-      message(FATAL_ERROR "${file}: expected one line `uses = [2, 3]` (the labs whose code this lab's figures run): ${line}")
-    endif()
-    string(REGEX MATCHALL "[0-9]+" uses "${CMAKE_MATCH_1}")
-  endforeach()
+  raylab_heading_value(value ${file} uses "\\[([0-9, \t]*)\\]"
+                       "`uses = [2, 3]` (the labs whose code this lab's figures run)")
+  string(REGEX MATCHALL "[0-9]+" uses "${value}")
   set(${out} ${uses} PARENT_SCOPE)
+endfunction()
+
+# raylab_lab_shapes(OUT FILE): the kinds of objects lab.toml FILE says its lab brings (`shapes =
+# ["Triangle"]`): classes its folder's shapes.h declares.
+function(raylab_lab_shapes out file)
+  raylab_heading_value(value ${file} shapes "\\[([A-Za-z0-9_\", \t]*)\\]"
+                       "`shapes = [\"Triangle\"]` (the classes of its shapes.h)")
+  string(REGEX MATCHALL "[A-Za-z_][A-Za-z0-9_]*" shapes "${value}")
+  set(${out} ${shapes} PARENT_SCOPE)
 endfunction()
 
 # A lab's number and id come from its folder's name, lab<N>_<name> (N without a leading zero), not
@@ -158,6 +167,33 @@ if(given_folders)
   message(STATUS "raylab labs given (their reference, part of the framework): ${given_folders}")
 endif()
 
+# The kinds of objects the course's labs bring, after the framework's sphere and plane: Scene
+# (raylab/scene.h) keeps one array per kind and tests each inline, so it knows the list when it is
+# compiled. Written into raylab/course_shapes.h only when it changes: a configure recompiles nothing.
+set(raylab_shape_includes "")
+set(raylab_shape_classes "")
+foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
+  set(folder ${RAYLAB_LAB_FOLDER_${n}})
+  raylab_lab_shapes(classes ${CMAKE_SOURCE_DIR}/labs/${folder}/lab.toml)
+  if(classes)
+    if(NOT EXISTS ${CMAKE_SOURCE_DIR}/labs/${folder}/shapes.h)
+      message(FATAL_ERROR "${CMAKE_SOURCE_DIR}/labs/${folder}/lab.toml: shapes = ${classes}, but labs/${folder}/shapes.h, which declares them, is not there")
+    endif()
+    string(APPEND raylab_shape_includes "#include \"${folder}/shapes.h\"\n")
+    foreach(class IN LISTS classes)
+      string(APPEND raylab_shape_classes ", ::raylab::${class}")
+    endforeach()
+  endif()
+endforeach()
+set(RAYLAB_COURSE_SHAPES_FOLDER ${CMAKE_BINARY_DIR}/generated/course)
+file(CONFIGURE OUTPUT ${RAYLAB_COURSE_SHAPES_FOLDER}/raylab/course_shapes.h CONTENT
+"#pragma once
+// Written by CMake (cmake/RaylabLabs.cmake): the kinds of objects the course's labs bring, from their
+// lab.toml's `shapes`, for Scene (raylab/scene.h).
+${raylab_shape_includes}
+#define RAYLAB_COURSE_SHAPES${raylab_shape_classes}
+")
+
 # raylab_lab_header_folder(OUT N): the folder of lab N's own header, labs/<lab>/<name>.h (it declares the
 # functions a student writes that no framework class declares: the stub, the solution and the lab's
 # grading folder include it); a given lab's in a students' tree is framework/given/<lab>/.
@@ -173,11 +209,12 @@ endfunction()
 # raylab_lab_shadings(TARGET N): TARGET (lab N's code, from wherever) also brings what lab N registers
 # by name outside the student's files, from framework/grader/labs/<lab>/: shadings.cpp, the pictures
 # (lab 1's gradient, lab 2's directions, lab 3's shadings; a scene file's [render] shading names one),
+# shapes.cpp, its kinds of objects (a scene file's [[table]] names one: raylab/shape_registry.h),
 # and figure_steps.cpp, its functions as the crash finder calls them (src/figure_steps.h). Compiled
 # once, into every program that links TARGET: nothing names their objects, so they are linked whole.
 function(raylab_lab_shadings target n)
   set(sources "")
-  foreach(part shadings figure_steps)
+  foreach(part shadings shapes figure_steps)
     set(source ${CMAKE_SOURCE_DIR}/framework/grader/labs/${RAYLAB_LAB_FOLDER_${n}}/${part}.cpp)
     if(EXISTS ${source})
       list(APPEND sources ${source})

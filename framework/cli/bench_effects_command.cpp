@@ -89,7 +89,7 @@ int runBenchEffects(const std::filesystem::path& scenes, int threads, int repeat
         {"flat shading", "cosine shading", [](auto& d) { samples(d, SamplerKind::Center, 1), d.shading = "flat"; },
          [](auto& d) { samples(d, SamplerKind::Center, 1), d.shading = "cosine"; }},
         {"no objects", "one sphere",
-         [](auto& d) { samples(d, SamplerKind::Center, 1), d.scene.spheres.clear(); },
+         [](auto& d) { samples(d, SamplerKind::Center, 1), d.scene.setAll(std::vector<SphereGeometry>{}); },
          [](auto& d) { samples(d, SamplerKind::Center, 1); }},
         {"ray directions", "flat shading", [](auto& d) { samples(d, SamplerKind::Center, 1), d.shading = "directions"; },
          [](auto& d) { samples(d, SamplerKind::Center, 1), d.shading = "flat"; }},

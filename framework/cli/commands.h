@@ -119,7 +119,7 @@ void addTimingCommand(CLI::App& app, Context& context, const std::string& name, 
 // The `study` subcommand, made by whichever study registers first; each study adds its own under it.
 CLI::App* studyCommand(CLI::App& app);
 
-void addFigureCommands(CLI::App& app, Context& context); // figures, lab, render
+void addFigureCommands(CLI::App& app, Context& context); // figures, lab, render, scene-format
 void addBenchCommand(CLI::App& app, Context& context);   // bench
 void addStudyAntialiasingCommand(CLI::App& app, Context& context); // study antialiasing
 void addBenchEffectsCommand(CLI::App& app, Context& context); // bench-effects

@@ -189,6 +189,8 @@ void addFigureCommands(CLI::App& app, Context& context) {
     render->callback([&context, scene, out] {
         if (!context.ranInOtherImpl() && codeIsFresh(context)) context.exitStatus = runRender(*scene, *out, context.threads);
     });
+
+    app.add_subcommand("scene-format", tr("cli.scene_format"))->callback([] { std::fputs(objectTablesReference().c_str(), stdout); });
 }
 
 } // namespace raylab::cli

@@ -7,7 +7,7 @@
 namespace raylab {
 
 Plane::Plane(const glm::vec3& point, const glm::vec3& normal, const Color& color)
-    : Shape(Kind::Plane, color), m_point(point), m_normal(normal) {
+    : Shape(color), m_point(point), m_normal(normal) {
     if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z))
         throw std::invalid_argument("plane: point = " + showVector(point) + " is not finite");
     // The length in double: a normal of tiny or huge finite floats still has a direction.

@@ -14,15 +14,17 @@ float nearestCell(float x) { return std::round(x / kRenderCell) * kRenderCell; }
 RenderSpace::RenderSpace(const glm::vec3& cameraPosition)
     : m_origin(nearestCell(cameraPosition.x), nearestCell(cameraPosition.y), nearestCell(cameraPosition.z)) {}
 
-glm::vec3 RenderSpace::toRender(const glm::vec3& point) const { return glm::vec3(glm::dvec3(point) - glm::dvec3(m_origin)); }
+glm::vec3 RenderSpace::toRender(const glm::vec3& point) const { return OriginShift{m_origin}(point); }
 
 Scene RenderSpace::toRender(const Scene& scene) const {
-    Scene moved = scene;
-    moved.spheres.clear();
-    for (const SphereGeometry& s : scene.spheres) moved.spheres.emplace_back(toRender(s.center()), s.radius(), s.color());
-    moved.planes.clear();
-    for (const Plane& p : scene.planes) moved.planes.emplace_back(toRender(p.point()), p.normal(), p.color());
-    for (PointLight& light : moved.lights) light.position = toRender(light.position);
+    const OriginShift shift{m_origin};
+    Scene moved;
+    moved.background = scene.background;
+    moved.lights = scene.lights;
+    for (PointLight& light : moved.lights) light.position = shift(light.position);
+    scene.forEachGroup([&](const auto& group) {
+        for (const auto& object : group.objects) moved.add(object.shifted(shift));
+    });
     return moved;
 }
 

@@ -21,7 +21,7 @@ public:
     const glm::vec3& origin() const { return m_origin; }
     // `point` - origin(), taken in double (exact for two floats) and rounded once to float.
     glm::vec3 toRender(const glm::vec3& point) const;
-    // The scene with every position (centres, planes' points, lights) moved by -origin().
+    // The scene with every position (each object's, each light's) moved by -origin().
     Scene toRender(const Scene& scene) const;
 
 private:

@@ -17,23 +17,13 @@ thread_local float tShadowOriginOffsetUlps = 0.f;
 
 // `p` moved by `ulps` float spacings along the normal of the object nearest to it (setShadowOriginOffsetOnThisThread).
 glm::vec3 movedOffItsSurface(const Scene& scene, const glm::vec3& p, float ulps) {
-    float nearest = std::numeric_limits<float>::infinity();
-    glm::vec3 normal(0.f);
-    for (const SphereGeometry& sphere : scene.spheres) {
-        const glm::vec3 fromCentre = p - sphere.center();
-        const float length = glm::length(fromCentre);
-        if (length > 0.f && std::abs(length - sphere.radius()) < nearest) {
-            nearest = std::abs(length - sphere.radius());
-            normal = fromCentre / length;
-        }
-    }
-    for (const Plane& plane : scene.planes) {
-        const float distance = std::abs(glm::dot(p - plane.point(), plane.normal()));
-        if (distance < nearest) {
-            nearest = distance;
-            normal = plane.normal();
-        }
-    }
+    std::pair<float, const Shape*> nearest{std::numeric_limits<float>::infinity(), nullptr};
+    scene.forEachGroup([&](const auto& group) {
+        if (const auto candidate = group.nearestSurface(p); candidate.first < nearest.first) nearest = candidate;
+    });
+    if (nearest.second == nullptr) return p;
+    const glm::vec3 normal = glm::normalize(nearest.second->computeNormal(p));
+    if (!std::isfinite(normal.x + normal.y + normal.z)) return p; // p where the normal has no direction
     const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.f});
     const float spacing = std::nextafter(scale, std::numeric_limits<float>::infinity()) - scale;
     return p + (ulps * spacing) * normal;
@@ -54,16 +44,14 @@ bool Scene::occluded(const Ray& given, float tMin, float tMax) const {
     // interval the shapes test.
     const float lo = std::nextafter(tMin, std::numeric_limits<float>::infinity());
     const float hi = std::nextafter(tMax, -std::numeric_limits<float>::infinity());
-    for (const SphereGeometry& sphere : spheres)
-        if (sphere.hits(ray, lo, hi)) return true;
-    for (const Plane& plane : planes)
-        if (plane.hits(ray, lo, hi)) return true;
-    return false;
+    bool blocked = false;
+    forEachGroup([&](const auto& group) { blocked = blocked || group.hitsAny(ray, lo, hi); });
+    return blocked;
 }
 
 Scene makeTp1Scene() {
     Scene scene;
-    scene.spheres.emplace_back(glm::vec3(0.f, 0.f, 3.f), 1.f, Color(0.f, 0.f, 1.f));
+    scene.add(SphereGeometry(glm::vec3(0.f, 0.f, 3.f), 1.f, Color(0.f, 0.f, 1.f)));
     scene.background = Color(0.5f, 0.5f, 0.5f);
     return scene;
 }

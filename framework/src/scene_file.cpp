@@ -1,6 +1,7 @@
 #include "src/scene_file.h"
 
 #include "raylab/integrator_registry.h"
+#include "raylab/shape_registry.h"
 #include "src/messages.h"
 #include "src/text.h"
 #include "src/toml_reader.h"
@@ -22,10 +23,6 @@ constexpr std::int64_t kMaxSamples = 1 << 20;
 
 // Every number of a scene is stored as a float.
 constexpr double kFloatMax = double(std::numeric_limits<float>::max());
-// The intersection squares the radius and the distance from the ray's origin to the centre in
-// float (docs/numerics.md, section 2): both squares must stay normal floats.
-const double kMinRadius = std::sqrt(double(std::numeric_limits<float>::min())); // 1.08e-19
-const double kMaxRadius = std::sqrt(kFloatMax);                                 // 1.84e19
 // A point's coordinates: two points are then at most 2 sqrt(3) 1e18 = 3.5e18 apart, whose square
 // (1.2e37) is still a float.
 constexpr double kMaxCoordinate = 1e18;
@@ -78,50 +75,48 @@ void readCamera(const TomlReader& r, const toml::table& t, CameraDescription& ca
     if (up) camera.up = *up;
 }
 
-void readSpheres(const TomlReader& r, const toml::table& root, Scene& scene) {
-    for (const toml::table* sphere : r.tables(root, "sphere")) {
-        const toml::table& t = *sphere;
-        r.onlyKeys(t, "[[sphere]] ", {"center", "radius", "color"});
-        const auto center = vec3(r, t, "[[sphere]] ", "center", kMaxCoordinate);
-        const auto radius = r.number(t, "[[sphere]] ", "radius");
-        if (!center || !radius) r.fail(&t, "[[sphere]]", "a sphere needs a center and a radius");
-        if (!(*radius > 0.)) r.fail(t.get("radius"), "[[sphere]] radius", showNumber(*radius) + " must be positive");
-        if (*radius < kMinRadius)
-            r.fail(t.get("radius"), "[[sphere]] radius",
-                   showNumber(*radius) + " is too small: its square underflows float (the smallest radius is " +
-                       showNumber(kMinRadius) + ")");
-        if (*radius > kMaxRadius)
-            r.fail(t.get("radius"), "[[sphere]] radius",
-                   showNumber(*radius) + " is too large: its square overflows float (the largest radius is " +
-                       showNumber(kMaxRadius) + ")");
-        const Color color = vec3(r, t, "[[sphere]] ", "color").value_or(Color(1.f));
-        try { // the float radius at the edge of the range
-            scene.spheres.emplace_back(*center, float(*radius), color);
-        } catch (const std::invalid_argument& e) {
-            r.fail(t.get("radius"), "[[sphere]] radius", std::string(e.what()).substr(std::string_view("sphere: ").size()));
-        }
+// A table's value of `p`, checked against its declaration; nothing when it is absent and not required.
+void readParameter(const TomlReader& r, const toml::table& t, const std::string& section, const ShapeParameter& p,
+                   ShapeValues& values) {
+    const std::string name = section + " " + p.key;
+    const toml::node* node = t.get(p.key);
+    if (node == nullptr) {
+        if (p.required == Required::Yes) r.fail(&t, section, p.key + " is required (" + p.meaning + ")");
+        return;
     }
+    if (p.type == ParameterType::Number) {
+        const double value = r.numberOf(*node, name);
+        const std::string why = p.rangeReason.empty() ? "" : " (" + p.rangeReason + ")";
+        if (value < p.min) r.fail(node, name, showNumber(value) + " is too small: at least " + showNumber(p.min) + why);
+        if (value > p.max) r.fail(node, name, showNumber(value) + " is too large: at most " + showNumber(p.max) + why);
+        values.set(p.key, value);
+        return;
+    }
+    const glm::vec3 v = *vec3(r, t, section + " ", p.key, p.type == ParameterType::Point ? kMaxCoordinate : kFloatMax);
+    if (p.type == ParameterType::Direction && v == glm::vec3(0.f)) r.fail(node, name, "[0, 0, 0] has no direction");
+    values.set(p.key, v);
 }
 
-// [[plane]]: a normal and either a point of the plane or its offset, the plane dot(n, x) = offset
-// of the unit normal n (docs/conventions.md).
-void readPlanes(const TomlReader& r, const toml::table& root, Scene& scene) {
-    for (const toml::table* plane : r.tables(root, "plane")) {
-        const toml::table& t = *plane;
-        r.onlyKeys(t, "[[plane]] ", {"point", "normal", "offset", "color"});
-        const auto normal = vec3(r, t, "[[plane]] ", "normal");
-        const auto point = vec3(r, t, "[[plane]] ", "point", kMaxCoordinate);
-        const auto offset = r.number(t, "[[plane]] ", "offset");
-        if (!normal || point.has_value() == offset.has_value())
-            r.fail(&t, "[[plane]]", "a plane needs a normal, and either a point or an offset");
-        if (*normal == glm::vec3(0.f)) r.fail(t.get("normal"), "[[plane]] normal", "[0, 0, 0] has no direction");
-        if (offset && std::abs(*offset) > kMaxCoordinate)
-            r.fail(t.get("offset"), "[[plane]] offset",
-                   showNumber(*offset) + " is too large: at most " + showNumber(kMaxCoordinate) +
-                       " (so that squared distances stay within float)");
-        const glm::dvec3 unit = glm::normalize(glm::dvec3(*normal));
-        const glm::vec3 origin = point ? *point : glm::vec3(*offset * unit);
-        scene.planes.emplace_back(origin, *normal, vec3(r, t, "[[plane]] ", "color").value_or(Color(1.f)));
+// [[kind]] tables, for each kind of object registered (raylab/shape_registry.h): each value as its
+// kind declares it, then the object as the kind makes it.
+void readObjects(const TomlReader& r, const toml::table& root, Scene& scene) {
+    for (const RegisteredShapeKind* kind : registeredShapeKinds()) {
+        const std::string section = "[[" + kind->name + "]]";
+        std::vector<std::string_view> keys;
+        for (const ShapeParameter& p : kind->parameters) keys.push_back(p.key);
+        for (const toml::table* table : r.tables(root, kind->name)) {
+            r.onlyKeys(*table, section + " ", keys);
+            ShapeValues values;
+            for (const ShapeParameter& p : kind->parameters) readParameter(r, *table, section, p, values);
+            try {
+                kind->add(values, scene);
+            } catch (const ShapeParameterError& e) {
+                if (e.key().empty()) r.fail(table, section, e.what());
+                r.fail(table->get(e.key()), section + " " + e.key(), e.what());
+            } catch (const std::invalid_argument& e) {
+                r.fail(table, section, e.what());
+            }
+        }
     }
 }
 
@@ -229,12 +224,13 @@ std::vector<std::string> readRoles(const TomlReader& r, const toml::table& figur
 SceneDescription readSceneFile(const std::filesystem::path& file) {
     const toml::table root = parseTomlFile(file);
     const TomlReader r(file);
-    r.onlyKeys(root, "", {"figure", "image", "camera", "render", "shading", "background", "sphere", "plane", "light"});
+    std::vector<std::string_view> tables = {"figure", "image", "camera", "render", "shading", "background", "light"};
+    for (const RegisteredShapeKind* kind : registeredShapeKinds()) tables.push_back(kind->name);
+    r.onlyKeys(root, "", tables);
 
     SceneDescription d;
     d.file = file;
     d.id = file.stem().string();
-    d.scene.spheres.clear();
     if (const toml::table* t = r.table(root, "", "figure")) {
         r.onlyKeys(*t, "[figure] ", {"title", "roles"}); // its lab is the one whose lab.toml lists it
         d.title = r.string(*t, "[figure] ", "title").value_or("");
@@ -270,13 +266,29 @@ SceneDescription readSceneFile(const std::filesystem::path& file) {
     }
     readShadingParameters(r, root, d);
     if (auto background = vec3(r, root, "", "background")) d.scene.background = *background;
-    readSpheres(r, root, d.scene);
-    readPlanes(r, root, d.scene);
+    readObjects(r, root, d.scene);
     readLights(r, root, d.scene);
     return d;
 }
 
 } // namespace
+
+std::string objectTablesReference() {
+    constexpr std::string_view kTypes[] = {"number", "point [x, y, z]", "direction [x, y, z], not zero", "colour [r, g, b]"};
+    std::string text = "# The objects of a scene file: a [[table]] per object, each table's name a kind of object the\n"
+                       "# framework or a lab of the course registers (raylab/shape_registry.h).\n";
+    for (const RegisteredShapeKind* kind : registeredShapeKinds()) {
+        text += "\n[[" + kind->name + "]] # " + kind->meaning + "\n";
+        for (const ShapeParameter& p : kind->parameters) {
+            std::string line = p.key + ": " + std::string(kTypes[int(p.type)]);
+            if (p.type == ParameterType::Number && (p.min > -kFloatMax || p.max < kFloatMax))
+                line += " in [" + showNumber(p.min) + ", " + showNumber(p.max) + "]";
+            line += p.required == Required::Yes ? ", required" : (p.type == ParameterType::Color ? ", default white" : ", optional");
+            text += "#   " + line + ": " + p.meaning + "\n";
+        }
+    }
+    return text;
+}
 
 SceneDescription loadSceneFile(const std::filesystem::path& file) {
     std::error_code error;

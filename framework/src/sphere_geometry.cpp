@@ -4,13 +4,15 @@
 
 #include "src/text.h"
 
+#include <glm/geometric.hpp>
+
 #include <cmath>
 #include <stdexcept>
 
 namespace raylab {
 
 SphereGeometry::SphereGeometry(const glm::vec3& center, float radius, const Color& color)
-    : Shape(Kind::Sphere, color), m_center(center), m_radius(radius) {
+    : Shape(color), m_center(center), m_radius(radius) {
     if (!(radius > 0.f) || !std::isfinite(radius))
         throw std::invalid_argument("sphere: radius = " + showNumber(radius) +
                                     " has no meaning; it must be positive and finite");
@@ -20,5 +22,7 @@ SphereGeometry::SphereGeometry(const glm::vec3& center, float radius, const Colo
     if (!std::isfinite(center.x) || !std::isfinite(center.y) || !std::isfinite(center.z))
         throw std::invalid_argument("sphere: center = " + showVector(center) + " is not finite");
 }
+
+float SphereGeometry::distanceTo(const glm::vec3& p) const { return std::abs(glm::length(p - m_center) - m_radius); }
 
 } // namespace raylab

@@ -54,13 +54,14 @@ Rendered render(const SceneDescription& scene, const Job& job, int runs, int thr
 }
 
 CentredSphere centredSphere(const SceneDescription& d) {
-    const bool fits = !d.camera.lookAt && d.scene.spheres.size() == 1 && d.scene.spheres[0].center().x == 0.f &&
-                      d.scene.spheres[0].center().y == 0.f && d.scene.spheres[0].center().z > d.scene.spheres[0].radius() &&
+    const std::vector<SphereGeometry>& spheres = d.scene.all<SphereGeometry>();
+    const bool fits = !d.camera.lookAt && d.scene.objectCount() == 1 && spheres.size() == 1 && spheres[0].center().x == 0.f &&
+                      spheres[0].center().y == 0.f && spheres[0].center().z > spheres[0].radius() &&
                       (d.shading == "cosine" || d.shading == "flat");
     if (!fits)
         throw std::runtime_error(d.file.string() + ": the exact reference needs one sphere on the default camera's axis "
                                  "(center [0, 0, z]), shaded flat or cosine");
-    const SphereGeometry& s = d.scene.spheres[0];
+    const SphereGeometry& s = spheres[0];
     return CentredSphere{d.width, d.height, d.camera.fovy, s.center().z, s.radius(), s.color(), d.scene.background,
                          d.shading == "cosine"};
 }
@@ -202,7 +203,7 @@ double totalInk(const Texture& t, const Color& background) {
 std::vector<std::pair<int, int>> projectedCentres(const SceneDescription& d) {
     const double vh = 2. * std::tan(d.camera.fovy * std::numbers::pi / 360.), vw = vh * d.width / d.height;
     std::vector<std::pair<int, int>> centres;
-    for (const SphereGeometry& s : d.scene.spheres)
+    for (const SphereGeometry& s : d.scene.all<SphereGeometry>())
         centres.push_back({int((-s.center().x / s.center().z / vw + 0.5) * d.width),
                            int((0.5 - s.center().y / s.center().z / vh) * d.height)});
     return centres;

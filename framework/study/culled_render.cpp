@@ -39,7 +39,7 @@ std::vector<SphereGeometry> spheresSeenBy(const Scene& scene, const PerspectiveC
     const Ray corners[4] = {camera.generateRay(float(t.x0) / w, float(t.y0) / h), camera.generateRay(float(t.x1) / w, float(t.y0) / h),
                             camera.generateRay(float(t.x0) / w, float(t.y1) / h), camera.generateRay(float(t.x1) / w, float(t.y1) / h)};
     for (const Ray& r : corners)
-        if (r.origin != corners[0].origin) return scene.spheres; // not a pinhole: no cone to cull with
+        if (r.origin != corners[0].origin) return scene.all<SphereGeometry>(); // not a pinhole: no cone to cull with
     glm::dvec3 axis(0.);
     for (const Ray& r : corners) axis += unit(r.direction);
     axis = glm::normalize(axis);
@@ -48,7 +48,7 @@ std::vector<SphereGeometry> spheresSeenBy(const Scene& scene, const PerspectiveC
 
     const glm::dvec3 eye(corners[0].origin);
     std::vector<SphereGeometry> seen;
-    for (const SphereGeometry& sphere : scene.spheres) {
+    for (const SphereGeometry& sphere : scene.all<SphereGeometry>()) {
         const glm::dvec3 toCentre = glm::dvec3(sphere.center()) - eye;
         const double distance = glm::length(toCentre), radius = sphere.radius();
         if (distance <= radius * 1.001) { // the eye in the sphere, or at its surface
@@ -77,8 +77,8 @@ Texture renderCulled(const SceneDescription& d, int threads) {
     Texture image(d.width, d.height);
     parallelFor(tiles.size(), threads, false, [&](std::size_t k, unsigned) {
         const Tile& t = tiles[k];
-        const Scene near{.spheres = spheresSeenBy(whole.scene(), camera, t), .planes = whole.scene().planes,
-                         .lights = whole.scene().lights, .background = whole.scene().background};
+        Scene near = whole.scene(); // its other kinds of objects are all kept
+        near.setAll(spheresSeenBy(whole.scene(), camera, t));
         Renderer renderer(near, camera, whole.integrator());
         if (d.samples != 1) renderer.setNbPixelSamples(d.samples);
         // Each pixel's samples as Renderer::renderImage draws them: the pixel and the scene's seed.

@@ -222,6 +222,22 @@ TEST_CASE("a lab the course leaves out is given when the framework calls its fun
     CHECK(students.lab(2)->uses.empty());
 }
 
+TEST_CASE("a lab's kinds of objects: C++ class names, declared in the shapes.h beside its lab.toml") {
+    const Course course;
+    course.scene("lab2_picture");
+    course.lab("lab2_rays", kLab2);
+    const fs::path file = course.lab("lab1_first", kLab1 + "shapes = [\"Triangle\"]\n");
+    CHECK_THROWS_WITH_AS(course.load(), (file.string() + ":4: shapes: no shapes.h beside lab.toml to declare them").c_str(),
+                         std::runtime_error);
+    std::ofstream(file.parent_path() / "shapes.h") << "#pragma once\n";
+    CHECK(course.load().lab(1) != nullptr);
+    course.lab("lab1_first", kLab1 + "shapes = [\"Triangle\", \"3d_box\"]\n");
+    CHECK_THROWS_WITH_AS(course.load(), (file.string() + ":4: shapes: \"3d_box\" is not the name of a C++ class").c_str(),
+                         std::runtime_error);
+    course.lab("lab1_first", kLab1 + "shapes = [\"Triangle\", 3]\n");
+    CHECK_THROWS_WITH_AS(course.load(), doctest::Contains("lab.toml:4: shapes"), std::runtime_error);
+}
+
 TEST_CASE("the course's descriptions agree with the references and the scene files") {
     const LabCatalog catalog = loadLabCatalog(fs::path(RAYLAB_SOURCE_DIR) / "labs");
     std::vector<fs::path> folders;

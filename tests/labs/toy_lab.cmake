@@ -1,9 +1,10 @@
 # The toy-lab test: adding a lab, function checks included, is its own folders and its number in the
 # course's list. In a copy of the whole tree (its files as git lists them: tests/ and docs/ too, no
 # build folder) it adds lab N, the next free number: labs/labN_toy/ (its lab.toml, its header, one
-# stub function, its handouts in English and French, its scene file), its completed twin in
-# solutions/ and its grading folder framework/grader/labs/labN_toy/ (a probe, three checks, its
-# English and French messages), and N to course.toml; then builds, renders, makes lab N's references and the
+# stub function, its own kind of object in shapes.h, its handouts in English and French, its scene
+# file), its completed twin in solutions/ and its grading folder framework/grader/labs/labN_toy/ (a
+# probe, three checks, its shading, its kind's [[toy_square]] table, its English and French
+# messages), and N to course.toml; then builds, renders, makes lab N's references and the
 # handouts' figures with its row in docs/figures/README.md (docs/instructors.md, "Adding a lab"),
 # runs the copy's own lab tests, grades and reports it as an instructor and a student would, and
 # lists what changed under framework/: only the new lab's grading folder (the references
@@ -55,7 +56,7 @@ set(id lab${N}_toy)
 function(step_copy)
   file(REMOVE_RECURSE ${WORK})
   copy_tree(${SOURCE} ${tree})
-  foreach(file lab.toml README.md README.fr.md toy_colour.cpp toy_colour.h)
+  foreach(file lab.toml README.md README.fr.md toy_colour.cpp toy_colour.h shapes.h)
     configure_file(${TOY}/${file} ${tree}/labs/${id}/${file} @ONLY)
   endforeach()
   configure_file(${TOY}/toy.toml ${tree}/labs/${id}/scenes/${id}.toml @ONLY)
@@ -131,6 +132,38 @@ function(step_render)
   file(COPY ${tree}/labs/${id}/scenes/${id}.toml DESTINATION ${WORK}/toy-scenes)
   run(output 0 ${bin}/raylab-reference references --scenes ${WORK}/toy-scenes)
   expect("${output}" "${id}" "raylab references made lab ${N}'s reference")
+
+  # Lab ${N}'s own kind of object, [[toy_square]]: in the scene format, read from a scene file and
+  # drawn (the figure without it, or with it behind the camera, is another picture), its errors located.
+  run(output 0 ${bin}/raylab-reference scene-format)
+  expect("${output}" "[[toy_square]] # a square facing the default camera (the toy lab)" "the scene format lists lab ${N}'s kind")
+  expect("${output}" "#   side: number in [" "the scene format lists its parameters")
+  file(READ ${tree}/labs/${id}/scenes/${id}.toml with_square)
+  string(FIND "${with_square}" "\n[[toy_square]]" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "toy lab: lab ${N}'s scene has no [[toy_square]] table")
+  endif()
+  math(EXPR at "${at} + 1")
+  string(SUBSTRING "${with_square}" 0 ${at} without_square)
+  string(REPLACE "center = [0.5, 0, 3]" "center = [0.5, 0, -3]" behind "${with_square}")
+  file(MAKE_DIRECTORY ${WORK}/toy-square)
+  file(WRITE ${WORK}/toy-square/with.toml "${with_square}")
+  file(WRITE ${WORK}/toy-square/without.toml "${without_square}")
+  file(WRITE ${WORK}/toy-square/behind.toml "${behind}")
+  foreach(scene with without behind)
+    run(output 0 ${bin}/raylab-reference render ${WORK}/toy-square/${scene}.toml --out ${WORK}/toy-square/${scene}.png)
+    file(SHA256 ${WORK}/toy-square/${scene}.png ${scene})
+  endforeach()
+  if(with STREQUAL without OR NOT behind STREQUAL without)
+    message(FATAL_ERROR "toy lab: the [[toy_square]] in front of the camera must change the picture, and behind it not "
+                        "(with ${with}, without ${without}, behind ${behind})")
+  endif()
+  file(WRITE ${WORK}/toy-square/bad.toml "${without_square}[[toy_square]]\ncenter = [0, 0, 3]\nside = 0\n")
+  string(REGEX MATCHALL "\n" lines "${without_square}")
+  list(LENGTH lines side_line)
+  math(EXPR side_line "${side_line} + 3")
+  run(output nonzero ${bin}/raylab-reference render ${WORK}/toy-square/bad.toml --out ${WORK}/toy-square/bad.png)
+  expect("${output}" "bad.toml:${side_line}: [[toy_square]] side: 0 is too small" "a bad [[toy_square]] is named with its line")
 endfunction()
 
 # 3b. The copy's own lab tests pass with lab ${N} added: `ctest -L lab`, as docs/instructors.md asks of

@@ -154,7 +154,7 @@ TEST_CASE("a culled render draws the renderer's image, bit for bit") {
         const float w = float(d.width), h = float(d.height);
         for (const auto& [x, y] : std::vector<std::pair<float, float>>{{16.f, 16.f}, {17.f, 40.f}, {30.5f, 47.f}, {47.f, 15.f}, {100.f, 65.2f}}) {
             const Ray ray = probe.camera().generateRay(x / w, y / h);
-            d.scene.spheres.emplace_back(ray.origin + 3.f * ray.direction, 0.1f, Color(1.f, 0.2f, 0.2f));
+            d.scene.add(SphereGeometry(ray.origin + 3.f * ray.direction, 0.1f, Color(1.f, 0.2f, 0.2f)));
         }
     }
     for (SamplerKind kind : {SamplerKind::Stratified, SamplerKind::Random}) {

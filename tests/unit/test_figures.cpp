@@ -160,15 +160,15 @@ TEST_CASE("SceneRender: a far lookAt camera and its scene are moved into the cam
     const glm::vec3 far(1e7f, -3000.f, 700.f);
     d.camera.position = far;
     d.camera.target = far + glm::vec3(0.f, 0.f, 1.f);
-    d.scene.spheres = {SphereGeometry(far + glm::vec3(0.f, 0.f, 3.f), 1.f, Color(1.f))};
-    d.scene.planes = {Plane(far + glm::vec3(0.f, -1.f, 0.f), glm::vec3(0.f, 1.f, 0.f), Color(1.f))};
+    d.scene.setAll(std::vector<SphereGeometry>{SphereGeometry(far + glm::vec3(0.f, 0.f, 3.f), 1.f, Color(1.f))});
+    d.scene.setAll(std::vector<Plane>{Plane(far + glm::vec3(0.f, -1.f, 0.f), glm::vec3(0.f, 1.f, 0.f), Color(1.f))});
     d.scene.lights = {PointLight{far + glm::vec3(0.f, 4.f, 0.f), Color(10.f)}};
     const SceneRender render(d);
     CHECK(render.space().origin() == glm::vec3(10000384.f, -3072.f, 1024.f));
     CHECK(render.camera().position() == glm::vec3(-384.f, 72.f, -324.f));
-    CHECK(render.scene().spheres[0].center() == render.camera().position() + glm::vec3(0.f, 0.f, 3.f));
-    CHECK(render.scene().planes[0].point() == render.camera().position() + glm::vec3(0.f, -1.f, 0.f));
-    CHECK(render.scene().planes[0].normal() == glm::vec3(0.f, 1.f, 0.f));
+    CHECK(render.scene().all<SphereGeometry>()[0].center() == render.camera().position() + glm::vec3(0.f, 0.f, 3.f));
+    CHECK(render.scene().all<Plane>()[0].point() == render.camera().position() + glm::vec3(0.f, -1.f, 0.f));
+    CHECK(render.scene().all<Plane>()[0].normal() == glm::vec3(0.f, 1.f, 0.f));
     CHECK(render.scene().lights[0].position == render.camera().position() + glm::vec3(0.f, 4.f, 0.f));
     CHECK(render.scene().lights[0].intensity == Color(10.f));
 }
@@ -177,7 +177,7 @@ TEST_CASE("SceneRender: the default camera renders in world space, with the scen
     const SceneDescription d = figureScene("lab5_antialiased");
     SceneRender render(d, RenderOptions{2, false});
     CHECK(render.space().origin() == glm::vec3(0.f));
-    CHECK(render.scene().spheres[0].center() == d.scene.spheres[0].center());
+    CHECK(render.scene().all<SphereGeometry>()[0].center() == d.scene.all<SphereGeometry>()[0].center());
     CHECK(render.renderer().nbPixelSamples() == d.samples);
     CHECK(render.renderer().sampler() == d.sampler);
     CHECK_THROWS_AS(SceneRender(figureScene("lab1_gradient")), std::invalid_argument);

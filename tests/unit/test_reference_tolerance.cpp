@@ -81,7 +81,7 @@ TEST_CASE("a shadow ray that grazes the surface it leaves meets it only from a p
         CHECK_FALSE(scene.occluded(Ray{p, glm::normalize(glm::vec3(0.1f, 0.f, 1.f))}, 1e-4f, 10.f));
     }
     // On the ground plane y = -1 under a light: the plane's normal, not the sphere's, moves the point.
-    scene.planes.emplace_back(glm::vec3(0.f, -1.f, 0.f), glm::vec3(0.f, 1.f, 0.f), Color(0.5f));
+    scene.add(Plane(glm::vec3(0.f, -1.f, 0.f), glm::vec3(0.f, 1.f, 0.f), Color(0.5f)));
     const Ray alongGround{{5.f, -1.f, 3.f}, glm::normalize(glm::vec3(1.f, c, 0.f))};
     CHECK_FALSE(scene.occluded(alongGround, 1e-4f, 10.f));
     const Offset under(-kProbeUlps);

@@ -1,4 +1,5 @@
 #include "raylab/integrator_registry.h"
+#include "raylab/shape_registry.h"
 #include "support/scene_files.h"
 #include "grader/lab_catalog.h"
 #include "src/messages.h"
@@ -110,15 +111,15 @@ radius = 2
     CHECK(d.sampler == SamplerKind::Stratified);
     CHECK(d.seed == 9);
     CHECK(d.scene.background == Color(0.1f, 0.2f, 0.3f));
-    REQUIRE(d.scene.spheres.size() == 2);
-    CHECK(d.scene.spheres[1].radius() == 2.f);
-    CHECK(d.scene.spheres[1].color() == Color(1.f));
+    REQUIRE(d.scene.all<SphereGeometry>().size() == 2);
+    CHECK(d.scene.all<SphereGeometry>()[1].radius() == 2.f);
+    CHECK(d.scene.all<SphereGeometry>()[1].color() == Color(1.f));
 }
 
 TEST_CASE("an empty file is the default camera on an empty scene") {
     const SceneDescription d = loadText("");
     CHECK_FALSE(d.camera.lookAt);
-    CHECK(d.scene.spheres.empty());
+    CHECK(d.scene.all<SphereGeometry>().empty());
     CHECK(d.samples == 1);
     CHECK(d.sampler == SamplerKind::Center);
 }
@@ -135,8 +136,8 @@ TEST_CASE("errors name the file, the line and the key") {
     CHECK(errorOf("[camera]\nfovy = nan\n") == "scene.toml:2: [camera] fovy: must be finite, got nan");
     CHECK(errorOf("[[sphere]]\ncenter = [0, 0]\nradius = 1\n") ==
           "scene.toml:2: [[sphere]] center: expected an array of 3 numbers such as [0.0, 1.0, 0.0]");
-    CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\n") == "scene.toml:1: [[sphere]]: a sphere needs a center and a radius");
-    CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\nradius = -1\n") == "scene.toml:3: [[sphere]] radius: -1 must be positive");
+    CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\n") == "scene.toml:1: [[sphere]]: radius is required (its radius)");
+    CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 1]\nradius = -1\n") == "scene.toml:3: [[sphere]] radius: -1 is too small: at least 1.08420217e-19 (its square must stay a normal float)");
     std::string shadings;
     for (const std::string& name : courseShadings()) shadings += (shadings.empty() ? "" : ", ") + name;
     CHECK(errorOf("[render]\nshading = \"phong\"\n") == "scene.toml:2: [render] shading: 'phong' is not one of " + shadings);
@@ -145,8 +146,13 @@ TEST_CASE("errors name the file, the line and the key") {
     CHECK(errorOf("[camera]\nlook_at = [0, 0, 1]\n") ==
           "scene.toml:1: [camera]: a lookAt camera needs both position and look_at (up defaults to [0, 1, 0])");
     CHECK(errorOf("[image\nwidth = 3\n").rfind("scene.toml:1:7: not valid TOML: ", 0) == 0);
+    // The known keys end with each registered kind of object's table (the course's labs may add theirs).
+    std::string kinds;
+    for (const RegisteredShapeKind* kind : registeredShapeKinds()) kinds += ", " + kind->name;
+    CHECK(kinds.find(", plane") != std::string::npos);
+    CHECK(kinds.find(", sphere") != std::string::npos);
     CHECK(errorOf("colour = 3\n") ==
-          "scene.toml:1: colour: unknown key (known keys: figure, image, camera, render, shading, background, sphere, plane, light)");
+          "scene.toml:1: colour: unknown key (known keys: figure, image, camera, render, shading, background, light" + kinds + ")");
     // In French, with its no-break space before the colon after the key as before the known keys.
     const raylab::Language before = raylab::language();
     raylab::setLanguage(raylab::Language::Fr);
@@ -157,12 +163,12 @@ TEST_CASE("errors name the file, the line and the key") {
 
 TEST_CASE("every number is checked against the bounds the float numerics justify, naming the file, line and key") {
     const std::string sphere = "[[sphere]]\ncenter = [0, 0, 3]\nradius = ";
-    CHECK(errorOf(sphere + "1e-50\n") == "scene.toml:3: [[sphere]] radius: 1e-50 is too small: its square underflows "
-                                           "float (the smallest radius is 1.08420217e-19)");
-    CHECK(errorOf(sphere + "1e39\n") == "scene.toml:3: [[sphere]] radius: 1e+39 is too large: its square overflows "
-                                          "float (the largest radius is 1.84467435e+19)");
-    CHECK(errorOf(sphere + "1e20\n") == "scene.toml:3: [[sphere]] radius: 1e+20 is too large: its square overflows "
-                                          "float (the largest radius is 1.84467435e+19)");
+    CHECK(errorOf(sphere + "1e-50\n") == "scene.toml:3: [[sphere]] radius: 1e-50 is too small: at least 1.08420217e-19 "
+                                           "(its square must stay a normal float)");
+    CHECK(errorOf(sphere + "1e39\n") == "scene.toml:3: [[sphere]] radius: 1e+39 is too large: at most 1.84467435e+19 "
+                                          "(its square must stay a normal float)");
+    CHECK(errorOf(sphere + "1e20\n") == "scene.toml:3: [[sphere]] radius: 1e+20 is too large: at most 1.84467435e+19 "
+                                          "(its square must stay a normal float)");
     CHECK(errorOf("[[sphere]]\ncenter = [1e39, 0, 3]\nradius = 1\n") ==
           "scene.toml:2: [[sphere]] center: item 0 = 1e+39 is too large: at most 1e+18 (so that squared distances stay "
           "within float)");
@@ -178,7 +184,7 @@ TEST_CASE("every number is checked against the bounds the float numerics justify
     // The radii of docs/numerics.md, and the edges of the range, are accepted.
     for (const char* radius : {"1e-3", "1e3", "2e-19", "1.8e19"}) {
         CAPTURE(radius);
-        CHECK(loadText(sphere + radius + "\n").scene.spheres.size() == 1);
+        CHECK(loadText(sphere + radius + "\n").scene.all<SphereGeometry>().size() == 1);
     }
 }
 
@@ -239,21 +245,21 @@ color = [1, 0.5, 0]
 position = [0, 5, 0]
 intensity = 2.5
 )");
-    CHECK(d.scene.spheres.size() == 1);
-    REQUIRE(d.scene.planes.size() == 2);
-    CHECK(d.scene.planes[0].point() == glm::vec3(0.f, -1.f, 0.f));
-    CHECK(d.scene.planes[0].normal() == glm::vec3(0.f, 1.f, 0.f)); // normalized
-    CHECK(d.scene.planes[0].color() == Color(0.5f, 0.25f, 1.f));
+    CHECK(d.scene.all<SphereGeometry>().size() == 1);
+    REQUIRE(d.scene.all<Plane>().size() == 2);
+    CHECK(d.scene.all<Plane>()[0].point() == glm::vec3(0.f, -1.f, 0.f));
+    CHECK(d.scene.all<Plane>()[0].normal() == glm::vec3(0.f, 1.f, 0.f)); // normalized
+    CHECK(d.scene.all<Plane>()[0].color() == Color(0.5f, 0.25f, 1.f));
     // normal + offset: the plane dot(n, x) = offset of the unit normal n = (0, 0, -1), so z = 10.
-    CHECK(d.scene.planes[1].point() == glm::vec3(0.f, 0.f, 10.f));
-    CHECK(d.scene.planes[1].normal() == glm::vec3(0.f, 0.f, -1.f));
-    CHECK(d.scene.planes[1].color() == Color(1.f)); // white by default
+    CHECK(d.scene.all<Plane>()[1].point() == glm::vec3(0.f, 0.f, 10.f));
+    CHECK(d.scene.all<Plane>()[1].normal() == glm::vec3(0.f, 0.f, -1.f));
+    CHECK(d.scene.all<Plane>()[1].color() == Color(1.f)); // white by default
     REQUIRE(d.scene.lights.size() == 2);
     CHECK(d.scene.lights[0].position == glm::vec3(1.f, 2.f, 3.f));
     CHECK(d.scene.lights[0].intensity == Color(20.f, 10.f, 0.f)); // intensity * color
     CHECK(d.scene.lights[1].intensity == Color(2.5f));
     CHECK(loadText("").scene.lights.empty());
-    CHECK(loadText("").scene.planes.empty());
+    CHECK(loadText("").scene.all<Plane>().empty());
 }
 
 TEST_CASE("lights and planes: errors name the file, the line and the key") {
@@ -272,8 +278,7 @@ TEST_CASE("lights and planes: errors name the file, the line and the key") {
           "scene.toml:1: [[plane]]: a plane needs a normal, and either a point or an offset");
     CHECK(errorOf("[[plane]]\nnormal = [0, 1, 0]\npoint = [0, 0, 0]\noffset = 1\n") ==
           "scene.toml:1: [[plane]]: a plane needs a normal, and either a point or an offset");
-    CHECK(errorOf("[[plane]]\npoint = [0, 0, 0]\n") ==
-          "scene.toml:1: [[plane]]: a plane needs a normal, and either a point or an offset");
+    CHECK(errorOf("[[plane]]\npoint = [0, 0, 0]\n") == "scene.toml:1: [[plane]]: normal is required (its normal, normalized when read)");
     CHECK(errorOf("[[plane]]\nnormal = [0, 0, 0]\noffset = 1\n") == "scene.toml:2: [[plane]] normal: [0, 0, 0] has no direction");
     CHECK(errorOf("[[plane]]\nnormal = [0, nan, 0]\noffset = 1\n") ==
           "scene.toml:2: [[plane]] normal: item 1 = nan is not finite");
@@ -282,7 +287,7 @@ TEST_CASE("lights and planes: errors name the file, the line and the key") {
     CHECK(errorOf("[[plane]]\nnormal = [0, 1, 0]\noffset = \"1\"\n") ==
           "scene.toml:3: [[plane]] offset: expected a number, got a string");
     CHECK(errorOf("[[plane]]\nnormal = [0, 1, 0]\noffset = 1\nside = 2\n") ==
-          "scene.toml:4: [[plane]] side: unknown key (known keys: point, normal, offset, color)");
+          "scene.toml:4: [[plane]] side: unknown key (known keys: normal, point, offset, color)");
 }
 
 TEST_CASE("a shading reads the parameters it declares from [shading], and no other key") {
@@ -362,4 +367,43 @@ TEST_CASE("the adaptive sampler's errors name the file, the line and the key") {
           "scene.toml:5: [render.adaptive] levels: unknown key (known keys: threshold, max_samples, widen, sampler)");
 }
 
+}
+
+TEST_CASE("raylab scene-format lists each registered kind of object with its keys, read from the registry") {
+    const std::string reference = objectTablesReference();
+    for (const RegisteredShapeKind* kind : registeredShapeKinds()) {
+        CHECK(reference.find("\n[[" + kind->name + "]] # " + kind->meaning + "\n") != std::string::npos);
+        for (const ShapeParameter& p : kind->parameters) CHECK(reference.find("#   " + p.key + ": ") != std::string::npos);
+    }
+    CHECK(reference.find("#   radius: number in [1.08420217e-19, 1.84467435e+19], required: its radius\n") != std::string::npos);
+    CHECK(reference.find("#   color: colour [r, g, b], default white: ") != std::string::npos);
+    CHECK(reference.find("#   normal: direction [x, y, z], not zero, required: ") != std::string::npos);
+}
+
+TEST_CASE("a kind of object refuses a table its declaration accepts, at the table's or the key's line") {
+    // The plane's own rule: a point or an offset, not both; the key's line for a value out of range.
+    CHECK(errorOf("[[plane]]\nnormal = [0, 1, 0]\n") == "scene.toml:1: [[plane]]: a plane needs a normal, and either a point or an offset");
+    CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 3]\nradius = 1\ncolor = [1, 0]\n") ==
+          "scene.toml:4: [[sphere]] color: expected an array of 3 numbers such as [0.0, 1.0, 0.0]");
+    // A kind registered twice is refused, naming both places.
+    const auto twice = [] {
+        registerShapeKind({"sphere", "again", {}, [](const ShapeValues&, Scene&) {}});
+    };
+    CHECK_THROWS_WITH_AS(twice(), doctest::Contains("the name 'sphere' (kind of object) is registered twice"), std::logic_error);
+}
+
+TEST_CASE("objects of every kind are kept in the order read, each kind in its array") {
+    const SceneDescription d = loadText("[[plane]]\nnormal = [0, 1, 0]\noffset = -1\n"
+                                        "[[sphere]]\ncenter = [0, 0, 3]\nradius = 1\n[[sphere]]\ncenter = [0, 0, 6]\nradius = 2\n");
+    CHECK(d.scene.objectCount() == 3);
+    REQUIRE(d.scene.all<SphereGeometry>().size() == 2);
+    CHECK(d.scene.all<SphereGeometry>()[0].center() == glm::vec3(0.f, 0.f, 3.f));
+    CHECK(d.scene.all<SphereGeometry>()[1].radius() == 2.f);
+    // A hit's object knows its kind: its normal is its kind's own.
+    HitRecord hit;
+    REQUIRE(d.scene.intersect(Ray{glm::vec3(0.f), glm::vec3(0.f, 0.f, 1.f)}, hit));
+    CHECK(hit.object == &d.scene.all<SphereGeometry>()[0]);
+    REQUIRE(d.scene.intersect(Ray{glm::vec3(0.f), glm::vec3(0.f, -1.f, 0.f)}, hit));
+    CHECK(hit.object == &d.scene.all<Plane>()[0]);
+    CHECK(hit.object->computeNormal(hit.position) == glm::vec3(0.f, 1.f, 0.f));
 }

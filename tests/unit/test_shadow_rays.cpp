@@ -21,7 +21,7 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 // The unit sphere at (0, 0, 3) above the ground y = -1.
 Scene sphereOnGround() {
     Scene scene = makeTp1Scene();
-    scene.planes.emplace_back(glm::vec3(0.f, -1.f, 0.f), glm::vec3(0.f, 1.f, 0.f), Color(0.5f));
+    scene.add(Plane(glm::vec3(0.f, -1.f, 0.f), glm::vec3(0.f, 1.f, 0.f), Color(0.5f)));
     return scene;
 }
 
@@ -33,23 +33,23 @@ TEST_CASE("intersect finds the nearest object, sphere or plane, and the hit refe
     const Scene scene = sphereOnGround();
     HitRecord hit;
     REQUIRE(scene.intersect(Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, hit));
-    CHECK(hit.object == &scene.spheres[0]);
+    CHECK(hit.object == &scene.all<SphereGeometry>()[0]);
     CHECK(hit.t == 2.f);
     CHECK(hit.object->computeNormal(hit.position) == glm::vec3(0.f, 0.f, -1.f)); // the sphere's own normal
     CHECK(hit.object->color() == Color(0.f, 0.f, 1.f));
     REQUIRE(scene.intersect(Ray{{0.f, 3.f, 3.f}, {0.f, -1.f, 0.f}}, hit)); // down onto the sphere's top
-    CHECK(hit.object == &scene.spheres[0]);
+    CHECK(hit.object == &scene.all<SphereGeometry>()[0]);
     CHECK(hit.t == 2.f);
     REQUIRE(scene.intersect(Ray{{0.f, 3.f, 0.f}, {0.f, -1.f, 0.f}}, hit)); // beside it, onto the ground
-    CHECK(hit.object == &scene.planes[0]);
+    CHECK(hit.object == &scene.all<Plane>()[0]);
     CHECK(hit.t == 4.f);
     CHECK(hit.object->computeNormal(hit.position) == glm::vec3(0.f, 1.f, 0.f));
     CHECK(hit.object->color() == Color(0.5f));
     // A sphere below the ground, seen from above: the ground hides it.
     Scene buried = sphereOnGround();
-    buried.spheres.emplace_back(glm::vec3(0.f, -5.f, 0.f), 1.f, Color(1.f));
+    buried.add(SphereGeometry(glm::vec3(0.f, -5.f, 0.f), 1.f, Color(1.f)));
     REQUIRE(buried.intersect(Ray{{0.f, 3.f, 0.f}, {0.f, -1.f, 0.f}}, hit));
-    CHECK(hit.object == &buried.planes[0]);
+    CHECK(hit.object == &buried.all<Plane>()[0]);
 }
 
 TEST_CASE("occluded: an object strictly between tMin and tMax, the light's own point excluded") {
@@ -94,7 +94,7 @@ TEST_CASE("occluded: grazing rays, and a scene without objects") {
 TEST_CASE("a scene without lights traces no shadow ray; with one, one per hit that faces it") {
     // The camera looks straight at a wall filling the whole picture, facing it.
     Scene wall;
-    wall.planes.emplace_back(glm::vec3(0.f, 0.f, 5.f), glm::vec3(0.f, 0.f, -1.f), Color(1.f));
+    wall.add(Plane(glm::vec3(0.f, 0.f, 5.f), glm::vec3(0.f, 0.f, -1.f), Color(1.f)));
     const PerspectiveCamera camera(40, 30);
     const auto lambert = makeRegisteredIntegrator("lambert", {{"ambient", 0.25f}});
     Renderer renderer(wall, camera, *lambert);

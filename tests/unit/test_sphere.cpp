@@ -74,16 +74,16 @@ TEST_CASE("the normal is the unit vector from the centre") {
 
 TEST_CASE("the scene keeps the nearest of several hits") {
     Scene scene;
-    scene.spheres.emplace_back(glm::vec3(0.f, 0.f, 10.f), 1.f, Color(1.f, 0.f, 0.f));
-    scene.spheres.emplace_back(glm::vec3(0.f, 0.f, 5.f), 1.f, Color(0.f, 1.f, 0.f));
+    scene.add(SphereGeometry(glm::vec3(0.f, 0.f, 10.f), 1.f, Color(1.f, 0.f, 0.f)));
+    scene.add(SphereGeometry(glm::vec3(0.f, 0.f, 5.f), 1.f, Color(0.f, 1.f, 0.f)));
     HitRecord hit;
     REQUIRE(scene.intersect(Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, hit));
     CHECK(hit.t == 4.f);
-    CHECK(hit.object == &scene.spheres[1]);
+    CHECK(hit.object == &scene.all<SphereGeometry>()[1]);
     // Bounded like SphereGeometry::intersect(ray, tMin, tMax, hit): past the first sphere, the second.
     REQUIRE(scene.intersect(Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 7.f, 100.f, hit));
     CHECK(hit.t == 9.f);
-    CHECK(hit.object == &scene.spheres[0]);
+    CHECK(hit.object == &scene.all<SphereGeometry>()[0]);
     CHECK_FALSE(scene.intersect(Ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}}, 0.f, 3.5f, hit));
 }
 

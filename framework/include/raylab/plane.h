@@ -33,6 +33,11 @@ public:
     // The unit normal as constructed, on both sides (docs/conventions.md).
     glm::vec3 computeNormal(const glm::vec3&) const { return m_normal; }
 
+    // The same plane through the moved point (shape.h).
+    Plane shifted(const OriginShift& shift) const { return Plane(shift(m_point), m_normal, color()); }
+    // How far p is from the plane.
+    float distanceTo(const glm::vec3& p) const { return std::abs(glm::dot(p - m_point, m_normal)); }
+
     const glm::vec3& point() const { return m_point; }
     const glm::vec3& normal() const { return m_normal; }
 

@@ -1,40 +1,61 @@
 #pragma once
 // The objects of a picture, its lights, and what the rays that miss every object see.
 
+#include "raylab/detail/shape_groups.h"
 #include "raylab/light.h"
 #include "raylab/plane.h"
 #include "raylab/sphere_geometry.h"
 
 #include <limits>
+#include <tuple>
 #include <vector>
+
+// The kinds of objects a scene may hold: the framework's, then those the course's labs bring (each
+// lab.toml's `shapes`, declared in its folder's shapes.h): CMake writes the list into
+// raylab/course_shapes.h. A closed list in each build, so that Scene tests every kind inline.
+#if __has_include("raylab/course_shapes.h")
+#include "raylab/course_shapes.h"
+#else
+#define RAYLAB_COURSE_SHAPES
+#endif
 
 namespace raylab {
 
+using SceneShapeKinds = ShapeKindList<SphereGeometry, Plane RAYLAB_COURSE_SHAPES>;
+template <class Kind> concept SceneShapeKind = ShapeKind<Kind> && isOneOf<Kind>(SceneShapeKinds{});
+
 struct Scene {
-    std::vector<SphereGeometry> spheres;
-    std::vector<Plane> planes;
     std::vector<PointLight> lights; // none: nothing casts a shadow ray
     Color background{0.5f, 0.5f, 0.5f};
 
+    // Adds an object of any kind (shape.h): scene.add(SphereGeometry(centre, radius, colour)).
+    template <SceneShapeKind Kind> void add(const Kind& object) {
+        group<Kind>().objects.push_back(object);
+        withKind(group<Kind>().objects.back());
+    }
+    // The objects of one kind, in the order added.
+    template <SceneShapeKind Kind> const std::vector<Kind>& all() const { return std::get<ShapesOf<Kind>>(m_groups).objects; }
+    // Replaces the objects of one kind (the other kinds' stay).
+    template <SceneShapeKind Kind> void setAll(std::vector<Kind> objects) {
+        for (Kind& object : objects) withKind(object);
+        group<Kind>().objects = std::move(objects);
+    }
+    // Calls f(group) for each kind's ShapesOf<Kind>, in the order of SceneShapeKinds.
+    template <class F> void forEachGroup(F&& f) const {
+        std::apply([&](const auto&... group) { (f(group), ...); }, m_groups);
+    }
+    std::size_t objectCount() const {
+        std::size_t count = 0;
+        forEachGroup([&](const auto& group) { count += group.objects.size(); });
+        return count;
+    }
+
     // The nearest hit over all objects with t in [tMin, tMax]; sets hit.object. The same order of
-    // parameters as SphereGeometry::intersect. Inline: the integrators call it once per ray.
+    // parameters as SphereGeometry::intersect. Inline, and each kind's code with it: the
+    // integrators call it once per ray (docs/performance.md).
     bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const {
         bool found = false;
-        for (const SphereGeometry& sphere : spheres) {
-            // Each hit narrows the interval, so the last one found is the nearest.
-            if (sphere.intersect(ray, tMin, tMax, hit)) {
-                found = true;
-                tMax = hit.t;
-                hit.object = &sphere;
-            }
-        }
-        for (const Plane& plane : planes) {
-            if (plane.intersect(ray, tMin, tMax, hit)) {
-                found = true;
-                tMax = hit.t;
-                hit.object = &plane;
-            }
-        }
+        std::apply([&](const auto&... group) { (group.intersectAll(ray, tMin, tMax, hit, found), ...); }, m_groups);
         return found;
     }
 
@@ -48,12 +69,17 @@ struct Scene {
     // it fills no hit. Open at both ends: the point the ray leaves (t = tMin) and the light it
     // goes to (t = tMax) do not block it. Counted in RenderStats::shadowRays.
     bool occluded(const Ray& ray, float tMin, float tMax) const;
+
+private:
+    template <SceneShapeKind Kind> static void withKind(Kind& object) {
+        static_cast<Shape&>(object).m_kind = kindIndex<Kind>(SceneShapeKinds{});
+    }
+    template <SceneShapeKind Kind> ShapesOf<Kind>& group() { return std::get<ShapesOf<Kind>>(m_groups); }
+
+    ShapeGroupsOf<SceneShapeKinds>::type m_groups;
 };
 
-inline glm::vec3 Shape::computeNormal(const glm::vec3& p) const {
-    if (m_kind == Kind::Sphere) return static_cast<const SphereGeometry*>(this)->computeNormal(p);
-    return static_cast<const Plane*>(this)->computeNormal(p);
-}
+inline glm::vec3 Shape::computeNormal(const glm::vec3& p) const { return normalOfKind(*this, m_kind, p, SceneShapeKinds{}); }
 
 // The course's scene "tp1": one blue sphere of radius 1 at (0, 0, 3) on a grey background.
 Scene makeTp1Scene();

@@ -1,10 +1,16 @@
 #pragma once
-// What a hit refers to: one object of the scene, a sphere or a plane, and what a shading asks of
-// any object: its normal at a point and its colour. Each kind (SphereGeometry, Plane) has
-//   bool intersect(const Ray&, float tMin, float tMax, HitRecord&) const  (the nearest hit), and
-//   bool hits(const Ray&, float tMin, float tMax) const                   (any hit: shadow rays),
-// and Scene keeps one list of each. As pbrt-v4's Shape, a kind tag rather than virtual functions:
-// the renderer's loop then inlines each kind's code (docs/performance.md).
+// What a hit refers to: one object of the scene, of any kind (a sphere, a plane, a lab's triangle),
+// and what a shading asks of any object: its normal at a point and its colour.
+//
+// A kind of object is a final class deriving from Shape, with
+//   bool intersect(const Ray&, float tMin, float tMax, HitRecord&) const  the nearest hit: its t and position
+//   bool hits(const Ray&, float tMin, float tMax) const                   any hit (shadow rays)
+//   glm::vec3 computeNormal(const glm::vec3& p) const                     the unit normal at p
+//   Kind shifted(const OriginShift& shift) const                          itself, each position p as shift(p)
+// and, optionally, float distanceTo(const glm::vec3& p) const (how far p is from its surface: the
+// grader's rounding probe, src/shadow_rays.h). Scene keeps one array per kind and tests each array
+// with its kind's own code (raylab/scene.h); a scene file names the kind by the name it is registered
+// under (raylab/shape_registry.h).
 
 #include "raylab/texture.h"
 
@@ -14,20 +20,28 @@ namespace raylab {
 
 class Shape {
 public:
-    // The unit normal at a point p of the object: the sphere's or the plane's own computeNormal.
-    // Defined in scene.h, which knows every kind.
+    // The unit normal at a point p of the object: its kind's computeNormal. Defined in scene.h. An
+    // object a hit refers to is in a scene, which knows its kind; any other has no normal here (NaN).
     glm::vec3 computeNormal(const glm::vec3& p) const;
 
     // Its flat colour.
     const Color& color() const { return m_color; }
 
 protected:
-    enum class Kind : unsigned char { Sphere, Plane };
-    Shape(Kind kind, const Color& color) : m_kind(kind), m_color(color) {}
+    explicit Shape(const Color& color) : m_color(color) {}
 
 private:
-    Kind m_kind;
+    friend struct Scene; // which sets m_kind when it takes the object
+    static constexpr unsigned char kNoKind = 0xff;
+    unsigned char m_kind = kNoKind; // its kind's place in SceneShapeKinds (scene.h)
     Color m_color;
+};
+
+// A change of origin: shift(p) is p - origin, computed in double (exact for two floats) and rounded
+// once to float. The renderer renders in a space whose origin is near the camera (src/render_space.h).
+struct OriginShift {
+    glm::vec3 origin{0.f};
+    glm::vec3 operator()(const glm::vec3& p) const { return glm::vec3(glm::dvec3(p) - glm::dvec3(origin)); }
 };
 
 } // namespace raylab

@@ -24,6 +24,11 @@ public:
         return intersect(ray, tMin, tMax, scratch);
     }
 
+    // The same sphere, its centre moved (shape.h).
+    SphereGeometry shifted(const OriginShift& shift) const { return SphereGeometry(shift(m_center), m_radius, color()); }
+    // How far p is from the sphere's surface.
+    float distanceTo(const glm::vec3& p) const;
+
     const glm::vec3& center() const { return m_center; }
     float radius() const { return m_radius; }
 

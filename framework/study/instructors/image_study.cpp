@@ -54,7 +54,7 @@ double analyticDiscArea(const PerspectiveCamera& camera, const glm::vec3& centre
 DiscCounts measureDisc(const PerspectiveCamera& camera, const glm::vec3& centre) {
     const SphereGeometry sphere(centre, 1.f, Color(1.f));
     Scene scene;
-    scene.spheres.push_back(sphere);
+    scene.add(sphere);
     const RayCastIntegrator cosine(Shading::Cosine);
     DiscCounts counts;
     auto level = [](LD v) { return std::int64_t(std::llround(255.L * std::clamp(v, LD(0), LD(1)))); };

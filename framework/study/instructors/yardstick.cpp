@@ -12,7 +12,7 @@
 namespace raylab::study {
 
 std::vector<Color> renderYardstick(const SceneDescription& d) {
-    if (d.camera.lookAt || d.scene.spheres.size() != 1 || d.shading != "cosine" ||
+    if (d.camera.lookAt || d.scene.objectCount() != 1 || d.scene.all<SphereGeometry>().size() != 1 || d.shading != "cosine" ||
         d.sampler != SamplerKind::Random)
         throw std::invalid_argument("yardstick: " + d.id + " is not lab 5's kind of scene (default camera, one sphere, "
                                     "cosine shading, random sampler)");
@@ -26,9 +26,10 @@ std::vector<Color> renderYardstick(const SceneDescription& d) {
     const float focal = 1.f;
     const float viewportHeight = 2.f * std::tan(glm::radians(d.camera.fovy) / 2.f) * focal;
     const float viewportWidth = viewportHeight * (float(width) / float(height));
-    const glm::vec3 center = d.scene.spheres[0].center();
-    const float radius = d.scene.spheres[0].radius();
-    const Color color = d.scene.spheres[0].color(), background = d.scene.background;
+    const SphereGeometry& sphere = d.scene.all<SphereGeometry>()[0];
+    const glm::vec3 center = sphere.center();
+    const float radius = sphere.radius();
+    const Color color = sphere.color(), background = d.scene.background;
 
     std::vector<Color> image(std::size_t(width) * std::size_t(height));
     for (int j = 0; j < height; ++j)

@@ -35,7 +35,7 @@ SceneDescription farSphere(const glm::vec3& cameraPosition) {
     d.camera.lookAt = true;
     d.camera.position = cameraPosition;
     d.camera.target = centre;
-    d.scene.spheres.emplace_back(centre, 1.f, Color(0.f, 0.f, 1.f));
+    d.scene.add(SphereGeometry(centre, 1.f, Color(0.f, 0.f, 1.f)));
     return d;
 }
 
@@ -79,7 +79,7 @@ TEST_CASE("the far sphere's cosine shading is within one 8-bit level of the long
     const FigureResult r = renderScene(d, RenderOptions{0, false});
     REQUIRE(r.status == FigureResult::Status::Rendered);
     const Image8 image = quantize(*r.image);
-    const glm::vec3 centre = d.scene.spheres[0].center();
+    const glm::vec3 centre = d.scene.all<SphereGeometry>()[0].center();
     const PerspectiveCamera camera(kSize, kSize, d.camera.position, d.camera.target, d.camera.up, d.camera.fovy);
     const double radius = analyticRadiusPx();
     int worstInside = 0, worstRim = 0;
@@ -103,7 +103,7 @@ TEST_CASE("the far sphere's cosine shading is within one 8-bit level of the long
 
 TEST_CASE("the textbook formula does not give the far sphere's disc") {
     const SceneDescription d = farSphere(glm::vec3(0.f));
-    const glm::vec3 centre = d.scene.spheres[0].center();
+    const glm::vec3 centre = d.scene.all<SphereGeometry>()[0].center();
     const PerspectiveCamera camera(kSize, kSize, d.camera.position, d.camera.target, d.camera.up, d.camera.fovy);
     int hits = 0, wrong = 0;
     for (int j = 0; j < kSize; ++j)

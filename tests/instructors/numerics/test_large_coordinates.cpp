@@ -24,7 +24,7 @@ SceneDescription sphereSeenFrom(const glm::vec3& position) {
     d.camera.lookAt = true;
     d.camera.position = position;
     d.camera.target = position + glm::vec3(0.f, 0.f, 1.f);
-    d.scene.spheres.emplace_back(position + glm::vec3(0.f, 0.f, 3.f), 1.f, Color(0.f, 0.f, 1.f));
+    d.scene.add(SphereGeometry(position + glm::vec3(0.f, 0.f, 3.f), 1.f, Color(0.f, 0.f, 1.f)));
     return d;
 }
 
@@ -75,10 +75,10 @@ TEST_CASE("large world coordinates: normals from world-space hit points are off,
     // What the renderer hands the lab code: the same rays and sphere in the camera's render space.
     const RenderSpace space(camera);
     Scene world;
-    world.spheres = {SphereGeometry(centre, 1.f, Color(1.f))};
+    world.setAll(std::vector<SphereGeometry>{SphereGeometry(centre, 1.f, Color(1.f))});
     const Scene moved = space.toRender(world);
-    CHECK(moved.spheres[0].center() == space.toRender(camera) + glm::vec3(0.f, 0.f, 3.f));
-    CHECK(worstNormalError(space.toRender(camera), moved.spheres[0].center()) < 1e-4);
+    CHECK(moved.all<SphereGeometry>()[0].center() == space.toRender(camera) + glm::vec3(0.f, 0.f, 3.f));
+    CHECK(worstNormalError(space.toRender(camera), moved.all<SphereGeometry>()[0].center()) < 1e-4);
 }
 
 }

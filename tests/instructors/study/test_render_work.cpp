@@ -138,7 +138,7 @@ TEST_CASE("a scene without lights traces no shadow ray, whatever the shading") {
 
 TEST_CASE("the shadow test stops at the first object it meets; the nearest hit tries them all") {
     Scene row; // three spheres one behind the other along +z
-    for (float z : {3.f, 6.f, 9.f}) row.spheres.emplace_back(glm::vec3(0.f, 0.f, z), 1.f, Color(1.f));
+    for (float z : {3.f, 6.f, 9.f}) row.add(SphereGeometry(glm::vec3(0.f, 0.f, z), 1.f, Color(1.f)));
     const Ray ray{{0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}};
     sphereIntersections = 0;
     CHECK(row.occluded(ray, 1e-4f, 100.f));
@@ -169,7 +169,7 @@ TEST_CASE("flat shading computes no normal; cosine shading one per hit") {
 
 TEST_CASE("a scene with no objects intersects nothing; the directions picture looks at no object") {
     Job job;
-    job.scene.spheres.clear();
+    job.scene.setAll(std::vector<SphereGeometry>{});
     Counts c = render(job);
     CHECK(c.intersections == 0);
     CHECK(c.li == kPixels);

@@ -1,6 +1,4 @@
-// Lab @N@ (a toy): each primary ray coloured by its direction, inverted. The integrator that draws
-// the figure is registered here, under the name its scene file's [render] shading gives.
-#include "raylab/integrator_registry.h"
+// Lab @N@ (a toy): each primary ray coloured by its direction, inverted.
 #include "toy_colour.h"
 #include "raylab/todo.h"
 
@@ -9,16 +7,5 @@ namespace raylab {
 Color toyColour(const Ray& ray) {
     RAYLAB_TODO("lab @N@", "toyColour");
 }
-
-namespace {
-
-class ToyIntegrator final : public Integrator {
-public:
-    Color Li(const Scene&, const Ray& ray) const override { return toyColour(ray); }
-};
-
-} // namespace
-
-RAYLAB_REGISTER_INTEGRATOR("toy_inverted_directions", ToyIntegrator);
 
 } // namespace raylab

@@ -9,7 +9,7 @@ namespace raylab {
 namespace {
 
 void intersections(FigureStepContext& c) {
-    for (const SphereGeometry& sphere : c.render->scene().spheres) {
+    for (const SphereGeometry& sphere : c.render->scene().all<SphereGeometry>()) {
         HitRecord hit;
         (void)sphere.intersect(c.ray, 0.f, std::numeric_limits<float>::infinity(), hit);
     }
@@ -17,7 +17,7 @@ void intersections(FigureStepContext& c) {
 
 // Each hit found again: the step before made these very calls and survived them.
 void normals(FigureStepContext& c) {
-    for (const SphereGeometry& sphere : c.render->scene().spheres) {
+    for (const SphereGeometry& sphere : c.render->scene().all<SphereGeometry>()) {
         HitRecord hit;
         if (sphere.intersect(c.ray, 0.f, std::numeric_limits<float>::infinity(), hit))
             (void)sphere.computeNormal(hit.position);

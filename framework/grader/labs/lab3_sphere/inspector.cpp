@@ -45,9 +45,9 @@ void append(std::vector<double>& inputs, const glm::dvec3& v) { inputs.insert(in
 void sphere(PixelContext& pixel, Inspection& inspection) {
     const SceneDescription& d = pixel.scene;
     const int shading = shadingIndex(d.shading);
-    if (!pixel.ray || pixel.coloured || shading < 0 || d.scene.spheres.size() != 1 || !d.scene.planes.empty()) return;
+    if (!pixel.ray || pixel.coloured || shading < 0 || d.scene.objectCount() != 1 || d.scene.all<SphereGeometry>().size() != 1) return;
     const ReferenceRay& ray = *pixel.ray;
-    const SphereGeometry& s = d.scene.spheres.front();
+    const SphereGeometry& s = d.scene.all<SphereGeometry>().front();
     const glm::dvec3 centre(s.center()), colour(s.color()), background(d.scene.background);
     const std::optional<double> t = hitDistance(centre, s.radius(), ray);
     const glm::dvec3 position = t ? ray.origin + *t * ray.direction : glm::dvec3(0.);

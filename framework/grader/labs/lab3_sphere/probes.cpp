@@ -48,7 +48,7 @@ std::vector<double> liProbe(ProbeInputs in) {
     const float radius = in.real();
     const Color colour = in.vec3();
     Scene scene;
-    scene.spheres.emplace_back(centre, radius, colour);
+    scene.add(SphereGeometry(centre, radius, colour));
     scene.background = in.vec3();
     const RayCastIntegrator integrator{Shading(shading)};
     std::vector<double> out;

@@ -66,10 +66,10 @@ struct Object {
 std::vector<Object> objects(const Scene& scene) {
     std::vector<Object> all;
     int k = 0;
-    for (const SphereGeometry& s : scene.spheres)
+    for (const SphereGeometry& s : scene.all<SphereGeometry>())
         all.push_back({true, ++k, glm::dvec3(s.center()), {}, glm::dvec3(s.color()), double(s.radius())});
     k = 0;
-    for (const Plane& p : scene.planes)
+    for (const Plane& p : scene.all<Plane>())
         all.push_back({false, ++k, glm::dvec3(p.point()), glm::normalize(glm::dvec3(p.normal())), glm::dvec3(p.color())});
     return all;
 }

@@ -16,10 +16,10 @@ Scene scene(ProbeInputs& in, bool coloured) {
     const glm::vec3 centre = in.vec3();
     const float radius = in.real();
     const Color sphereColour = coloured ? Color(in.vec3()) : Color(1.f);
-    if (radius != 0.f) s.spheres.emplace_back(centre, radius, sphereColour);
+    if (radius != 0.f) s.add(SphereGeometry(centre, radius, sphereColour));
     const glm::vec3 point = in.vec3(), normal = in.vec3();
     const Color planeColour = coloured ? Color(in.vec3()) : Color(1.f);
-    if (normal != glm::vec3(0.f)) s.planes.emplace_back(point, normal, planeColour);
+    if (normal != glm::vec3(0.f)) s.add(Plane(point, normal, planeColour));
     return s;
 }
 
