@@ -191,7 +191,7 @@ file(CONFIGURE OUTPUT ${RAYLAB_COURSE_SHAPES_FOLDER}/raylab/course_shapes.h CONT
 // Written by CMake (cmake/RaylabLabs.cmake): the kinds of objects the course's labs bring, from their
 // lab.toml's `shapes`, for Scene (raylab/scene.h).
 ${raylab_shape_includes}
-#define RAYLAB_COURSE_SHAPES${raylab_shape_classes}
+#define RAYLAB_COURSE_SHAPES ${raylab_shape_classes}
 ")
 
 # raylab_lab_header_folder(OUT N): the folder of lab N's own header, labs/<lab>/<name>.h (it declares the
