@@ -18,10 +18,10 @@ class ToySquare final : public Shape {
 public:
     ToySquare(const glm::vec3& center, float side, const Color& color) : Shape(color), m_center(center), m_half(side / 2.f) {}
 
-    bool intersect(const Ray& ray, float tMin, float tMax, HitRecord& hit) const {
-        const float t = (m_center.z - ray.origin.z) / ray.direction.z; // infinite or NaN when parallel
+    bool intersect(const Ray& r, float tMin, float tMax, HitRecord& hit) const {
+        const float t = (m_center.z - r.origin.z) / r.direction.z; // infinite or NaN when parallel
         if (!(t >= tMin && t <= tMax && std::isfinite(t))) return false;
-        const glm::vec3 p = ray.at(t);
+        const glm::vec3 p = r.at(t);
         if (!(std::abs(p.x - m_center.x) <= m_half && std::abs(p.y - m_center.y) <= m_half)) return false;
         hit.t = t;
         hit.position = p;
