@@ -287,3 +287,66 @@ TEST_CASE("every lab 6 row links a section of its handout, in English and in Fre
 }
 
 } // TEST_SUITE
+
+TEST_SUITE("watch inspector: lab 7") {
+
+// lab7_quad (600 x 400): the lower right half of the square, triangle 1's (red); lab7_tetrahedron:
+// a face of the tetrahedron turned to the camera.
+constexpr int kQuadX = 380, kQuadY = 280, kTetrahedronX = 392, kTetrahedronY = 205;
+
+json rowNamed(const json& answer, const std::string& name) {
+    for (const json& r : answer["rows"])
+        if (r["name"] == name) return r;
+    return {};
+}
+
+TEST_CASE("each triangle crossed or not, the nearest one's t, hit point and normal, agreed by the reference's agent") {
+    if (!labInCourse(7)) return;
+    const json quad = inspect("raylab-agent-reference", "lab7_quad", kQuadX, kQuadY);
+    INFO(quad.dump(1));
+    CHECK(quad["note"] == "");
+    CHECK(quad["first"] == -1);
+    CHECK(rowNamed(quad, "triangle 1: crossed")["reference"] == true);
+    CHECK(rowNamed(quad, "triangle 2: crossed")["reference"] == false);
+    CHECK(rowNamed(quad, "the nearest triangle crossed")["reference"] == 1);
+    CHECK(rowNamed(quad, "its t")["student"].get<double>() == doctest::Approx(rowNamed(quad, "its t")["reference"].get<double>()));
+    const json tetrahedron = inspect("raylab-agent-reference", "lab7_tetrahedron", kTetrahedronX, kTetrahedronY);
+    INFO(tetrahedron.dump(1));
+    CHECK(tetrahedron["first"] == -1);
+    CHECK(rowNamed(tetrahedron, "triangle 4: crossed").is_object());
+    CHECK(!rowNamed(tetrahedron, "its normal")["student"].is_null());
+}
+
+TEST_CASE("no u + v <= 1: the first row that differs is the other triangle, crossed where it is not") {
+    if (!labInCourse(7)) return;
+    const json answer = inspect("raylab-mistake-no_u_plus_v", "lab7_quad", kQuadX, kQuadY);
+    INFO(answer.dump(1));
+    REQUIRE(answer["first"].get<int>() >= 0);
+    const json first = answer["rows"][answer["first"].get<std::size_t>()];
+    CHECK(first["name"] == "triangle 2: crossed");
+    CHECK(first["function"] == "Triangle::intersect");
+    CHECK(first["student"] == true);
+}
+
+TEST_CASE("the normal flipped: the first row that differs is the normal, the opposite of the reference's") {
+    if (!labInCourse(7)) return;
+    const json answer = inspect("raylab-mistake-normal_flipped", "lab7_tetrahedron", kTetrahedronX, kTetrahedronY);
+    INFO(answer.dump(1));
+    REQUIRE(answer["first"].get<int>() >= 0);
+    const json first = answer["rows"][answer["first"].get<std::size_t>()];
+    CHECK(first["name"] == "its normal");
+    for (std::size_t k = 0; k < 3; ++k) CHECK(first["student"][k].get<double>() == doctest::Approx(-first["reference"][k].get<double>()));
+}
+
+TEST_CASE("every lab 7 row links a section of its handout, in English and in French") {
+    if (!labInCourse(7)) return;
+    for (const raylab::Language language : {raylab::Language::En, raylab::Language::Fr}) {
+        raylab::setLanguage(language);
+        const json answer = inspect("raylab-agent-reference", "lab7_tetrahedron", kTetrahedronX, kTetrahedronY);
+        REQUIRE(answer["rows"].size() > 4);
+        for (const json& r : answer["rows"]) CHECK_MESSAGE(handoutSectionExists(r["handout"]), r["handout"]);
+    }
+    raylab::setLanguage(raylab::Language::En);
+}
+
+} // TEST_SUITE

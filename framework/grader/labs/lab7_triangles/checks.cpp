@@ -1,6 +1,7 @@
 // Lab 7's function checks: where a ray crosses a triangle (inside, outside but within the
 // parallelogram of its two edges, parallel to it, before tMin or past tMax), on fixed triangles and on
 // triangles drawn at grading time, and its normal.
+#include "crossing.h"
 #include "grader/judge/checks/checks.h"
 #include "probes.h"
 
@@ -57,18 +58,8 @@ protocol::Call call(const Case& c) {
     return {probes::triangleIntersect, in};
 }
 
-// Where the ray's line crosses the triangle's plane, in double: t and the point's (u, v); nothing
-// for a line parallel to the plane.
-struct Crossing {
-    double t, u, v;
-};
-std::optional<Crossing> crossing(const Triangle& tri, const Ray& r) {
-    const glm::dvec3 e1 = tri.b - tri.a, e2 = tri.c - tri.a, s = r.origin - tri.a;
-    const glm::dvec3 p = glm::cross(r.direction, e2), q = glm::cross(s, e1);
-    const double det = glm::dot(e1, p);
-    if (det == 0.) return std::nullopt;
-    return Crossing{glm::dot(e2, q) / det, glm::dot(s, p) / det, glm::dot(r.direction, q) / det};
-}
+using lab7::Crossing;
+std::optional<Crossing> crossing(const Triangle& tri, const Ray& r) { return lab7::crossing(tri.a, tri.b, tri.c, r.origin, r.direction); }
 
 // The t a case's outputs must show, relative to its size: 1e-4 of the distance, at least 1e-5.
 double tolerance(double t) { return std::max(1e-5, 1e-4 * std::abs(t)); }
@@ -96,7 +87,7 @@ void judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
         const std::optional<Crossing> x = crossing(c.triangle, c.ray);
         std::string hint = c.hint;
         if (!std::isfinite(t)) hint = tr("hint.lab7.parallel");
-        else if (x && x->u >= 0. && x->v >= 0. && x->u + x->v > 1. && std::abs(t - x->t) <= tolerance(x->t))
+        else if (x && x->u >= 0. && x->v >= 0. && !x->inside() && std::abs(t - x->t) <= tolerance(x->t))
             hint = tr("hint.lab7.u_plus_v");
         judge.fail(c.what, tr("what.lab7.no_hit"), tr("what.lab7.hit_at", {{"t", show(t)}}), hint);
     } else if (t != -7.) {
@@ -146,7 +137,7 @@ Case drawnCase(CaseRandom& random, const std::string& what, const Triangle& tri,
         if (const double s = std::abs(glm::dot(glm::normalize(candidate.direction), n)); s > sine) r = candidate, sine = s;
     }
     const std::optional<Crossing> x = crossing(tri, r);
-    const bool inside = x && x->u >= 0. && x->v >= 0. && x->u + x->v <= 1. && x->t >= 0.;
+    const bool inside = x && x->inside() && x->t >= 0.;
     Case c{tr(what, {{"triangle", describe(tri)}, {"origin", show(r.origin)}}), tri, r, 0., kInf, inside ? x->t : -1., hint};
     c.toleranceFactor = std::max(1., 0.2 / sine);
     return c;
