@@ -25,11 +25,10 @@ void addFrameworkKinds(NameRegistry<RegisteredShapeKind>& registry) {
                   {{"center", ParameterType::Point, "its centre"},
                    {"radius", ParameterType::Number, "its radius", Required::Yes, kMinRadius, kMaxRadius,
                     "its square must stay a normal float"},
-                   {"color", ParameterType::Color, "its colour (default white)", Required::No}},
+                   {"color", ParameterType::Color, "its colour", Required::No}},
                   [](const ShapeValues& v, Scene& scene) {
                       scene.add(SphereGeometry(v.point("center"), float(v.number("radius")), v.color("color")));
-                  },
-},
+                  }},
                  here);
     // A point of the plane, or its offset: the plane dot(n, x) = offset of the unit normal n
     // (docs/conventions.md).
@@ -39,7 +38,7 @@ void addFrameworkKinds(NameRegistry<RegisteredShapeKind>& registry) {
                    {"point", ParameterType::Point, "a point of the plane; or, instead of it, offset", Required::No},
                    {"offset", ParameterType::Number, "the plane dot(n, x) = offset of the unit normal n", Required::No,
                     -1e18, 1e18, "so that squared distances stay within float"},
-                   {"color", ParameterType::Color, "its colour (default white)", Required::No}},
+                   {"color", ParameterType::Color, "its colour", Required::No}},
                   [](const ShapeValues& v, Scene& scene) {
                       if (v.has("point") == v.has("offset"))
                           throw ShapeParameterError("", "a plane needs a normal, and either a point or an offset");
@@ -47,8 +46,7 @@ void addFrameworkKinds(NameRegistry<RegisteredShapeKind>& registry) {
                       const glm::vec3 point = v.has("point") ? v.point("point")
                                                              : glm::vec3(v.number("offset") * glm::normalize(glm::dvec3(normal)));
                       scene.add(Plane(point, normal, v.color("color")));
-                  },
-},
+                  }},
                  here);
 }
 

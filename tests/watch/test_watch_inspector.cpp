@@ -86,6 +86,13 @@ std::vector<std::string> names(const json& answer) {
     return all;
 }
 
+// A row of the answer by its name; null when there is none.
+json row(const json& answer, const std::string& name) {
+    for (const json& r : answer["rows"])
+        if (r["name"] == name) return r;
+    return {};
+}
+
 } // namespace
 
 TEST_SUITE("watch inspector") {
@@ -212,13 +219,6 @@ TEST_CASE("one offset for every sample differs first at the second sample") {
 
 TEST_SUITE("watch inspector: lab 6") {
 
-// A row of the answer by its name; null when there is none.
-json row(const json& answer, const std::string& name) {
-    for (const json& r : answer["rows"])
-        if (r["name"] == name) return r;
-    return {};
-}
-
 // lab6_shadows (600 x 400): the ground in the big sphere's shadow, the top of the big sphere facing
 // the light, the ground far from both spheres.
 constexpr int kShadowX = 233, kShadowY = 237, kSphereTopX = 332, kSphereTopY = 138, kGroundX = 496, kGroundY = 298;
@@ -294,27 +294,21 @@ TEST_SUITE("watch inspector: lab 7") {
 // a face of the tetrahedron turned to the camera.
 constexpr int kQuadX = 380, kQuadY = 280, kTetrahedronX = 392, kTetrahedronY = 205;
 
-json rowNamed(const json& answer, const std::string& name) {
-    for (const json& r : answer["rows"])
-        if (r["name"] == name) return r;
-    return {};
-}
-
 TEST_CASE("each triangle crossed or not, the nearest one's t, hit point and normal, agreed by the reference's agent") {
     if (!labInCourse(7)) return;
     const json quad = inspect("raylab-agent-reference", "lab7_quad", kQuadX, kQuadY);
     INFO(quad.dump(1));
     CHECK(quad["note"] == "");
     CHECK(quad["first"] == -1);
-    CHECK(rowNamed(quad, "triangle 1: crossed")["reference"] == true);
-    CHECK(rowNamed(quad, "triangle 2: crossed")["reference"] == false);
-    CHECK(rowNamed(quad, "the nearest triangle crossed")["reference"] == 1);
-    CHECK(rowNamed(quad, "its t")["student"].get<double>() == doctest::Approx(rowNamed(quad, "its t")["reference"].get<double>()));
+    CHECK(row(quad, "triangle 1: crossed")["reference"] == true);
+    CHECK(row(quad, "triangle 2: crossed")["reference"] == false);
+    CHECK(row(quad, "the nearest triangle crossed")["reference"] == 1);
+    CHECK(row(quad, "its t")["student"].get<double>() == doctest::Approx(row(quad, "its t")["reference"].get<double>()));
     const json tetrahedron = inspect("raylab-agent-reference", "lab7_tetrahedron", kTetrahedronX, kTetrahedronY);
     INFO(tetrahedron.dump(1));
     CHECK(tetrahedron["first"] == -1);
-    CHECK(rowNamed(tetrahedron, "triangle 4: crossed").is_object());
-    CHECK(!rowNamed(tetrahedron, "its normal")["student"].is_null());
+    CHECK(row(tetrahedron, "triangle 4: crossed").is_object());
+    CHECK(!row(tetrahedron, "its normal")["student"].is_null());
 }
 
 TEST_CASE("no u + v <= 1: the first row that differs is the other triangle, crossed where it is not") {

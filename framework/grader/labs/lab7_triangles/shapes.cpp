@@ -17,7 +17,7 @@ const ShapeKindRegistrar kTriangle(
     {{"a", ParameterType::Point, "its first corner"},
      {"b", ParameterType::Point, "its second corner"},
      {"c", ParameterType::Point, "its third corner"},
-     {"color", ParameterType::Color, "its colour (default white)", Required::No}},
+     {"color", ParameterType::Color, "its colour", Required::No}},
     [](const ShapeValues& v) {
         if (onOneLine(v.point("a"), v.point("b"), v.point("c")))
             throw ShapeParameterError("", "its corners a, b, c are on one line: it has no area and no normal");

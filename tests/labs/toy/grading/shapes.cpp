@@ -8,7 +8,7 @@ const ShapeKindRegistrar kToySquare(
     "toy_square", "a square facing the default camera (the toy lab)",
     {{"center", ParameterType::Point, "its centre"},
      {"side", ParameterType::Number, "the length of its sides", Required::Yes, 1e-6, 1e6, "a square one can see"},
-     {"color", ParameterType::Color, "its colour (default white)", Required::No}},
+     {"color", ParameterType::Color, "its colour", Required::No}},
     [](const ShapeValues& v) { return ToySquare(v.point("center"), float(v.number("side")), v.color("color")); });
 
 } // namespace
