@@ -92,7 +92,10 @@ bare_tarball() { # RELEASE
 fresh_root() { # RELEASE NAME CLONE
   unmount_root
   root=$dir/$2
-  rm -rf "$root" && mkdir -p "$root"
+  # A run that was stopped may have left this root mounted: unmounted first, and removed without
+  # leaving its file system, so that /dev, bound into it, is never walked into.
+  unmount_root
+  rm -rf --one-file-system "$root" && mkdir -p "$root"
   tar -C "$root" -xf "$(bare_tarball "$1")"
   cp /etc/resolv.conf "$root/etc/resolv.conf" # apt-get needs names
   mount -t proc proc "$root/proc"
@@ -164,6 +167,6 @@ say "summary (seconds; the logs in $dir/logs/)"
 printf '%s\n' "${results[@]}" | awk '{ printf "%-28s %6s s  %s\n", $1, $2, ($3 == 0 ? "passed" : "FAILED, status " $3) }'
 if [ "$failed" -ne 0 ]; then die "a READMEs' command failed on a bare system (above)"; fi
 # The roots are large (the builds): only a failing one is kept, to look into.
-for release in "${releases[@]}"; do rm -rf "$dir/$release-root"; done
-for release in "${user_releases[@]}"; do rm -rf "$dir/$release-user"; done
+for release in "${releases[@]}"; do rm -rf --one-file-system "$dir/$release-root"; done
+for release in "${user_releases[@]}"; do rm -rf --one-file-system "$dir/$release-user"; done
 say "every README command passed on bare ${releases[*]} roots"
