@@ -24,10 +24,10 @@ void defaultCamera(PixelContext& pixel, Inspection& inspection) {
     const ReferenceRay ray{position, glm::normalize(topLeft + sx * width * u - sy * height * v - position)};
     std::vector<double> in{double(d.width), double(d.height), double(d.camera.fovy), position.x, position.y, position.z, sx, sy};
     const int c = inspection.call(probes::generateRay, in);
-    inspection.add({.key = "screen", .lab = 2, .reference = Json::array({sx, sy})});
-    inspection.add({.key = "origin", .function = "PerspectiveCamera::generateRay", .lab = 2, .reference = vec(ray.origin),
+    inspection.add({.key = "lab2_screen", .lab = 2, .reference = Json::array({sx, sy})});
+    inspection.add({.key = "lab2_origin", .function = "PerspectiveCamera::generateRay", .lab = 2, .reference = vec(ray.origin),
                     .student = values(c, 0, 3), .gives = "ray"});
-    inspection.add({.key = "direction", .function = "PerspectiveCamera::generateRay", .lab = 2, .reference = vec(ray.direction),
+    inspection.add({.key = "lab2_direction", .function = "PerspectiveCamera::generateRay", .lab = 2, .reference = vec(ray.direction),
                     .student = values(c, 3, 3), .gives = "ray"});
     pixel.ray = ray;
 }

@@ -69,16 +69,16 @@ void sphere(PixelContext& pixel, Inspection& inspection) {
     intersectInputs.insert(intersectInputs.end(), {0., std::numeric_limits<double>::infinity()});
     const int hit = inspection.call(probes::intersect, intersectInputs); // hit, t, position
     const std::string intersect = "SphereGeometry::intersect";
-    inspection.add({.key = "hit", .function = intersect, .lab = 3, .reference = t.has_value(), .student = values(hit, 0, 0),
+    inspection.add({.key = "lab3_hit", .function = intersect, .lab = 3, .reference = t.has_value(), .student = values(hit, 0, 0),
                     .gives = "hit", .takes = {"ray"}});
     if (t) {
-        inspection.add({.key = "t", .function = intersect, .lab = 3, .reference = *t, .student = values(hit, 1, 1), .gives = "hit",
+        inspection.add({.key = "lab3_t", .function = intersect, .lab = 3, .reference = *t, .student = values(hit, 1, 1), .gives = "hit",
                         .takes = {"ray"}});
-        inspection.add({.key = "position", .function = intersect, .lab = 3, .reference = vec(position),
+        inspection.add({.key = "lab3_position", .function = intersect, .lab = 3, .reference = vec(position),
                         .student = values(hit, 2, 3), .gives = "hit", .takes = {"ray"}});
         std::vector<double> normalInputs = sphereInputs;
         append(normalInputs, position);
-        inspection.add({.key = "normal", .function = "SphereGeometry::computeNormal", .lab = 3, .reference = vec(normal),
+        inspection.add({.key = "lab3_normal", .function = "SphereGeometry::computeNormal", .lab = 3, .reference = vec(normal),
                         .student = values(inspection.call(probes::computeNormal, normalInputs), 0, 3), .takes = {"ray", "hit"}});
     }
     std::vector<double> liInputs{double(shading)};
@@ -87,7 +87,7 @@ void sphere(PixelContext& pixel, Inspection& inspection) {
     append(liInputs, background);
     append(liInputs, ray.origin);
     append(liInputs, ray.direction);
-    inspection.add({.key = "colour", .function = "RayCastIntegrator::Li", .lab = 3, .reference = vec(seen),
+    inspection.add({.key = "lab3_colour", .function = "RayCastIntegrator::Li", .lab = 3, .reference = vec(seen),
                     .student = values(inspection.call(probes::li, liInputs), 0, 3), .takes = {"ray"}});
     pixel.coloured = true;
 }

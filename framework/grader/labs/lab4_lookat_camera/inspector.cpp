@@ -27,11 +27,11 @@ void lookAtCamera(PixelContext& pixel, Inspection& inspection) {
                            target.y, target.z, up.x, up.y, up.z, double(d.camera.fovy)};
     const int c = inspection.call(probes::lookAt, in); // u, v, w, position, height, width, topLeft
     const std::string constructor = "PerspectiveCamera::PerspectiveCamera";
-    inspection.add({.key = "screen", .lab = 2, .reference = Json::array({sx, sy})});
-    inspection.add({.key = "u", .function = constructor, .lab = 4, .reference = vec(u), .student = values(c, 0, 3), .gives = "ray"});
-    inspection.add({.key = "v", .function = constructor, .lab = 4, .reference = vec(v), .student = values(c, 3, 3), .gives = "ray"});
-    inspection.add({.key = "w", .function = constructor, .lab = 4, .reference = vec(w), .student = values(c, 6, 3), .gives = "ray"});
-    inspection.add({.key = "top_left", .function = constructor, .lab = 4, .reference = vec(topLeft), .student = values(c, 14, 3),
+    inspection.add({.key = "lab4_screen", .lab = 2, .reference = Json::array({sx, sy})});
+    inspection.add({.key = "lab4_u", .function = constructor, .lab = 4, .reference = vec(u), .student = values(c, 0, 3), .gives = "ray"});
+    inspection.add({.key = "lab4_v", .function = constructor, .lab = 4, .reference = vec(v), .student = values(c, 3, 3), .gives = "ray"});
+    inspection.add({.key = "lab4_w", .function = constructor, .lab = 4, .reference = vec(w), .student = values(c, 6, 3), .gives = "ray"});
+    inspection.add({.key = "lab4_top_left", .function = constructor, .lab = 4, .reference = vec(topLeft), .student = values(c, 14, 3),
                     .gives = "ray"});
     pixel.ray = ReferenceRay{position, glm::normalize(topLeft + sx * width * u - sy * height * v - position)};
 }

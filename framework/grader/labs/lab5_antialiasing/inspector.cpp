@@ -31,14 +31,14 @@ void samples(PixelContext& pixel, Inspection& inspection) {
     const int c = inspection.call(probes::renderPixel, {double(d.width), double(d.height), double(x), double(y), double(d.samples),
                                                         double(d.seed)});
     const std::string function = "Renderer::renderPixel";
-    inspection.add({.key = "samples", .function = function, .lab = 5, .reference = d.samples, .student = values(c, 0, 1)});
+    inspection.add({.key = "lab5_samples", .function = function, .lab = 5, .reference = d.samples, .student = values(c, 0, 1)});
     for (int k = 0; k < std::min(d.samples, kListedSamples); ++k)
-        inspection.add({.key = "sample", .function = function, .lab = 5,
+        inspection.add({.key = "lab5_sample", .function = function, .lab = 5,
                         .reference = Json::array({points[std::size_t(k)].x, points[std::size_t(k)].y}),
                         .student = values(c, 4 + 2 * std::size_t(k), 2), .index = k + 1});
-    inspection.add({.key = "average", .function = function, .lab = 5, .reference = vec(mean), .student = values(c, 1, 3)});
+    inspection.add({.key = "lab5_average", .function = function, .lab = 5, .reference = vec(mean), .student = values(c, 1, 3)});
     const Json yours = pixel.picturePixel("student");
-    inspection.add({.key = "picture", .function = function, .lab = 5, .reference = pixel.picturePixel("reference"),
+    inspection.add({.key = "lab5_picture", .function = function, .lab = 5, .reference = pixel.picturePixel("reference"),
                     .student = [yours](const Outputs&) { return yours; }});
     pixel.coloured = true;
 }

@@ -156,8 +156,8 @@ void shadows(PixelContext& pixel, Inspection& inspection) {
     const glm::dvec3 position = ray.origin + t * ray.direction;
     glm::dvec3 n = nearest->sphere ? (position - nearest->centre) / nearest->radius : nearest->normal;
     if (glm::dot(n, ray.direction) > 0.) n = -n; // the side the ray sees
-    inspection.add({.key = "t", .lab = 3, .reference = t, .referenceOnly = true, .takes = {"ray"}});
-    inspection.add({.key = "position", .lab = 3, .reference = vec(position), .referenceOnly = true, .takes = {"ray"}});
+    inspection.add({.key = "lab6_t", .lab = 3, .reference = t, .referenceOnly = true, .takes = {"ray"}});
+    inspection.add({.key = "lab6_position", .lab = 3, .reference = vec(position), .referenceOnly = true, .takes = {"ray"}});
     inspection.add({.key = "lab6_normal", .lab = 6, .reference = vec(n), .referenceOnly = true, .takes = {"ray"}});
     const std::string liFunction = "PointLightIntegrator::Li";
     int k = 0;
@@ -182,7 +182,7 @@ void shadows(PixelContext& pixel, Inspection& inspection) {
                         .student = values(inspection.call(probes::pointLightLi, in), 0, 3), .index = k, .takes = {"ray"}});
     }
     const Json yours = pixel.picturePixel("student");
-    inspection.add({.key = "picture", .function = liFunction, .lab = 6, .reference = pixel.picturePixel("reference"),
+    inspection.add({.key = "lab6_picture", .function = liFunction, .lab = 6, .reference = pixel.picturePixel("reference"),
                     .student = [yours](const Outputs&) { return yours; }});
     pixel.coloured = true;
 }
