@@ -8,9 +8,7 @@
 #include "commands.h"
 
 #include "grader/lab_catalog.h"
-#include "raylab/image_io.h"
 #include "src/atomic_file.h"
-#include "src/contact_sheet.h"
 #include "src/messages.h"
 #include "src/text.h"
 
@@ -75,9 +73,10 @@ void handoutPictures(const fs::path& source, const std::string& lab, std::set<st
     }
 }
 
-// Of the labs the course's list (course.toml) leaves out, their folders in labs/ and the grading
-// folders and their pictures in docs/figures/: absent, not a zero. A given lab keeps, of its grading
-// folder, what registers it by name (its shadings and figure steps, cmake/RaylabLabs.cmake).
+// Of the labs the course's list (course.toml) leaves out, their folders in labs/ (their figures with
+// them) and their grading folders, and the pictures of docs/ that only their handouts show: absent,
+// not a zero. A given lab keeps, of its grading folder, what registers it by name (its shadings and
+// figure steps, cmake/RaylabLabs.cmake).
 std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::LabCatalog& course) {
     std::set<std::string> folders, absentPictures, coursePictures;
     for (const auto& entry : fs::directory_iterator(source / "labs")) {
@@ -89,8 +88,6 @@ std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::L
             continue;
         }
         folders.insert("labs/" + id);
-        for (const grader::LabFigure& figure : grader::loadLabDescription(entry.path() / "lab.toml").figures)
-            absentPictures.insert("docs/figures/" + figure.id + ".png");
         handoutPictures(source, "labs/" + id, absentPictures);
         const bool given = std::any_of(course.given.begin(), course.given.end(),
                                        [&](const grader::LabDescription& l) { return l.id == id; });
@@ -149,7 +146,7 @@ void addStubs(const fs::path& source, const grader::LabCatalog& course, std::vec
 }
 
 // A Markdown file of the students' tree without what leads to a lab the course leaves out: a table
-// row that links there is dropped (docs/figures/README.md's row of an absent figure), another link
+// row that links there is dropped (a row of the README's table of labs), another link
 // is made its text alone (a handout's "next: lab 4" in a course of labs 1 to 3) and a picture from
 // there is dropped. Links elsewhere, web addresses and anchors are kept.
 std::string withoutLinksToAbsentLabs(const std::string& text, const fs::path& relative, const std::set<std::string>& labFolders) {
@@ -180,27 +177,6 @@ std::string withoutLinksToAbsentLabs(const std::string& text, const fs::path& re
         last = m[0].second;
     }
     return out.append(last, kept.cend());
-}
-
-// docs/figures/contact_sheet.png shows every figure of the repository's labs: where the course leaves a
-// lab out, the students' sheet is made anew from the course's figures in docs/figures/, in lab order.
-void writeCourseContactSheet(const fs::path& source, const fs::path& out, const grader::LabCatalog& course,
-                             const std::set<std::string>& withheld) {
-    const fs::path sheet = "docs/figures/contact_sheet.png";
-    std::error_code error;
-    const bool figureWithheld = std::any_of(withheld.begin(), withheld.end(), [](const std::string& path) {
-        return path.rfind("docs/figures/", 0) == 0 && fs::path(path).extension() == ".png";
-    });
-    if (!figureWithheld || !fs::is_regular_file(out / sheet, error)) return;
-    std::vector<ContactSheetItem> items;
-    for (const grader::LabDescription& lab : course.labs)
-        for (const grader::LabFigure& figure : lab.figures) {
-            const fs::path picture = source / "docs/figures" / (figure.id + ".png");
-            if (fs::is_regular_file(picture, error)) items.push_back({figure.id, readImage(picture), ""});
-            else items.push_back({figure.id, std::nullopt, "absent"});
-        }
-    if (items.empty()) fs::remove(out / sheet);
-    else writePng(out / sheet, makeContactSheet(items));
 }
 
 std::string fileText(const fs::path& file) {
@@ -255,7 +231,6 @@ int writeStudentTree(const fs::path& source, const fs::path& out) {
         else
             fs::copy_file(file.source, out / file.relative, fs::copy_options::overwrite_existing); // its permissions too
     }
-    writeCourseContactSheet(tree.source, out, tree.course, tree.withheld);
     writeStudentsReadme(out, tree.course);
     const bool hadReadme = std::any_of(files.begin(), files.end(), [](const TreeFile& f) { return f.relative == "README.md"; });
     return int(files.size()) + (hadReadme ? 1 : 2); // LISEZMOI.md, and README.md where there was none

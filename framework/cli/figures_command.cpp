@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "figure_process.h"
 
+#include "grader/judge/references.h"
 #include "grader/lab_catalog.h"
 
 #include "src/atomic_file.h"
@@ -16,16 +17,20 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace raylab::cli {
 
 namespace {
 
-// Writes a PNG; a file that cannot be written is a failed figure, with the reason on its line.
-bool writeFigure(const std::string& id, const std::filesystem::path& file, const Image8& image) {
+// Writes a PNG; a file that cannot be written is a failed figure, with the reason on its line. A
+// handout's picture whose pixels did not change is left as it is, byte for byte (another zlib may
+// deflate the same pixels otherwise: the repository would show a change where there is none).
+bool writeFigure(const std::string& id, const std::filesystem::path& file, const Image8& image, bool keepSamePixels = false) {
     try {
-        writePng(file, image);
+        if (keepSamePixels) grader::writePngIfChanged(file, image);
+        else writePng(file, image);
         return true;
     } catch (const WriteError& e) {
         std::printf("  %-24s FAILED  %s\n", id.c_str(), e.what());
@@ -44,7 +49,8 @@ std::string brokenLabOf(const SceneDescription& d, const NotDoneYet& todo, const
 }
 
 // Writes the figure's PNG and prints its line; returns false when the figure is not usable.
-bool report(const SceneDescription& d, const FigureResult& r, const std::filesystem::path& file, const grader::LabCatalog& labs) {
+bool report(const SceneDescription& d, const FigureResult& r, const std::filesystem::path& file, const grader::LabCatalog& labs,
+            bool keepSamePixels = false) {
     switch (r.status) {
     case FigureResult::Status::NotDoneYet:
         // A stub of framework/stubs/ stands for a lab whose code does not compile (fresh_build.cpp):
@@ -62,7 +68,7 @@ bool report(const SceneDescription& d, const FigureResult& r, const std::filesys
     case FigureResult::Status::Rendered: break;
     }
     std::uint64_t nonFinite = 0;
-    if (!writeFigure(d.id, file, quantize(*r.image, &nonFinite))) return false;
+    if (!writeFigure(d.id, file, quantize(*r.image, &nonFinite), keepSamePixels)) return false;
     std::string speed;
     if (!isRegisteredImage(d.shading) && r.stats.seconds > 0.)
         speed = tr("figures.speed", {{"mrays", formatFixed(double(r.stats.primaryRays) / r.stats.seconds * 1e-6, 1)}});
@@ -79,10 +85,22 @@ bool report(const SceneDescription& d, const FigureResult& r, const std::filesys
 struct FiguresOptions {
     std::filesystem::path scenes;  // folder of figure scene files
     std::filesystem::path out;     // where DIR/<id>.png go
+    bool handouts = false;         // instead, each figure beside its lab's handout: labs/<lab>/figures/<id>.png
     std::vector<std::string> only; // figure ids; empty: all
     int lab = 0;                   // only this lab's figures; 0: all
     int threads = 0;
 };
+
+// Where figure `id` is written: DIR/<id>.png, or with --handouts beside its lab's handout (the
+// handouts show labs/<lab>/figures/<id>.png: a lab's pictures live in its own folder).
+std::filesystem::path figureFile(const FiguresOptions& o, const std::string& id, const grader::LabCatalog& labs) {
+    if (!o.handouts) return o.out / (id + ".png");
+    const grader::LabDescription* lab = labs.labOfFigure(id);
+    if (lab == nullptr) throw std::invalid_argument(tr("figures.no_handout", {{"id", id}}));
+    const std::filesystem::path folder = labsFolder() / lab->id / "figures";
+    std::filesystem::create_directories(folder);
+    return folder / (id + ".png");
+}
 
 // Renders figures, a line each. 1 if a figure failed or has NaN pixels, else 0: a figure waiting
 // for a lab not done yet is reported, not a failure.
@@ -102,14 +120,15 @@ int runFigures(const FiguresOptions& o) {
         return !wanted || (o.lab != 0 && labs.labNumberOfFigure(d.id) != o.lab);
     });
 
-    std::printf("%s\n", tr("figures.header", {{"impl", tr(std::string("figures.impl_") + build::kImpl)}, {"origins", build::kLabOrigins}, {"folder", o.out.string()}})
+    const std::string folder = o.handouts ? (labsFolder() / "<lab>" / "figures").string() : o.out.string();
+    std::printf("%s\n", tr("figures.header", {{"impl", tr(std::string("figures.impl_") + build::kImpl)}, {"origins", build::kLabOrigins}, {"folder", folder}})
                              .c_str());
     int failed = 0, todo = 0;
     const RenderOptions renderOptions{o.threads, stderrIsInteractive()};
     std::vector<ContactSheetItem> sheet;
     for (const SceneDescription& d : scenes) {
         const FigureResult r = renderFigure(d, renderOptions, labs);
-        const bool usable = report(d, r, o.out / (d.id + ".png"), labs);
+        const bool usable = report(d, r, figureFile(o, d.id, labs), labs, o.handouts);
         const bool waiting = usable && r.status == FigureResult::Status::NotDoneYet;
         if (!usable) ++failed;
         if (waiting) ++todo;
@@ -118,7 +137,7 @@ int runFigures(const FiguresOptions& o) {
     }
     // Every figure at a glance, when all of them were asked for (`raylab figures` without --only).
     bool sheetWritten = true;
-    if (o.lab == 0 && o.only.empty() && !sheet.empty()) {
+    if (o.lab == 0 && o.only.empty() && !o.handouts && !sheet.empty()) {
         sheetWritten = writeFigure("contact_sheet", o.out / "contact_sheet.png", makeContactSheet(sheet));
         if (sheetWritten)
             std::printf("  %-24s %s\n", "contact_sheet",
@@ -163,6 +182,9 @@ void addFigureCommands(CLI::App& app, Context& context) {
         options->scenes = context.scenes;
         options->threads = context.threads;
         if (options->out.empty()) options->out = std::filesystem::path("out") / context.impl;
+        // The handouts show the reference's pictures: a student's build never writes there.
+        if (options->handouts && std::string_view(build::kImpl) != "reference")
+            throw std::invalid_argument(tr("figures.handouts_reference"));
         context.exitStatus = runFigures(*options);
     };
 
@@ -170,6 +192,7 @@ void addFigureCommands(CLI::App& app, Context& context) {
     context.addImplOption(figures);
     figures->add_option("--out", options->out, tr("cli.figures_out"));
     figures->add_option("--only", options->only, tr("cli.figures_only"));
+    figures->add_flag("--handouts", options->handouts, tr("cli.figures_handouts"))->excludes("--out");
     context.addRenderOptions(figures);
     figures->callback(renderFigures);
 

@@ -108,6 +108,10 @@ std::vector<BrokenLink> brokenLinks(const fs::path& root, const fs::path& markdo
         if (std::regex_search(text, m, definition)) targets.push_back(m[1]);
         for (const std::string& target : targets) {
             if (isExternal(target)) continue;
+            // A template's link (tests/labs/toy: a configure_file placeholder such as @N@) leads
+            // somewhere only in the copy it is configured into, whose own docs test checks it.
+            static const std::regex placeholder("@[A-Za-z_]+@");
+            if (std::regex_search(target, placeholder)) continue;
             ++g_linksChecked;
             std::string path = target.substr(0, target.find_first_of("#?"));
             path = percentDecoded(path);

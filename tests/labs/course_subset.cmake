@@ -246,28 +246,21 @@ function(step_distribute)
   endif()
   file(READ ${students}/course.toml course)
   expect("${course}" "labs = [${kept_list}]" "the students' tree has the course's list")
-  # docs/figures/ holds the pictures of the course's labs, each a row of its table, and nothing of the
-  # labs left out (a figure is its lab's scenes/<id>.toml).
-  file(READ ${students}/docs/figures/README.md figures_table)
+  # The course's labs keep their figures in their folders (labs/<lab>/figures/); a lab left out has
+  # no folder, so none of its figures ships (a figure is its lab's scenes/<id>.toml).
   foreach(n IN LISTS numbers)
     list(FIND kept ${n} in_course)
     file(GLOB scenes ${SOURCE}/labs/${folder_${n}}/scenes/*.toml)
     foreach(scene IN LISTS scenes)
       get_filename_component(id ${scene} NAME_WE)
-      string(FIND "${figures_table}" "(${id}.png)" row)
-      if(NOT in_course EQUAL -1 AND (NOT EXISTS ${students}/docs/figures/${id}.png OR row EQUAL -1))
-        message(FATAL_ERROR "course subset: docs/figures/ of the students' tree lacks ${id}, of lab ${n}")
-      elseif(in_course EQUAL -1 AND (EXISTS ${students}/docs/figures/${id}.png OR NOT row EQUAL -1))
-        message(FATAL_ERROR "course subset: docs/figures/ of the students' tree shows ${id}, of lab ${n} (left out)")
+      file(GLOB_RECURSE shipped ${students}/labs/${id}.png ${students}/docs/${id}.png)
+      if(NOT in_course EQUAL -1 AND NOT EXISTS ${students}/labs/${folder_${n}}/figures/${id}.png)
+        message(FATAL_ERROR "course subset: the students' tree lacks labs/${folder_${n}}/figures/${id}.png, of lab ${n}")
+      elseif(in_course EQUAL -1 AND shipped)
+        message(FATAL_ERROR "course subset: the students' tree ships ${shipped}, a figure of lab ${n} (left out)")
       endif()
     endforeach()
   endforeach()
-  # Its contact sheet is the course's, made anew: not the source's, which shows every lab's figures.
-  file(SHA256 ${tree}/docs/figures/contact_sheet.png every_lab)
-  file(SHA256 ${students}/docs/figures/contact_sheet.png course_sheet)
-  if(course_sheet STREQUAL every_lab)
-    message(FATAL_ERROR "course subset: the students' contact sheet is the source's, with the labs left out")
-  endif()
   # The handouts link to no lab left out ("next: lab 4" is text there): a link into its folder would
   # lead nowhere. The source's handouts do link forward, so this holds only if distribute unlinks them.
   file(GLOB_RECURSE handouts ${students}/labs/*.md)

@@ -5,10 +5,10 @@
 # file), its completed twin in solutions/ and its grading folder framework/grader/labs/labN_toy/ (a
 # probe, three checks, its shading, its kind's [[toy_square]] table, its English and French
 # messages), and N to course.toml; then builds, renders, makes lab N's references and the
-# handouts' figures with its row in docs/figures/README.md (docs/instructors.md, "Adding a lab"),
-# runs the copy's own lab tests, grades and reports it as an instructor and a student would, and
-# lists what changed under framework/: only the new lab's grading folder (the references
-# `raylab references` made are in it).
+# handouts' figures (docs/instructors.md, "Adding a lab"), checks that nothing changed outside the
+# lab's three folders and course.toml, runs the copy's own lab tests, grades and reports it as an
+# instructor and a student would, and lists what changed under framework/ by then: only the new lab's
+# grading folder (the references `raylab references` made are in it).
 #
 # The copy's tests: `ctest -L lab`, the command docs/instructors.md gives to check a new lab before
 # it is committed (the lab descriptions, figure steps, scene files, both message catalogues, the
@@ -22,7 +22,7 @@
 #         [-DCCACHE=<ccache>] -P tests/labs/toy_lab.cmake
 # It runs in steps, one ctest test each (tests/CMakeLists.txt), each in the tree the steps before it
 # left (ctest prints nothing while a test runs; with a warm compiler cache each step lasts seconds): copy, then
-# build-framework, build-grader, build-cli, build-programs, render, lab-tests, grade, report,
+# build-framework, build-grader, build-cli, build-programs, render, tree-unchanged, lab-tests, grade, report,
 # written-after-build, does-not-compile, lab-rebuilds, hints, framework-unchanged.
 # Every program runs from an argument vector (execute_process), never through a shell.
 
@@ -94,40 +94,15 @@ function(step_build_programs)
   endforeach()
 endfunction()
 
-# Lab ${N}'s row in docs/figures/README.md, after the table's last row, made from its lab.toml (its
-# handout number and English caption), as an instructor adds it.
-function(add_figure_row)
-  file(READ ${tree}/labs/${id}/lab.toml description)
-  if(NOT description MATCHES "\nhandout = \"([^\"]*)\"\ncaption = { en = \"([^\"]*)\"")
-    message(FATAL_ERROR "toy lab: no handout and English caption in labs/${id}/lab.toml")
-  endif()
-  set(row "| [`${id}`](${id}.png) | ${N} | Figure ${CMAKE_MATCH_1} | ${CMAKE_MATCH_2} |")
-  file(READ ${tree}/docs/figures/README.md table)
-  string(FIND "${table}" "\n| [`" last REVERSE)
-  if(last EQUAL -1)
-    message(FATAL_ERROR "toy lab: docs/figures/README.md has no figure row")
-  endif()
-  math(EXPR last "${last} + 1")
-  string(SUBSTRING "${table}" ${last} -1 rest)
-  string(FIND "${rest}" "\n" end)
-  if(end EQUAL -1)
-    string(LENGTH "${rest}" end)
-  endif()
-  math(EXPR end "${last} + ${end}")
-  string(SUBSTRING "${table}" 0 ${end} before)
-  string(SUBSTRING "${table}" ${end} -1 after)
-  file(WRITE ${tree}/docs/figures/README.md "${before}\n${row}${after}")
-endfunction()
-
-# 3. Rendered by the reference build into the handouts' figures, docs/figures/ (with lab ${N}'s row in
-# its README, from its lab.toml), and lab ${N}'s references made from it (its scene alone).
+# 3. Rendered by the reference build into the handouts' figures, each in its lab's figures/ (the
+# other labs' pictures, whose pixels did not change, left as they are), and lab ${N}'s references
+# made from it (its scene alone).
 function(step_render)
-  run(output 0 ${bin}/raylab-reference figures --out ${tree}/docs/figures)
+  run(output 0 ${bin}/raylab-reference figures --handouts)
   expect("${output}" "${id}" "raylab-reference figures lists lab ${N}'s figure")
-  if(NOT EXISTS ${tree}/docs/figures/${id}.png)
-    message(FATAL_ERROR "toy lab: raylab-reference figures wrote no ${id}.png")
+  if(NOT EXISTS ${tree}/labs/${id}/figures/${id}.png)
+    message(FATAL_ERROR "toy lab: raylab-reference figures --handouts wrote no labs/${id}/figures/${id}.png")
   endif()
-  add_figure_row()
   file(MAKE_DIRECTORY ${WORK}/toy-scenes)
   file(COPY ${tree}/labs/${id}/scenes/${id}.toml DESTINATION ${WORK}/toy-scenes)
   run(output 0 ${bin}/raylab-reference references --scenes ${WORK}/toy-scenes)
@@ -269,36 +244,76 @@ function(step_hints)
   file(WRITE ${messages} "${hints}")
 endfunction()
 
-# 6. What adding the lab changed under framework/, listed: files added in lab ${N}'s grading folder and
-# the references `raylab references` made for it, nothing else added, changed or removed.
-function(step_framework_unchanged)
-  file(GLOB_RECURSE sources RELATIVE ${SOURCE}/framework ${SOURCE}/framework/*)
-  file(GLOB_RECURSE copied RELATIVE ${tree}/framework ${tree}/framework/*)
+# What differs between the copy and the source in the files under `prefix` ("" for the whole tree),
+# the copy's build folder aside, outside the files `allowed` matches: the variable `result` lists them
+# ("changed x", "added y", "removed z"), and `added` every file added. The source's files are those
+# the copy was made from (copy_tree: as git lists them).
+function(tree_changes prefix allowed result)
+  execute_process(COMMAND git -C ${SOURCE} ls-files --cached --others --exclude-standard -- ${prefix}
+                  RESULT_VARIABLE status OUTPUT_VARIABLE listed)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "toy lab: `git ls-files` in ${SOURCE} failed")
+  endif()
+  string(REPLACE "\n" ";" listed "${listed}")
+  set(sources "")
+  foreach(file IN LISTS listed)
+    if(file AND EXISTS ${SOURCE}/${file})
+      list(APPEND sources ${file})
+    endif()
+  endforeach()
+  file(GLOB_RECURSE copied LIST_DIRECTORIES false RELATIVE ${tree} ${tree}/${prefix}*)
+  list(FILTER copied EXCLUDE REGEX "^build/") # (quicker than asking git of its thousands of files)
   set(added ${copied})
   list(REMOVE_ITEM added ${sources})
-  set(removed ${sources})
-  list(REMOVE_ITEM removed ${copied})
-  set(changed "")
+  if(added) # what the build writes beside its folder (compile_commands.json), ignored by git as in the source
+    execute_process(COMMAND git -C ${SOURCE} check-ignore --no-index -- ${added} OUTPUT_VARIABLE ignored)
+    string(REPLACE "\n" ";" ignored "${ignored}")
+    list(REMOVE_ITEM added ${ignored} "")
+  endif()
+  set(found "")
   foreach(file IN LISTS sources)
-    if(EXISTS ${tree}/framework/${file})
-      file(SHA256 ${SOURCE}/framework/${file} a)
-      file(SHA256 ${tree}/framework/${file} b)
+    if(NOT EXISTS ${tree}/${file})
+      list(APPEND found "removed ${file}")
+    else()
+      file(SHA256 ${SOURCE}/${file} a)
+      file(SHA256 ${tree}/${file} b)
       if(NOT a STREQUAL b)
-        list(APPEND changed ${file})
+        list(APPEND found "changed ${file}")
       endif()
     endif()
   endforeach()
+  foreach(file IN LISTS added)
+    list(APPEND found "added ${file}")
+  endforeach()
+  list(FILTER found EXCLUDE REGEX "^[a-z]+ (${allowed})")
+  set(${result} ${found} PARENT_SCOPE)
+  set(added ${added} PARENT_SCOPE)
+endfunction()
+
+# 3b. Adding lab N, its figures and references made, is its three folders and its number in
+# course.toml (docs/instructors.md, "Adding a lab"): nothing else in the whole tree differs.
+function(step_tree_unchanged)
+  tree_changes("" "labs/${id}/|solutions/${id}/|framework/grader/labs/${id}/|course.toml$" outside)
+  if(outside)
+    string(REPLACE ";" "\n    " listed "${outside}")
+    message(FATAL_ERROR "toy lab: adding lab ${N} changed the tree outside its three folders and course.toml:\n    ${listed}")
+  endif()
+  message(STATUS "toy lab: adding lab ${N} changed its three folders and course.toml, nothing else")
+endfunction()
+
+# 6. What the whole test changed under framework/, listed: files added in lab ${N}'s grading folder and
+# the references `raylab references` made for it, nothing else added, changed or removed, once the
+# lab was graded, reported and its hints reworded (and put back) too.
+function(step_framework_unchanged)
+  tree_changes("framework/" "framework/grader/labs/${id}/" outside)
   string(REPLACE ";" "\n    " listed "${added}")
   message(STATUS "toy lab: framework/ files added by lab ${N}:\n    ${listed}")
-  set(outside ${added})
-  list(FILTER outside EXCLUDE REGEX "^grader/labs/${id}/")
-  if(changed OR removed OR outside)
-    message(FATAL_ERROR "toy lab: adding lab ${N} changed framework/ outside its grading folder: changed [${changed}], "
-                        "removed [${removed}], added [${outside}]")
+  if(outside)
+    string(REPLACE ";" "\n    " listed "${outside}")
+    message(FATAL_ERROR "toy lab: adding lab ${N} changed framework/ outside its grading folder:\n    ${listed}")
   endif()
   foreach(file checks.cpp probes.cpp probes.h messages.en.toml messages.fr.toml)
-    list(FIND added grader/labs/${id}/${file} at) # (a script has no IN_LIST without a policy)
-    if(at EQUAL -1)
+    if(NOT EXISTS ${tree}/framework/grader/labs/${id}/${file})
       message(FATAL_ERROR "toy lab: lab ${N}'s grading folder has no ${file}")
     endif()
   endforeach()
