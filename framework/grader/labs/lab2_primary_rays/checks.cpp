@@ -1,5 +1,6 @@
 // Lab 2's function checks: the viewport and the primary rays of known cameras and of cameras
 // drawn at grading time. Every camera is built without lookAt (lab 4): lab 2 is graded on its own.
+#include "answers.h"
 #include "grader/judge/checks/checks.h"
 #include "probes.h"
 
@@ -18,15 +19,13 @@ struct Camera {
     int width, height;
     double fovy;
     glm::dvec3 position{0.};
-    double viewportHeight() const { return 2. * std::tan(fovy / 2. * std::numbers::pi / 180.); }
-    double viewportWidth() const { return viewportHeight() * width / height; }
-    // The default frame: u = (-1, 0, 0), v = (0, 1, 0), looking along +z (docs/conventions.md).
-    glm::dvec3 topLeft() const { return position + glm::dvec3(viewportWidth() / 2., viewportHeight() / 2., 1.); }
+    double viewportHeight() const { return lab2::viewport(fovy, width, height).height; }
+    double viewportWidth() const { return lab2::viewport(fovy, width, height).width; }
+    glm::dvec3 topLeft() const { return lab2::topLeft(lab2::defaultFrame(position), lab2::viewport(fovy, width, height)); }
     glm::dvec3 direction(double sx, double sy) const { return direction(sx, sy, viewportHeight(), viewportWidth()); }
     // Through a viewport of this height and width in front of the camera (the student's own, say).
     static glm::dvec3 direction(double sx, double sy, double height, double width) {
-        return glm::normalize(glm::dvec3(width / 2., height / 2., 1.) + sx * width * glm::dvec3(-1., 0., 0.) -
-                              sy * height * glm::dvec3(0., 1., 0.));
+        return lab2::direction(lab2::defaultFrame(glm::dvec3(0.)), {height, width}, sx, sy);
     }
     protocol::Call viewport() const { return {probes::viewport, {double(width), double(height), fovy}}; }
     protocol::Call ray(double sx, double sy) const {

@@ -1,13 +1,9 @@
 // Lab 2's rows of the pixel inspector (grader/inspector/inspector_steps.h): the pixel centre's screen
 // point and the default camera's ray through it, asked of generateRay. The reference's camera is the
 // handout's default frame (u = (-1, 0, 0), v = (0, 1, 0), w = (0, 0, -1)), the screen at distance 1.
+#include "answers.h"
 #include "grader/inspector/inspector_steps.h"
 #include "probes.h"
-
-#include <glm/geometric.hpp>
-
-#include <cmath>
-#include <numbers>
 
 namespace raylab::grader::inspector {
 
@@ -17,11 +13,8 @@ void defaultCamera(PixelContext& pixel, Inspection& inspection) {
     const SceneDescription& d = pixel.scene;
     if (d.samples != 1 || d.camera.lookAt || pixel.ray) return; // lab 4's camera, lab 5's samples
     const double sx = (pixel.x + 0.5) / d.width, sy = (pixel.y + 0.5) / d.height;
-    const glm::dvec3 position(d.camera.position), u(-1., 0., 0.), v(0., 1., 0.), w(0., 0., -1.);
-    const double height = 2. * std::tan(double(d.camera.fovy) / 2. * std::numbers::pi / 180.);
-    const double width = height * d.width / d.height;
-    const glm::dvec3 topLeft = position - w + v * (height / 2.) - u * (width / 2.);
-    const ReferenceRay ray{position, glm::normalize(topLeft + sx * width * u - sy * height * v - position)};
+    const glm::dvec3 position(d.camera.position);
+    const ReferenceRay ray{position, lab2::direction(lab2::defaultFrame(position), lab2::viewport(d.camera.fovy, d.width, d.height), sx, sy)};
     std::vector<double> in{double(d.width), double(d.height), double(d.camera.fovy), position.x, position.y, position.z, sx, sy};
     const int c = inspection.call(probes::generateRay, in);
     inspection.add({.key = "lab2_screen", .lab = 2, .reference = Json::array({sx, sy})});

@@ -1,6 +1,7 @@
 // Lab 3's function checks: intersection distances of chosen rays (with the hard cases of
 // docs/numerics.md that are fair to ask), normals and shading; each also on cases drawn at
 // grading time.
+#include "answers.h"
 #include "grader/judge/checks/checks.h"
 #include "probes.h"
 
@@ -56,14 +57,8 @@ protocol::Call call(const Case& c) {
     return {probes::intersect, in};
 }
 
-// The two roots of the ray's line on the sphere, in double (nullopt when it misses the line).
-std::optional<std::pair<double, double>> roots(const Sphere& s, const Ray& r) {
-    const glm::dvec3 oc = r.origin - s.centre;
-    const double a = glm::dot(r.direction, r.direction), b = glm::dot(oc, r.direction);
-    const double disc = b * b - a * (glm::dot(oc, oc) - s.radius * s.radius);
-    if (disc < 0.) return std::nullopt;
-    return std::pair{(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a};
-}
+std::optional<lab3::Roots> roots(const Sphere& s, const Ray& r) { return lab3::roots(s.centre, s.radius, r.origin, r.direction); }
+std::optional<double> nearestHit(const Sphere& s, const Ray& r) { return lab3::nearestHit(s.centre, s.radius, r.origin, r.direction); }
 
 
 bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
@@ -81,8 +76,8 @@ bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
         // The hint names the cause the outputs show: a far root where the near one was due is the root
         // choice, whatever the check is about.
         const auto line = roots(c.sphere, c.ray);
-        const bool farRoot = line && std::abs(c.t - line->second) > c.tolerance &&
-                             std::abs(t - line->second) <= c.tolerance && line->first >= c.tMin;
+        const bool farRoot = line && std::abs(c.t - line->far) > c.tolerance &&
+                             std::abs(t - line->far) <= c.tolerance && line->near >= c.tMin;
         return judge.expectNear(c.what + ", t", t, c.t, c.tolerance, farRoot ? tr("hint.lab3.far_root") : c.hint) &&
                judge.expectNear(c.what + ", hit.position", position, c.ray.at(c.t), c.tolerance * 2.,
                                 tr("hint.lab3.position"));
@@ -140,18 +135,6 @@ std::string describe(const Sphere& s) {
     return tr("what.lab3.sphere", {{"centre", show(s.centre)}, {"radius", show(s.radius)}});
 }
 
-// The nearest t >= 0 of the ray on the sphere, in double; none on a miss.
-std::optional<double> nearestHit(const Sphere& s, const Ray& r) {
-    const glm::dvec3 oc = r.origin - s.centre;
-    const double a = glm::dot(r.direction, r.direction), b = glm::dot(oc, r.direction);
-    const double disc = b * b - a * (glm::dot(oc, oc) - s.radius * s.radius);
-    if (disc < 0.) return std::nullopt;
-    const double near = (-b - std::sqrt(disc)) / a, far = (-b + std::sqrt(disc)) / a;
-    if (near >= 0.) return near;
-    if (far >= 0.) return far;
-    return std::nullopt;
-}
-
 // A ray from outside a drawn sphere towards a point of its disc at `offset` radii from its centre line.
 Ray rayTowards(CaseRandom& random, const Sphere& s, double offset) {
     const glm::dvec3 axis = random.unitVector();
@@ -174,7 +157,9 @@ protocol::Call liCall(int shading, const Sphere& s, const glm::dvec3& colour, co
     return {probes::li, in};
 }
 
-enum Shading { kFlat = 0, kPlaceholder = 1, kCosine = 2 };
+using lab3::kCosine;
+using lab3::kFlat;
+using lab3::kPlaceholder;
 
 const glm::dvec3 kBlue{0., 0., 1.}, kGrey{0.5, 0.5, 0.5};
 
@@ -192,12 +177,7 @@ struct LiCase {
 glm::dvec3 expectedLi(const LiCase& c) {
     const std::optional<double> t = nearestHit(c.sphere, c.ray);
     if (!t) return c.background;
-    const glm::dvec3 d = glm::normalize(c.ray.direction);
-    if (c.shading == kFlat) return c.colour;
-    glm::dvec3 n =
-        c.shading == kCosine ? (c.ray.at(*t) - c.sphere.centre) / c.sphere.radius : glm::normalize(glm::dvec3(1.));
-    if (c.shading == kPlaceholder && glm::dot(d, n) > 0.) n = -n;
-    return c.colour * std::max(-glm::dot(d, n), 0.);
+    return lab3::shade(c.shading, c.colour, glm::normalize(c.ray.direction), (c.ray.at(*t) - c.sphere.centre) / c.sphere.radius);
 }
 
 // The classic mistakes of cosine shading, each with the colour it gives for the case: a gamma
@@ -223,12 +203,7 @@ protocol::Call normalCall(const Sphere& s, const glm::dvec3& point) {
 // with the true normal there.
 glm::dvec3 liForHit(const LiCase& c, bool found, double t) {
     if (!found) return c.background;
-    if (c.shading == kFlat) return c.colour;
-    const glm::dvec3 d = glm::normalize(c.ray.direction);
-    glm::dvec3 n =
-        c.shading == kCosine ? glm::normalize(c.ray.at(t) - c.sphere.centre) : glm::normalize(glm::dvec3(1.));
-    if (c.shading == kPlaceholder && glm::dot(d, n) > 0.) n = -n;
-    return c.colour * std::max(-glm::dot(d, n), 0.);
+    return lab3::shade(c.shading, c.colour, glm::normalize(c.ray.direction), glm::normalize(c.ray.at(t) - c.sphere.centre));
 }
 
 // Li calls the student's intersect, and cosine shading their computeNormal: the check also asks

@@ -1,6 +1,7 @@
 // Lab 4's function checks: the lookAt basis of the handout's four cameras, of cameras whose `up`
 // is not perpendicular to the view direction, and of cameras drawn at grading time; the viewport
 // of a camera rebuilt after construction; and the cameras that cannot be built.
+#include "answers.h"
 #include "grader/judge/checks/checks.h"
 #include "probes.h"
 
@@ -10,7 +11,6 @@
 
 #include <cmath>
 #include <functional>
-#include <numbers>
 
 namespace raylab::grader {
 
@@ -22,12 +22,12 @@ struct LookAt {
     int width = 600, height = 400;
     double fovy = 60.;
 
-    glm::dvec3 w() const { return glm::normalize(position - target); }
-    glm::dvec3 u() const { return glm::normalize(glm::cross(up, w())); }
-    glm::dvec3 v() const { return glm::cross(w(), u()); }
-    double viewportHeight() const { return 2. * std::tan(fovy / 2. * std::numbers::pi / 180.); }
-    double viewportWidth() const { return viewportHeight() * width / height; }
-    glm::dvec3 topLeft() const { return position - w() + v() * (viewportHeight() / 2.) - u() * (viewportWidth() / 2.); }
+    glm::dvec3 w() const { return lab4::lookAt(position, target, up).w; }
+    glm::dvec3 u() const { return lab4::lookAt(position, target, up).u; }
+    glm::dvec3 v() const { return lab4::lookAt(position, target, up).v; }
+    double viewportHeight() const { return lab4::viewport(fovy, width, height).height; }
+    double viewportWidth() const { return lab4::viewport(fovy, width, height).width; }
+    glm::dvec3 topLeft() const { return lab4::topLeft(lab4::lookAt(position, target, up), lab4::viewport(fovy, width, height)); }
     protocol::Call call() const {
         std::vector<double> in{double(width), double(height)};
         for (const glm::dvec3& p : {position, target, up})

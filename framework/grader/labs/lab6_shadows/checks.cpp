@@ -2,6 +2,7 @@
 // must not shadow, an object beyond the light) and the shading from a point light, with and without
 // the test. Every check holds points that must be lit and points that must be in shadow, so that an
 // answer that never changes earns none of them.
+#include "answers.h"
 #include "grader/judge/checks/checks.h"
 #include "probes.h"
 
@@ -31,22 +32,13 @@ struct Ray {
 };
 
 // The t of the ray's nearest crossing of each object with t > tMin, in double.
+// (A radius of 0 is no sphere, a normal of 0 no plane.)
 std::optional<double> crossing(const Sphere& s, const Ray& r, double tMin) {
     if (s.radius == 0.) return std::nullopt;
-    const glm::dvec3 oc = r.origin - s.centre;
-    const double a = glm::dot(r.direction, r.direction), b = glm::dot(oc, r.direction);
-    const double disc = b * b - a * (glm::dot(oc, oc) - s.radius * s.radius);
-    if (disc < 0.) return std::nullopt;
-    for (const double t : {(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a})
-        if (t > tMin) return t;
-    return std::nullopt;
+    return lab6::sphereCrossing(s.centre, s.radius, r.origin, r.direction, tMin);
 }
 std::optional<double> crossing(const Plane& p, const Ray& r, double tMin) {
-    const double along = glm::dot(p.normal, r.direction);
-    if (along == 0.) return std::nullopt; // parallel, or no plane
-    const double t = glm::dot(p.normal, p.point - r.origin) / along;
-    if (t > tMin) return t;
-    return std::nullopt;
+    return lab6::planeCrossing(p.point, p.normal, r.origin, r.direction, tMin);
 }
 
 struct Light {

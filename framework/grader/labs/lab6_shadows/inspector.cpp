@@ -7,6 +7,7 @@
 // inShadow finds on the way are), and Li asked with the hit object alone, the light alone, no ambient
 // and no shadow test (its Lambert term), both on the reference's hit. The shadow ray itself is the
 // reference's: no function of the lab hands it back.
+#include "answers.h"
 #include "grader/inspector/inspector_steps.h"
 #include "probes.h"
 
@@ -37,19 +38,9 @@ struct Object {
     std::string name() const { return tr(sphere ? "watch.lab6.sphere" : "watch.lab6.plane", {{"k", std::to_string(index)}}); }
     // The t in (tMin, tMax) where the ray meets it first; nullopt when none.
     std::optional<double> hit(const ReferenceRay& r, double tMin, double tMax) const {
-        if (sphere) {
-            const glm::dvec3 oc = r.origin - centre;
-            const double a = glm::dot(r.direction, r.direction), b = glm::dot(oc, r.direction);
-            const double disc = b * b - a * (glm::dot(oc, oc) - radius * radius);
-            if (disc < 0.) return std::nullopt;
-            for (const double t : {(-b - std::sqrt(disc)) / a, (-b + std::sqrt(disc)) / a})
-                if (t > tMin && t < tMax) return t;
-            return std::nullopt;
-        }
-        const double facing = glm::dot(r.direction, normal);
-        if (facing == 0.) return std::nullopt;
-        const double t = glm::dot(centre - r.origin, normal) / facing;
-        return t > tMin && t < tMax ? std::optional<double>(t) : std::nullopt;
+        const std::optional<double> t = sphere ? lab6::sphereCrossing(centre, radius, r.origin, r.direction, tMin)
+                                               : lab6::planeCrossing(centre, normal, r.origin, r.direction, tMin);
+        return t && *t < tMax ? t : std::nullopt;
     }
     // The probes' scene of this object alone: sphere (c, r[, colour]), plane (point, normal[, colour]).
     void append(std::vector<double>& in, bool coloured) const {

@@ -1,7 +1,7 @@
 // Lab 7's function checks: where a ray crosses a triangle (inside, outside but within the
 // parallelogram of its two edges, parallel to it, before tMin or past tMax), on fixed triangles and on
 // triangles drawn at grading time, and its normal.
-#include "crossing.h"
+#include "answers.h"
 #include "grader/judge/checks/checks.h"
 #include "probes.h"
 
@@ -130,7 +130,7 @@ std::string describe(const Triangle& t) {
 // receives. A grazing ray's t is ill-conditioned in float, whoever computes it: the tolerance grows
 // as the ray's angle with the plane shrinks below 11.5 degrees.
 Case drawnCase(CaseRandom& random, const std::string& what, const Triangle& tri, double u, double v, const std::string& hint) {
-    const glm::dvec3 n = glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
+    const glm::dvec3 n = lab7::normal(tri.a, tri.b, tri.c);
     Ray r{};
     double sine = -1.;
     for (int draw = 0; draw < 16 && sine < 0.2; ++draw) {
@@ -220,7 +220,7 @@ void addNormalCheck(LabChecks& checks, CaseRandom& random) {
     checks.add({"triangle_normal", calls, [triangles, points](const auto& out, Judge& judge) {
                     for (std::size_t k = 0; k < triangles.size(); ++k) {
                         const Triangle& t = triangles[k];
-                        const glm::dvec3 area = glm::cross(t.b - t.a, t.c - t.a), n = glm::normalize(area);
+                        const glm::dvec3 area = glm::cross(t.b - t.a, t.c - t.a), n = lab7::normal(t.a, t.b, t.c);
                         judge.expectNear(tr("what.lab7.normal_of", {{"triangle", describe(t)}}), Outputs(out[k]).vec3(), n, 1e-5,
                                          tr("hint.lab7.normal"),
                                          {{-n, tr("hint.lab7.normal_flipped")}, {area, tr("hint.lab7.normal_unit")}});

@@ -2,7 +2,7 @@
 // triangles: whether the reference's ray crosses each triangle, then the nearest one crossed, where
 // (t, the hit point) and its normal, each asked of the student's functions on that triangle and the
 // reference's ray (the normal at the reference's hit).
-#include "crossing.h"
+#include "answers.h"
 #include "grader/inspector/inspector_steps.h"
 #include "probes.h"
 
@@ -70,7 +70,7 @@ void triangles(PixelContext& pixel, Inspection& inspection) {
     std::vector<double> normalInputs = triangleInputs(triangle);
     append(normalInputs, position);
     inspection.add({.key = "lab7_normal", .function = "Triangle::computeNormal", .lab = 7,
-                    .reference = vec(glm::normalize(glm::cross(b - a, c - a))),
+                    .reference = vec(lab7::normal(a, b, c)),
                     .student = values(inspection.call(probes::triangleNormal, normalInputs), 0, 3), .takes = {"ray", "hit"}});
 }
 

@@ -1,6 +1,8 @@
 #pragma once
-// Where a ray's line crosses a triangle's plane, in double, as the grader reasons about it (checks.cpp,
-// inspector.cpp): Möller and Trumbore's t, u, v.
+// Lab 7's answers in double, as its checks (checks.cpp) and its rows of the pixel inspector
+// (inspector.cpp) reason about them: where a ray's line crosses a triangle's plane (Möller and
+// Trumbore's t, u, v) and the triangle's normal. Written once for the grader; the reference's own
+// code is solutions/lab7_triangles/.
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -23,5 +25,8 @@ inline std::optional<Crossing> crossing(const glm::dvec3& a, const glm::dvec3& b
     if (det == 0.) return std::nullopt;
     return Crossing{glm::dot(e2, q) / det, glm::dot(s, p) / det, glm::dot(direction, q) / det};
 }
+
+// The unit normal by the right-hand rule from a to b to c.
+inline glm::dvec3 normal(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) { return glm::normalize(glm::cross(b - a, c - a)); }
 
 } // namespace raylab::grader::lab7
