@@ -178,13 +178,14 @@ bool codeIsFresh(Context& context) {
 void addFigureCommands(CLI::App& app, Context& context) {
     auto options = std::make_shared<FiguresOptions>();
     auto renderFigures = [&context, options] {
-        if (context.ranInOtherImpl() || !codeIsFresh(context)) return;
-        options->scenes = context.scenes;
-        options->threads = context.threads;
-        if (options->out.empty()) options->out = std::filesystem::path("out") / context.impl;
+        if (context.ranInOtherImpl()) return;
         // The handouts show the reference's pictures: a student's build never writes there.
         if (options->handouts && std::string_view(build::kImpl) != "reference")
             throw std::invalid_argument(tr("figures.handouts_reference"));
+        if (!codeIsFresh(context)) return;
+        options->scenes = context.scenes;
+        options->threads = context.threads;
+        if (options->out.empty()) options->out = std::filesystem::path("out") / context.impl;
         context.exitStatus = runFigures(*options);
     };
 

@@ -115,6 +115,19 @@ TEST_CASE("figures into a folder that cannot exist: each figure failed with the 
     CHECK_MESSAGE(has(f, "1 figure: 0 rendered, 0 waiting for a lab not done yet, 1 failed"), f.output);
 }
 
+TEST_CASE("figures --handouts writes the handouts' pictures from the reference build only") {
+    const fs::path picture = sourceDir() / "labs/lab1_first_image/figures/lab1_gradient.png";
+    const auto before = fs::last_write_time(picture);
+    const Finished student = run("raylab", {"figures", "--handouts", "--only", "lab1_gradient"});
+    CHECK(student.status != 0);
+    CHECK(student.status < 128);
+    CHECK_MESSAGE(has(student, "--handouts writes the handouts' pictures, which are the reference's"), student.output);
+    const Finished both = run("raylab-reference", {"figures", "--handouts", "--out", "somewhere"});
+    CHECK(both.status != 0);
+    CHECK_MESSAGE(has(both, "--out excludes --handouts"), both.output);
+    CHECK(fs::last_write_time(picture) == before); // neither wrote anything
+}
+
 TEST_CASE("a write cut short (a nearly full disk) fails with the file named and leaves the old file whole") {
     const fs::path dir = freshFolder("raylab-write-cut-short");
     const fs::path png = dir / "gradient.png";
