@@ -146,9 +146,9 @@ void addStubs(const fs::path& source, const grader::LabCatalog& course, std::vec
 }
 
 // A Markdown file of the students' tree without what leads to a lab the course leaves out: a table
-// row that links there is dropped (a row of the README's table of labs), another link
-// is made its text alone (a handout's "next: lab 4" in a course of labs 1 to 3) and a picture from
-// there is dropped. Links elsewhere, web addresses and anchors are kept.
+// row that links there is dropped, another link is made its text alone (a handout's "next: lab 4" in
+// a course of labs 1 to 3) and a picture from there is dropped. Links elsewhere, web addresses and
+// anchors are kept.
 std::string withoutLinksToAbsentLabs(const std::string& text, const fs::path& relative, const std::set<std::string>& labFolders) {
     static const std::regex link(R"((!?)\[([^\]]{0,400})\]\(([^)\s#]*)([^)\s]*)\))"); // bounded: handoutPictures
     const auto intoAbsentLab = [&](const std::string& target) {
