@@ -35,11 +35,7 @@ Texture renderWithoutRays(const SceneDescription& d, RenderStats& stats) {
 SceneRender::SceneRender(const SceneDescription& d, const RenderOptions& options)
     : m_space(renderSpaceOf(d)), m_scene(m_space.toRender(d.scene)), m_camera(makeCamera(d, m_space)),
       m_integrator(makeRegisteredIntegrator(d.shading, d.shadingParameters)), m_renderer(m_scene, m_camera, *m_integrator) {
-    m_renderer.setThreads(options.threads);
-    m_renderer.setProgress(options.progress);
-    m_renderer.setSampler(d.sampler);
-    m_renderer.setSeed(d.seed);
-    m_renderer.setAdaptive(d.adaptive);
+    m_renderer.settings() = RenderSettings{d.sampler, d.seed, d.adaptive, options.threads, options.progress};
     // Lab 5's code is only asked for when the scene wants more than one sample.
     if (d.samples != 1) m_renderer.setNbPixelSamples(d.samples);
 }

@@ -108,8 +108,8 @@ RenderPasses::RenderPasses(Renderer& renderer)
 
 Texture RenderPasses::render(Renderer& renderer) {
     RenderPasses passes(renderer);
-    if (renderer.m_sampler == SamplerKind::Adaptive) passes.renderAdaptive();
-    else if (renderer.m_nbPixelSamples == 1 && renderer.m_sampler == SamplerKind::Center) passes.renderCentres();
+    if (renderer.m_settings.sampler == SamplerKind::Adaptive) passes.renderAdaptive();
+    else if (renderer.m_nbPixelSamples == 1 && renderer.m_settings.sampler == SamplerKind::Center) passes.renderCentres();
     else passes.renderSampled();
     return Texture(passes.m_width, passes.m_height, std::move(passes.m_pixels));
 }
@@ -151,7 +151,7 @@ Renderer RenderPasses::passRenderer(const Integrator& integrator, int nbSamples)
 
 std::vector<std::uint8_t> RenderPasses::pixelsToRefine(const std::vector<float>& spread) const {
     const int width = m_width, height = m_height;
-    const AdaptiveSettings& adaptive = m_renderer.m_adaptive;
+    const AdaptiveSettings& adaptive = m_renderer.m_settings.adaptive;
     std::vector<std::uint8_t> refine(spread.size(), 0);
     const int reach = adaptive.widen ? 1 : 0;
     for (int j = 0; j < height; ++j)
@@ -167,24 +167,27 @@ std::vector<std::uint8_t> RenderPasses::pixelsToRefine(const std::vector<float>&
 
 void RenderPasses::renderCentres() {
     const Renderer& r = m_renderer;
+    const RenderSettings& settings = r.m_settings;
     const int width = m_width;
     Color* const pixels = m_pixels.data();
-    m_renderer.m_stats.shadowRays = forEachTile(makeTiles(width, m_height), r.m_threads, r.m_progress, [&](const Tile& tile, unsigned) {
+    const TileCounts counts = forEachTile(makeTiles(width, m_height), settings.threads, settings.progress, [&](const Tile& tile, unsigned) {
         return forEachPixel(r, tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
             pixels[std::size_t(j) * width + i] = renderPixelCentre(renderer, i, j);
             return std::uint64_t(0);
         });
-    }).shadowRays;
+    });
+    m_renderer.m_stats.shadowRays = counts.shadowRays;
     m_renderer.m_stats.primaryRays = pixelCount(width, m_height);
 }
 
 void RenderPasses::renderSampled() {
     const Renderer& r = m_renderer;
+    const RenderSettings& settings = r.m_settings;
     const int width = m_width;
     Color* const pixels = m_pixels.data();
-    const TileCounts counts = forEachTile(makeTiles(width, m_height), r.m_threads, r.m_progress, [&](const Tile& tile, unsigned) {
+    const TileCounts counts = forEachTile(makeTiles(width, m_height), settings.threads, settings.progress, [&](const Tile& tile, unsigned) {
         return forEachPixel(r, tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
-            PixelSampler sampler(r.m_sampler, r.m_nbPixelSamples, r.m_seed, i, j, width);
+            PixelSampler sampler(settings.sampler, r.m_nbPixelSamples, settings.seed, i, j, width);
             pixels[std::size_t(j) * width + i] = renderer.renderPixel(i, j, sampler);
             return sampler.randomNumbersDrawn();
         });
@@ -197,23 +200,24 @@ void RenderPasses::renderSampled() {
 
 void RenderPasses::renderAdaptive() {
     Renderer& r = m_renderer;
+    const RenderSettings& settings = r.m_settings;
     const int width = m_width;
     Color* const pixels = m_pixels.data();
     const std::vector<Tile> tiles = makeTiles(width, m_height);
-    const SamplerKind kind = r.m_adaptive.within;
-    const int nbSamples = r.m_nbPixelSamples, maxSamples = r.m_adaptive.maxSamples;
+    const SamplerKind kind = settings.adaptive.within;
+    const int nbSamples = r.m_nbPixelSamples, maxSamples = settings.adaptive.maxSamples;
 
     // First pass: each worker sees the integrator through a probe of its own.
-    const unsigned workers = workerCount(r.m_threads, tiles.size());
+    const unsigned workers = workerCount(settings.threads, tiles.size());
     std::vector<SpreadProbe> probes(workers, SpreadProbe(r.m_integrator));
     std::vector<Renderer> probed;
     for (const SpreadProbe& probe : probes) probed.push_back(passRenderer(probe, nbSamples));
     std::vector<float> spread(pixelCount(width, m_height));
-    const TileCounts first = forEachTile(tiles, r.m_threads, r.m_progress, [&](const Tile& tile, unsigned worker) {
+    const TileCounts first = forEachTile(tiles, settings.threads, settings.progress, [&](const Tile& tile, unsigned worker) {
         std::uint64_t drawn = 0;
         for (int j = tile.y0; j < tile.y1; ++j)
             for (int i = tile.x0; i < tile.x1; ++i) {
-                PixelSampler sampler(kind, nbSamples, r.m_seed, i, j, width);
+                PixelSampler sampler(kind, nbSamples, settings.seed, i, j, width);
                 probes[worker].reset();
                 pixels[std::size_t(j) * width + i] = probed[worker].renderPixel(i, j, sampler);
                 spread[std::size_t(j) * width + i] = probes[worker].spread();
@@ -231,10 +235,10 @@ void RenderPasses::renderAdaptive() {
     const std::vector<std::uint8_t>& refined = r.m_refined;
     stats.refinedPixels = std::uint64_t(std::count(refined.begin(), refined.end(), std::uint8_t(1)));
     const Renderer more = passRenderer(r.m_integrator, maxSamples);
-    const TileCounts second = forEachTile(tiles, r.m_threads, r.m_progress, [&](const Tile& tile, unsigned) {
+    const TileCounts second = forEachTile(tiles, settings.threads, settings.progress, [&](const Tile& tile, unsigned) {
         return forEachPixel(more, tile.x0, tile.y0, tile.x1, tile.y1, [&](const Renderer& renderer, int i, int j) {
             if (!refined[std::size_t(j) * width + i]) return std::uint64_t(0);
-            PixelSampler sampler(kind, maxSamples, secondPassSeed(r.m_seed), i, j, width);
+            PixelSampler sampler(kind, maxSamples, secondPassSeed(settings.seed), i, j, width);
             pixels[std::size_t(j) * width + i] = renderer.renderPixel(i, j, sampler);
             return sampler.randomNumbersDrawn();
         });

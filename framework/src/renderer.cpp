@@ -12,22 +12,24 @@ namespace raylab {
 Renderer::Renderer(const Scene& scene, const BaseCamera& camera, const Integrator& integrator)
     : m_scene(scene), m_camera(camera), m_integrator(integrator) {}
 
-void Renderer::setThreads(int threads) {
-    if (threads < 0) throw std::invalid_argument("Renderer: threads = " + std::to_string(threads) + " is negative");
-    m_threads = threads;
+namespace {
+
+// A setting with no meaning is refused before any pixel is rendered.
+void checkSettings(const RenderSettings& s) {
+    if (s.threads < 0) throw std::invalid_argument("Renderer: threads = " + std::to_string(s.threads) + " is negative");
+    const AdaptiveSettings& a = s.adaptive;
+    if (!(a.threshold >= 0.f) || !std::isfinite(a.threshold))
+        throw std::invalid_argument("adaptive: threshold = " + std::to_string(a.threshold) + "; it must be finite and >= 0");
+    if (a.maxSamples < 1)
+        throw std::invalid_argument("adaptive: max_samples = " + std::to_string(a.maxSamples) + "; at least 1");
+    if (a.within == SamplerKind::Adaptive)
+        throw std::invalid_argument("adaptive: its passes need a sampler other than adaptive");
 }
 
-void Renderer::setAdaptive(const AdaptiveSettings& s) {
-    if (!(s.threshold >= 0.f) || !std::isfinite(s.threshold))
-        throw std::invalid_argument("adaptive: threshold = " + std::to_string(s.threshold) + "; it must be finite and >= 0");
-    if (s.maxSamples < 1)
-        throw std::invalid_argument("adaptive: max_samples = " + std::to_string(s.maxSamples) + "; at least 1");
-    if (s.within == SamplerKind::Adaptive)
-        throw std::invalid_argument("adaptive: its passes need a sampler other than adaptive");
-    m_adaptive = s;
-}
+} // namespace
 
 Texture Renderer::renderImage() {
+    checkSettings(m_settings);
     const auto start = std::chrono::steady_clock::now();
     m_stats = RenderStats{};
     m_refined.clear();

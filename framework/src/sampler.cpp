@@ -113,60 +113,65 @@ float toUnitFloat(std::uint32_t fraction) { return float(fraction >> 8) * 0x1p-2
 
 } // namespace
 
-PixelSampler::PixelSampler(SamplerKind kind, int nbSamples, std::uint64_t seed, int i, int j, int width)
-    : m_kind(kind == SamplerKind::Adaptive ? SamplerKind::Stratified : kind), m_nbSamples(nbSamples < 1 ? 1 : nbSamples),
-      m_seed(seed), m_stream(std::uint64_t(j) * std::uint64_t(width) + std::uint64_t(i)) {
-    if (m_kind == SamplerKind::Stratified || m_kind == SamplerKind::Grid)
-        gridFor(m_nbSamples, m_gridWidth, m_gridHeight); // a square root and divisions: only where used
-    else if (m_kind == SamplerKind::Random)
-        m_rng.emplace(m_seed, m_stream); // so that next2D need not test for it at every sample
-    else if (m_kind == SamplerKind::Sobol) {
-        m_rng.emplace(m_seed, m_stream);
-        m_scramble[0] = m_rng->nextUInt();
-        m_scramble[1] = m_rng->nextUInt();
-        m_drawn += 2;
-    } else if (m_kind == SamplerKind::R2) {
-        m_rng.emplace(m_seed, m_stream);
-        m_shift[0] = double(m_rng->nextUInt()) * 0x1p-32;
-        m_shift[1] = double(m_rng->nextUInt()) * 0x1p-32;
-        m_drawn += 2;
+PixelSampler::PixelSampler(SamplerKind kind, int nbSamples, std::uint64_t seed, int i, int j, int width) {
+    detail::SamplerState& s = m_state;
+    s.kind = kind == SamplerKind::Adaptive ? SamplerKind::Stratified : kind; // adaptive's pixels are sampled as stratified
+    s.nbSamples = nbSamples < 1 ? 1 : nbSamples;
+    s.seed = seed;
+    s.stream = std::uint64_t(j) * std::uint64_t(width) + std::uint64_t(i);
+    if (s.kind == SamplerKind::Stratified || s.kind == SamplerKind::Grid)
+        gridFor(s.nbSamples, s.gridWidth, s.gridHeight); // a square root and divisions: only where used
+    else if (s.kind == SamplerKind::Random)
+        s.rng.emplace(s.seed, s.stream); // so that next2D need not test for it at every sample
+    else if (s.kind == SamplerKind::Sobol) {
+        s.rng.emplace(s.seed, s.stream);
+        s.scramble[0] = s.rng->nextUInt();
+        s.scramble[1] = s.rng->nextUInt();
+        s.drawn += 2;
+    } else if (s.kind == SamplerKind::R2) {
+        s.rng.emplace(s.seed, s.stream);
+        s.shift[0] = double(s.rng->nextUInt()) * 0x1p-32;
+        s.shift[1] = double(s.rng->nextUInt()) * 0x1p-32;
+        s.drawn += 2;
     }
 }
 
 float PixelSampler::uniform() {
-    if (!m_rng) m_rng.emplace(m_seed, m_stream);
-    ++m_drawn;
-    return m_rng->nextFloat();
+    detail::SamplerState& s = m_state;
+    if (!s.rng) s.rng.emplace(s.seed, s.stream);
+    ++s.drawn;
+    return s.rng->nextFloat();
 }
 
 glm::vec2 PixelSampler::next2DOther() {
-    switch (m_kind) {
+    detail::SamplerState& s = m_state;
+    switch (s.kind) {
     case SamplerKind::Center: return {0.5f, 0.5f};
     case SamplerKind::Random: break; // next2D draws it
     case SamplerKind::Stratified:
     case SamplerKind::Grid: {
-        const float jx = m_kind == SamplerKind::Grid ? 0.5f : uniform();
-        const float jy = m_kind == SamplerKind::Grid ? 0.5f : uniform();
-        const float x = (float(m_cellX) + jx) / float(m_gridWidth);
-        const float y = (float(m_cellY) + jy) / float(m_gridHeight);
+        const float jx = s.kind == SamplerKind::Grid ? 0.5f : uniform();
+        const float jy = s.kind == SamplerKind::Grid ? 0.5f : uniform();
+        const float x = (float(s.cellX) + jx) / float(s.gridWidth);
+        const float y = (float(s.cellY) + jy) / float(s.gridHeight);
         // The next cell, row by row, without an integer division per sample.
-        if (++m_cellX == m_gridWidth) {
-            m_cellX = 0;
-            if (++m_cellY == m_gridHeight) m_cellY = 0;
+        if (++s.cellX == s.gridWidth) {
+            s.cellX = 0;
+            if (++s.cellY == s.gridHeight) s.cellY = 0;
         }
         return {std::min(x, kBelowOne), std::min(y, kBelowOne)};
     }
     case SamplerKind::Sobol: {
         // The points of lowdiscrepancy::sobol and owenScramble, one index after the other: the
         // first dimension reversed is the index itself, the second changes by a step of the table.
-        const std::uint32_t k = m_index++;
-        if (k != 0) m_sobol1Reversed ^= kSobol1ReversedSteps[std::size_t(std::countr_zero(k))];
-        return {toUnitFloat(lowdiscrepancy::owenScrambleReversed(k, m_scramble[0])),
-                toUnitFloat(lowdiscrepancy::owenScrambleReversed(m_sobol1Reversed, m_scramble[1]))};
+        const std::uint32_t k = s.index++;
+        if (k != 0) s.sobol1Reversed ^= kSobol1ReversedSteps[std::size_t(std::countr_zero(k))];
+        return {toUnitFloat(lowdiscrepancy::owenScrambleReversed(k, s.scramble[0])),
+                toUnitFloat(lowdiscrepancy::owenScrambleReversed(s.sobol1Reversed, s.scramble[1]))};
     }
     case SamplerKind::R2: {
-        const glm::dvec2 p = lowdiscrepancy::r2(m_index++);
-        double x = p.x + m_shift[0], y = p.y + m_shift[1];
+        const glm::dvec2 p = lowdiscrepancy::r2(s.index++);
+        double x = p.x + s.shift[0], y = p.y + s.shift[1];
         x -= x >= 1. ? 1. : 0.;
         y -= y >= 1. ? 1. : 0.;
         return {std::min(float(x), kBelowOne), std::min(float(y), kBelowOne)};

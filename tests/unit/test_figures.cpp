@@ -179,7 +179,7 @@ TEST_CASE("SceneRender: the default camera renders in world space, with the scen
     CHECK(render.space().origin() == glm::vec3(0.f));
     CHECK(render.scene().all<SphereGeometry>()[0].center() == d.scene.all<SphereGeometry>()[0].center());
     CHECK(render.renderer().nbPixelSamples() == d.samples);
-    CHECK(render.renderer().sampler() == d.sampler);
+    CHECK(render.renderer().settings().sampler == d.sampler);
     CHECK_THROWS_AS(SceneRender(figureScene("lab1_gradient")), std::invalid_argument);
 }
 

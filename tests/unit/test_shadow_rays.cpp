@@ -98,7 +98,7 @@ TEST_CASE("a scene without lights traces no shadow ray; with one, one per hit th
     const PerspectiveCamera camera(40, 30);
     const auto lambert = makeRegisteredIntegrator("lambert", {{"ambient", 0.25f}});
     Renderer renderer(wall, camera, *lambert);
-    renderer.setThreads(2);
+    renderer.settings().threads = 2;
     const Texture dark = renderer.renderImage();
     CHECK(renderer.stats().primaryRays == 1200);
     CHECK(renderer.stats().shadowRays == 0);

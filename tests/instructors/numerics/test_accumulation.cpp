@@ -37,9 +37,9 @@ TEST_CASE("NaN and infinity in an antialiased average reach the pixel, and the P
     for (const Color bad : {Color(kNaN, 0.f, 0.f), Color(0.f, kInf, 0.f), Color(0.f, 0.f, -kInf)}) {
         const SometimesBad integrator(Color(0.5f), bad, 16); // one bad sample in each pixel's 16
         Renderer renderer(scene, camera, integrator);
-        renderer.setThreads(1);
+        renderer.settings().threads = 1;
         renderer.setNbPixelSamples(16);
-        renderer.setSampler(SamplerKind::Random);
+        renderer.settings().sampler = SamplerKind::Random;
         const Texture image = renderer.renderImage();
         std::uint64_t nonFinite = 0;
         const Image8 png = quantize(image, &nonFinite);

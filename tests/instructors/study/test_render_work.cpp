@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 using namespace raylab;
@@ -76,11 +77,8 @@ Counts render(const Job& job) {
     const DirectionIntegrator directions;
     const CountingIntegrator integrator(job.directions ? static_cast<const Integrator&>(directions) : rayCast);
     Renderer renderer(job.scene, counting, integrator);
-    renderer.setSampler(job.sampler);
+    renderer.settings() = RenderSettings{job.sampler, job.seed, job.adaptive, job.threads, false};
     renderer.setNbPixelSamples(job.samples);
-    renderer.setAdaptive(job.adaptive);
-    renderer.setSeed(job.seed);
-    renderer.setThreads(job.threads);
     sphereIntersections = 0;
     sphereNormals = 0;
     Counts c;
@@ -263,20 +261,35 @@ TEST_CASE("adaptive: the same image on any number of threads") {
     CHECK(render(job).image.pixels() != one.image.pixels());
 }
 
-TEST_CASE("adaptive settings without a meaning are refused") {
+TEST_CASE("settings without a meaning are refused before any pixel is rendered") {
     const Scene scene = makeTp1Scene();
     const PerspectiveCamera camera(W, H);
     const RayCastIntegrator integrator(Shading::Flat);
-    Renderer renderer(scene, camera, integrator);
-    AdaptiveSettings s;
-    s.threshold = -1.f;
-    CHECK_THROWS_AS(renderer.setAdaptive(s), std::invalid_argument);
-    s = AdaptiveSettings{};
-    s.maxSamples = 0;
-    CHECK_THROWS_AS(renderer.setAdaptive(s), std::invalid_argument);
-    s = AdaptiveSettings{};
-    s.within = SamplerKind::Adaptive;
-    CHECK_THROWS_AS(renderer.setAdaptive(s), std::invalid_argument);
+    const CountingIntegrator counting(integrator);
+    Renderer renderer(scene, camera, counting);
+    const auto refused = [&](const RenderSettings& settings) {
+        renderer.settings() = settings;
+        counting.calls = 0;
+        CHECK_THROWS_AS(renderer.renderImage(), std::invalid_argument);
+        CHECK(counting.calls == 0);
+    };
+    RenderSettings s;
+    s.adaptive.threshold = -1.f;
+    refused(s);
+    s = RenderSettings{};
+    s.adaptive.threshold = std::numeric_limits<float>::quiet_NaN();
+    refused(s);
+    s = RenderSettings{};
+    s.adaptive.maxSamples = 0;
+    refused(s);
+    s = RenderSettings{};
+    s.adaptive.within = SamplerKind::Adaptive;
+    refused(s);
+    s = RenderSettings{};
+    s.threads = -1;
+    refused(s);
+    renderer.settings() = RenderSettings{};
+    CHECK_NOTHROW(renderer.renderImage());
 }
 
 }
