@@ -96,13 +96,13 @@ function(raylab_lab_uses out file)
   set(${out} ${uses} PARENT_SCOPE)
 endfunction()
 
-# raylab_lab_shapes(OUT FILE): the kinds of objects lab.toml FILE says its lab brings (`shapes =
-# ["Triangle"]`): classes its folder's shapes.h declares.
-function(raylab_lab_shapes out file)
-  raylab_heading_value(value ${file} shapes "\\[([A-Za-z0-9_\", \t]*)\\]"
-                       "`shapes = [\"Triangle\"]` (the classes of its shapes.h)")
-  string(REGEX MATCHALL "[A-Za-z_][A-Za-z0-9_]*" shapes "${value}")
-  set(${out} ${shapes} PARENT_SCOPE)
+# raylab_lab_kinds(OUT FILE ROLE): the kinds of objects (ROLE shapes) or of lights (ROLE lights)
+# lab.toml FILE says its lab brings (`shapes = ["Triangle"]`): classes its folder's <ROLE>.h declares.
+function(raylab_lab_kinds out file role)
+  raylab_heading_value(value ${file} ${role} "\\[([A-Za-z0-9_\", \t]*)\\]"
+                       "`${role} = [\"ClassName\"]` (the classes of its ${role}.h)")
+  string(REGEX MATCHALL "[A-Za-z_][A-Za-z0-9_]*" classes "${value}")
+  set(${out} ${classes} PARENT_SCOPE)
 endfunction()
 
 # A lab's number and id come from its folder's name, lab<N>_<name> (N without a leading zero), not
@@ -167,31 +167,35 @@ if(given_folders)
   message(STATUS "raylab labs given (their reference, part of the framework): ${given_folders}")
 endif()
 
-# The kinds of objects the course's labs bring, after the framework's sphere and plane: Scene
-# (raylab/scene.h) keeps one array per kind and tests each inline, so it knows the list when it is
-# compiled. Written into raylab/course_shapes.h only when it changes: a configure recompiles nothing.
-set(raylab_shape_includes "")
-set(raylab_shape_classes "")
-foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
-  set(folder ${RAYLAB_LAB_FOLDER_${n}})
-  raylab_lab_shapes(classes ${CMAKE_SOURCE_DIR}/labs/${folder}/lab.toml)
-  if(classes)
-    if(NOT EXISTS ${CMAKE_SOURCE_DIR}/labs/${folder}/shapes.h)
-      message(FATAL_ERROR "${CMAKE_SOURCE_DIR}/labs/${folder}/lab.toml: shapes = ${classes}, but labs/${folder}/shapes.h, which declares them, is not there")
+# The kinds of objects the course's labs bring, after the framework's sphere and plane, and the kinds
+# of lights, after the point light: Scene (raylab/scene.h) keeps one array per kind and tests each
+# kind of object inline, so it knows the lists when it is compiled. Written into raylab/course_kinds.h
+# only when it changes: a configure recompiles nothing.
+set(raylab_kind_includes "")
+foreach(role shapes lights)
+  set(raylab_course_${role} "")
+  foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
+    set(folder ${RAYLAB_LAB_FOLDER_${n}})
+    raylab_lab_kinds(classes ${CMAKE_SOURCE_DIR}/labs/${folder}/lab.toml ${role})
+    if(classes)
+      if(NOT EXISTS ${CMAKE_SOURCE_DIR}/labs/${folder}/${role}.h)
+        message(FATAL_ERROR "${CMAKE_SOURCE_DIR}/labs/${folder}/lab.toml: ${role} = ${classes}, but labs/${folder}/${role}.h, which declares them, is not there")
+      endif()
+      string(APPEND raylab_kind_includes "#include \"${folder}/${role}.h\"\n")
+      foreach(class IN LISTS classes)
+        string(APPEND raylab_course_${role} ", ::raylab::${class}")
+      endforeach()
     endif()
-    string(APPEND raylab_shape_includes "#include \"${folder}/shapes.h\"\n")
-    foreach(class IN LISTS classes)
-      string(APPEND raylab_shape_classes ", ::raylab::${class}")
-    endforeach()
-  endif()
+  endforeach()
 endforeach()
-set(RAYLAB_COURSE_SHAPES_FOLDER ${CMAKE_BINARY_DIR}/generated/course)
-file(CONFIGURE OUTPUT ${RAYLAB_COURSE_SHAPES_FOLDER}/raylab/course_shapes.h CONTENT
+set(RAYLAB_COURSE_KINDS_FOLDER ${CMAKE_BINARY_DIR}/generated/course)
+file(CONFIGURE OUTPUT ${RAYLAB_COURSE_KINDS_FOLDER}/raylab/course_kinds.h CONTENT
 "#pragma once
-// Written by CMake (cmake/RaylabLabs.cmake): the kinds of objects the course's labs bring, from their
-// lab.toml's `shapes`, for Scene (raylab/scene.h).
-${raylab_shape_includes}
-#define RAYLAB_COURSE_SHAPES ${raylab_shape_classes}
+// Written by CMake (cmake/RaylabLabs.cmake): the kinds of objects and of lights the course's labs
+// bring, from their lab.toml's `shapes` and `lights`, for Scene (raylab/scene.h).
+${raylab_kind_includes}
+#define RAYLAB_COURSE_SHAPES ${raylab_course_shapes}
+#define RAYLAB_COURSE_LIGHTS ${raylab_course_lights}
 ")
 
 # raylab_lab_header_folder(OUT N): the folder of lab N's own header, labs/<lab>/<name>.h (it declares the
@@ -209,12 +213,13 @@ endfunction()
 # raylab_lab_shadings(TARGET N): TARGET (lab N's code, from wherever) also brings what lab N registers
 # by name outside the student's files, from framework/grader/labs/<lab>/: shadings.cpp, the pictures
 # (lab 1's gradient, lab 2's directions, lab 3's shadings; a scene file's [render] shading names one),
-# shapes.cpp, its kinds of objects (a scene file's [[table]] names one: raylab/shape_registry.h),
+# shapes.cpp and lights.cpp, its kinds of objects and lights (a scene file's [[table]] names one:
+# raylab/kind_registry.h),
 # and figure_steps.cpp, its functions as the crash finder calls them (src/figure_steps.h). Compiled
 # once, into every program that links TARGET: nothing names their objects, so they are linked whole.
 function(raylab_lab_shadings target n)
   set(sources "")
-  foreach(part shadings shapes figure_steps)
+  foreach(part shadings shapes lights figure_steps)
     set(source ${CMAKE_SOURCE_DIR}/framework/grader/labs/${RAYLAB_LAB_FOLDER_${n}}/${part}.cpp)
     if(EXISTS ${source})
       list(APPEND sources ${source})

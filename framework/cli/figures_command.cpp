@@ -214,7 +214,7 @@ void addFigureCommands(CLI::App& app, Context& context) {
         if (!context.ranInOtherImpl() && codeIsFresh(context)) context.exitStatus = runRender(*scene, *out, context.threads);
     });
 
-    app.add_subcommand("scene-format", tr("cli.scene_format"))->callback([] { std::fputs(objectTablesReference().c_str(), stdout); });
+    app.add_subcommand("scene-format", tr("cli.scene_format"))->callback([] { std::fputs(sceneTablesReference().c_str(), stdout); });
 }
 
 } // namespace raylab::cli

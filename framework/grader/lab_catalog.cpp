@@ -104,18 +104,20 @@ void readHeading(const TomlReader& r, const toml::table& root, const fs::path& f
     lab.uses = labs(r, root, "").value_or(std::vector<int>{});
     if (contains(lab.uses, lab.number)) r.fail(root.get("uses"), "uses", "a lab does not use itself");
     lab.frameworkCalls = r.boolean(root, "", "framework_calls").value_or(false);
-    // The kinds of objects it brings: classes its folder's shapes.h declares, which CMake lists for Scene
-    // (raylab/scene.h) and its grading folder's shapes.cpp registers.
-    if (const toml::array* shapes = r.array(root, "", "shapes")) {
-        for (const toml::node& n : *shapes) {
-            const std::string name = r.stringOf(n, "shapes");
+    // The kinds of objects and of lights it brings: classes its folder's shapes.h and lights.h declare,
+    // which CMake lists for Scene (raylab/scene.h) and its grading folder's shapes.cpp and lights.cpp register.
+    for (const std::string role : {"shapes", "lights"}) {
+        const toml::array* classes = r.array(root, "", role);
+        if (classes == nullptr) continue;
+        for (const toml::node& n : *classes) {
+            const std::string name = r.stringOf(n, role);
             const bool identifier = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
                                     std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-            if (!identifier) r.fail(&n, "shapes", "\"" + name + "\" is not the name of a C++ class");
+            if (!identifier) r.fail(&n, role, "\"" + name + "\" is not the name of a C++ class");
         }
         std::error_code error;
-        if (!shapes->empty() && !fs::is_regular_file(file.parent_path() / "shapes.h", error))
-            r.fail(root.get("shapes"), "shapes", "no shapes.h beside " + file.filename().string() + " to declare them");
+        if (!classes->empty() && !fs::is_regular_file(file.parent_path() / (role + ".h"), error))
+            r.fail(root.get(role), role, "no " + role + ".h beside " + file.filename().string() + " to declare them");
     }
 }
 
@@ -305,7 +307,7 @@ double LabCatalog::figurePoints(const std::string& id, double fallback) const {
 LabDescription loadLabDescription(const fs::path& file, const fs::path& scenes) {
     const toml::table root = parseTomlFile(file);
     const TomlReader r(file);
-    r.onlyKeys(root, "", {"number", "id", "title", "uses", "framework_calls", "shapes", "function", "figure", "check"});
+    r.onlyKeys(root, "", {"number", "id", "title", "uses", "framework_calls", "shapes", "lights", "function", "figure", "check"});
     LabDescription lab;
     lab.file = file;
     readHeading(r, root, file, lab);

@@ -20,8 +20,9 @@ Scene RenderSpace::toRender(const Scene& scene) const {
     const OriginShift shift{m_origin};
     Scene moved;
     moved.background = scene.background;
-    moved.lights = scene.lights;
-    for (PointLight& light : moved.lights) light.position = shift(light.position);
+    scene.forEachLightKind([&](const auto& lights) {
+        for (const auto& light : lights) moved.add(light.shifted(shift));
+    });
     scene.forEachGroup([&](const auto& group) {
         for (const auto& object : group.objects) moved.add(object.shifted(shift));
     });

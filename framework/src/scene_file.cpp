@@ -1,7 +1,7 @@
 #include "src/scene_file.h"
 
 #include "raylab/integrator_registry.h"
-#include "raylab/shape_registry.h"
+#include "raylab/kind_registry.h"
 #include "src/messages.h"
 #include "src/text.h"
 #include "src/toml_reader.h"
@@ -76,8 +76,8 @@ void readCamera(const TomlReader& r, const toml::table& t, CameraDescription& ca
 }
 
 // A table's value of `p`, checked against its declaration; nothing when it is absent and not required.
-void readParameter(const TomlReader& r, const toml::table& t, const std::string& section, const ShapeParameter& p,
-                   ShapeValues& values) {
+void readParameter(const TomlReader& r, const toml::table& t, const std::string& section, const KindParameter& p,
+                   KindValues& values) {
     const std::string name = section + " " + p.key;
     const toml::node* node = t.get(p.key);
     if (node == nullptr) {
@@ -97,47 +97,26 @@ void readParameter(const TomlReader& r, const toml::table& t, const std::string&
     values.set(p.key, v);
 }
 
-// [[kind]] tables, for each kind of object registered (raylab/shape_registry.h): each value as its
-// kind declares it, then the object as the kind makes it.
-void readObjects(const TomlReader& r, const toml::table& root, Scene& scene) {
-    for (const RegisteredShapeKind* kind : registeredShapeKinds()) {
+// [[kind]] tables, for each kind of object or light registered (raylab/kind_registry.h): each value
+// as its kind declares it, then the object or light as the kind makes it.
+void readKinds(const TomlReader& r, const toml::table& root, Scene& scene) {
+    for (const RegisteredKind* kind : registeredKinds()) {
         const std::string section = "[[" + kind->name + "]]";
         std::vector<std::string_view> keys;
-        for (const ShapeParameter& p : kind->parameters) keys.push_back(p.key);
+        for (const KindParameter& p : kind->parameters) keys.push_back(p.key);
         for (const toml::table* table : r.tables(root, kind->name)) {
             r.onlyKeys(*table, section + " ", keys);
-            ShapeValues values;
-            for (const ShapeParameter& p : kind->parameters) readParameter(r, *table, section, p, values);
+            KindValues values;
+            for (const KindParameter& p : kind->parameters) readParameter(r, *table, section, p, values);
             try {
                 kind->add(values, scene);
-            } catch (const ShapeParameterError& e) {
+            } catch (const KindParameterError& e) {
                 if (e.key().empty()) r.fail(table, section, e.what());
                 r.fail(table->get(e.key()), section + " " + e.key(), e.what());
             } catch (const std::invalid_argument& e) {
                 r.fail(table, section, e.what());
             }
         }
-    }
-}
-
-// [[light]]: a point light at `position` whose radiant intensity is intensity * color.
-void readLights(const TomlReader& r, const toml::table& root, Scene& scene) {
-    for (const toml::table* light : r.tables(root, "light")) {
-        const toml::table& t = *light;
-        r.onlyKeys(t, "[[light]] ", {"position", "intensity", "color"});
-        const auto position = vec3(r, t, "[[light]] ", "position", kMaxCoordinate);
-        const auto intensity = r.number(t, "[[light]] ", "intensity");
-        if (!position || !intensity) r.fail(&t, "[[light]]", "a light needs a position and an intensity");
-        if (!(*intensity >= 0. && *intensity <= kFloatMax))
-            r.fail(t.get("intensity"), "[[light]] intensity",
-                   showNumber(*intensity) + " must be at least 0 and at most " + showNumber(kFloatMax) + " (float's range)");
-        const Color color = vec3(r, t, "[[light]] ", "color").value_or(Color(1.f));
-        if (!(color.r >= 0.f && color.g >= 0.f && color.b >= 0.f))
-            r.fail(t.get("color"), "[[light]] color", showVector(color) + ": a light's colour has no negative channel");
-        const Color radiant = float(*intensity) * color;
-        if (!std::isfinite(radiant.r) || !std::isfinite(radiant.g) || !std::isfinite(radiant.b))
-            r.fail(t.get("color"), "[[light]] color", "intensity * color overflows float (" + showVector(radiant) + ")");
-        scene.lights.push_back(PointLight{*position, radiant});
     }
 }
 
@@ -224,8 +203,8 @@ std::vector<std::string> readRoles(const TomlReader& r, const toml::table& figur
 SceneDescription readSceneFile(const std::filesystem::path& file) {
     const toml::table root = parseTomlFile(file);
     const TomlReader r(file);
-    std::vector<std::string_view> tables = {"figure", "image", "camera", "render", "shading", "background", "light"};
-    for (const RegisteredShapeKind* kind : registeredShapeKinds()) tables.push_back(kind->name);
+    std::vector<std::string_view> tables = {"figure", "image", "camera", "render", "shading", "background"};
+    for (const RegisteredKind* kind : registeredKinds()) tables.push_back(kind->name);
     r.onlyKeys(root, "", tables);
 
     SceneDescription d;
@@ -266,25 +245,28 @@ SceneDescription readSceneFile(const std::filesystem::path& file) {
     }
     readShadingParameters(r, root, d);
     if (auto background = vec3(r, root, "", "background")) d.scene.background = *background;
-    readObjects(r, root, d.scene);
-    readLights(r, root, d.scene);
+    readKinds(r, root, d.scene);
     return d;
 }
 
 } // namespace
 
-std::string objectTablesReference() {
+std::string sceneTablesReference() {
     constexpr std::string_view kTypes[] = {"number", "point [x, y, z]", "direction [x, y, z], not zero", "colour [r, g, b]"};
-    std::string text = "# The objects of a scene file: a [[table]] per object, each table's name a kind of object the\n"
-                       "# framework or a lab of the course registers (raylab/shape_registry.h).\n";
-    for (const RegisteredShapeKind* kind : registeredShapeKinds()) {
-        text += "\n[[" + kind->name + "]] # " + kind->meaning + "\n";
-        for (const ShapeParameter& p : kind->parameters) {
-            std::string line = p.key + ": " + std::string(kTypes[int(p.type)]);
-            if (p.type == ParameterType::Number && (p.min > -kFloatMax || p.max < kFloatMax))
-                line += " in [" + showNumber(p.min) + ", " + showNumber(p.max) + "]";
-            line += p.required == Required::Yes ? ", required" : (p.type == ParameterType::Color ? ", default white" : ", optional");
-            text += "#   " + line + ": " + p.meaning + "\n";
+    std::string text = "# The objects and lights of a scene file: a [[table]] for each, the table's name a kind the\n"
+                       "# framework or a lab of the course registers (raylab/kind_registry.h).\n";
+    for (const KindRole role : {KindRole::Object, KindRole::Light}) {
+        text += role == KindRole::Object ? "\n# Objects\n" : "\n# Lights\n";
+        for (const RegisteredKind* kind : registeredKinds()) {
+            if (kind->role != role) continue;
+            text += "\n[[" + kind->name + "]] # " + kind->meaning + "\n";
+            for (const KindParameter& p : kind->parameters) {
+                std::string line = p.key + ": " + std::string(kTypes[int(p.type)]);
+                if (p.type == ParameterType::Number && (p.min > -kFloatMax || p.max < kFloatMax))
+                    line += " in [" + showNumber(p.min) + ", " + showNumber(p.max) + "]";
+                line += p.required == Required::Yes ? ", required" : (p.type == ParameterType::Color ? ", default white" : ", optional");
+                text += "#   " + line + ": " + p.meaning + "\n";
+            }
         }
     }
     return text;

@@ -54,9 +54,9 @@ public:
 
 SceneDescription loadSceneFile(const std::filesystem::path& file);
 
-// What `raylab scene-format` prints: each registered kind of object's table and its keys, with their
+// What `raylab scene-format` prints: each registered kind of object's or light's table and its keys, with their
 // types, ranges, defaults and meanings.
-std::string objectTablesReference();
+std::string sceneTablesReference();
 
 // Every *.toml of a folder, in the order of their id.
 std::vector<SceneDescription> loadSceneFolder(const std::filesystem::path& folder);

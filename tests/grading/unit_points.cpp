@@ -222,7 +222,7 @@ TEST_CASE("a lab the course leaves out is given when the framework calls its fun
     CHECK(students.lab(2)->uses.empty());
 }
 
-TEST_CASE("a lab's kinds of objects: C++ class names, declared in the shapes.h beside its lab.toml") {
+TEST_CASE("a lab's kinds of objects and lights: C++ class names, declared in the shapes.h and lights.h beside its lab.toml") {
     const Course course;
     course.scene("lab2_picture");
     course.lab("lab2_rays", kLab2);
@@ -236,6 +236,15 @@ TEST_CASE("a lab's kinds of objects: C++ class names, declared in the shapes.h b
                          std::runtime_error);
     course.lab("lab1_first", kLab1 + "shapes = [\"Triangle\", 3]\n");
     CHECK_THROWS_WITH_AS(course.load(), doctest::Contains("lab.toml:4: shapes"), std::runtime_error);
+    // Lights the same way, in their own header: shapes.h does not declare them.
+    course.lab("lab1_first", kLab1 + "shapes = [\"Triangle\"]\nlights = [\"AreaLight\"]\n");
+    CHECK_THROWS_WITH_AS(course.load(), (file.string() + ":5: lights: no lights.h beside lab.toml to declare them").c_str(),
+                         std::runtime_error);
+    std::ofstream(file.parent_path() / "lights.h") << "#pragma once\n";
+    CHECK(course.load().lab(1) != nullptr);
+    course.lab("lab1_first", kLab1 + "lights = [\"Area-Light\"]\n");
+    CHECK_THROWS_WITH_AS(course.load(), (file.string() + ":4: lights: \"Area-Light\" is not the name of a C++ class").c_str(),
+                         std::runtime_error);
 }
 
 TEST_CASE("the course's descriptions agree with the references and the scene files") {

@@ -1,9 +1,9 @@
 # The toy-lab test: adding a lab, function checks included, is its own folders and its number in the
 # course's list. In a copy of the whole tree (its files as git lists them: tests/ and docs/ too, no
 # build folder) it adds lab N, the next free number: labs/labN_toy/ (its lab.toml, its header, one
-# stub function, its own kind of object in shapes.h, its handouts in English and French, its scene
+# stub function, its own kind of object in shapes.h and of light in lights.h, its handouts in English and French, its scene
 # file), its completed twin in solutions/ and its grading folder framework/grader/labs/labN_toy/ (a
-# probe, three checks, its shading, its kind's [[toy_square]] table, its English and French
+# probe, three checks, its shading, its kinds' [[toy_square]] and [[toy_lamp]] tables, its English and French
 # messages), and N to course.toml; then builds, renders, makes lab N's references and the
 # handouts' figures (docs/instructors.md, "Adding a lab"), checks that nothing changed outside the
 # lab's three folders and course.toml, runs the copy's own lab tests, grades and reports it as an
@@ -57,7 +57,7 @@ function(step_copy)
   file(REMOVE_RECURSE ${WORK})
   copy_tree(${SOURCE} ${tree})
   write_copied_hashes()
-  foreach(file lab.toml README.md README.fr.md toy_colour.cpp toy_colour.h shapes.h)
+  foreach(file lab.toml README.md README.fr.md toy_colour.cpp toy_colour.h shapes.h lights.h)
     configure_file(${TOY}/${file} ${tree}/labs/${id}/${file} @ONLY)
   endforeach()
   configure_file(${TOY}/toy.toml ${tree}/labs/${id}/scenes/${id}.toml @ONLY)
@@ -111,35 +111,71 @@ function(step_render)
 
   # Lab ${N}'s own kind of object, [[toy_square]]: in the scene format, read from a scene file and
   # drawn (the figure without it, or with it behind the camera, is another picture), its errors located.
-  run(output 0 ${bin}/raylab-reference scene-format)
-  expect("${output}" "[[toy_square]] # a square facing the default camera (the toy lab)" "the scene format lists lab ${N}'s kind")
-  expect("${output}" "#   side: number in [" "the scene format lists its parameters")
+  run(format 0 ${bin}/raylab-reference scene-format)
+  expect("${format}" "[[toy_square]] # a square facing the default camera (the toy lab)" "the scene format lists lab ${N}'s kind")
+  expect("${format}" "#   side: number in [" "the scene format lists its parameters")
+  file(MAKE_DIRECTORY ${WORK}/toy-scenes-drawn)
   file(READ ${tree}/labs/${id}/scenes/${id}.toml with_square)
-  string(FIND "${with_square}" "\n[[toy_square]]" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "toy lab: lab ${N}'s scene has no [[toy_square]] table")
-  endif()
-  math(EXPR at "${at} + 1")
-  string(SUBSTRING "${with_square}" 0 ${at} without_square)
+  scene_before(without_square "${with_square}" toy_square)
   string(REPLACE "center = [0.5, 0, 3]" "center = [0.5, 0, -3]" behind "${with_square}")
-  file(MAKE_DIRECTORY ${WORK}/toy-square)
-  file(WRITE ${WORK}/toy-square/with.toml "${with_square}")
-  file(WRITE ${WORK}/toy-square/without.toml "${without_square}")
-  file(WRITE ${WORK}/toy-square/behind.toml "${behind}")
-  foreach(scene with without behind)
-    run(output 0 ${bin}/raylab-reference render ${WORK}/toy-square/${scene}.toml --out ${WORK}/toy-square/${scene}.png)
-    file(SHA256 ${WORK}/toy-square/${scene}.png ${scene})
-  endforeach()
+  render_toy_scene(with "${with_square}")
+  render_toy_scene(without "${without_square}")
+  render_toy_scene(behind "${behind}")
   if(with STREQUAL without OR NOT behind STREQUAL without)
     message(FATAL_ERROR "toy lab: the [[toy_square]] in front of the camera must change the picture, and behind it not "
                         "(with ${with}, without ${without}, behind ${behind})")
   endif()
-  file(WRITE ${WORK}/toy-square/bad.toml "${without_square}[[toy_square]]\ncenter = [0, 0, 3]\nside = 0\n")
-  string(REGEX MATCHALL "\n" lines "${without_square}")
-  list(LENGTH lines side_line)
-  math(EXPR side_line "${side_line} + 3")
-  run(output nonzero ${bin}/raylab-reference render ${WORK}/toy-square/bad.toml --out ${WORK}/toy-square/bad.png)
-  expect("${output}" "bad.toml:${side_line}: [[toy_square]] side: 0 is too small" "a bad [[toy_square]] is named with its line")
+  expect_bad_table(bad_square "${without_square}" "[[toy_square]]\ncenter = [0, 0, 3]\nside = 0\n" "[[toy_square]] side: 0 is too small")
+
+  # Its own kind of light, [[toy_lamp]], the same way: listed among the lights, read, moved with the
+  # scene into the render space and used by its integrator (no lamp, or one behind the square, is
+  # another picture), its errors located.
+  expect("${format}" "[[toy_lamp]] # a lamp that tints the surfaces facing it (the toy lab)" "the scene format lists lab ${N}'s light")
+  string(FIND "${format}" "\n# Lights\n" lights_at)
+  string(FIND "${format}" "\n[[toy_lamp]]" lamp_at)
+  if(lights_at EQUAL -1 OR lamp_at LESS lights_at)
+    message(FATAL_ERROR "toy lab: the scene format lists [[toy_lamp]] outside its lights:\n${format}")
+  endif()
+  scene_before(unlit_scene "${with_square}" toy_lamp)
+  string(REPLACE "position = [0, 0, 0]" "position = [0, 0, 5]" lamp_behind_scene "${with_square}")
+  render_toy_scene(unlit "${unlit_scene}")
+  render_toy_scene(lamp_behind "${lamp_behind_scene}")
+  if(with STREQUAL unlit OR with STREQUAL lamp_behind OR unlit STREQUAL lamp_behind)
+    message(FATAL_ERROR "toy lab: the [[toy_lamp]] facing the square, none, and one behind it must be three pictures "
+                        "(with ${with}, unlit ${unlit}, behind ${lamp_behind})")
+  endif()
+  expect_bad_table(bad_lamp "${unlit_scene}" "[[toy_lamp]]\nposition = [0, 0, 0]\ntint = [0, 0, 0]\n"
+                   "[[toy_lamp]] tint: a black lamp tints nothing")
+endfunction()
+
+# scene_before(OUT TEXT TABLE): the scene file TEXT up to its first [[TABLE]], which must be there.
+function(scene_before out text table)
+  string(FIND "${text}" "\n[[${table}]]" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "toy lab: lab ${N}'s scene has no [[${table}]] table")
+  endif()
+  math(EXPR at "${at} + 1")
+  string(SUBSTRING "${text}" 0 ${at} before)
+  set(${out} "${before}" PARENT_SCOPE)
+endfunction()
+
+# render_toy_scene(NAME TEXT): renders the scene file TEXT; the SHA-256 of its picture into NAME.
+function(render_toy_scene name text)
+  file(WRITE ${WORK}/toy-scenes-drawn/${name}.toml "${text}")
+  run(output 0 ${bin}/raylab-reference render ${WORK}/toy-scenes-drawn/${name}.toml --out ${WORK}/toy-scenes-drawn/${name}.png)
+  file(SHA256 ${WORK}/toy-scenes-drawn/${name}.png hash)
+  set(${name} ${hash} PARENT_SCOPE)
+endfunction()
+
+# expect_bad_table(NAME SCENE TABLE PROBLEM): the scene file SCENE then TABLE, whose third line is
+# wrong, is refused with PROBLEM after the file's name and that line.
+function(expect_bad_table name scene table problem)
+  file(WRITE ${WORK}/toy-scenes-drawn/${name}.toml "${scene}${table}")
+  string(REGEX MATCHALL "\n" lines "${scene}")
+  list(LENGTH lines line)
+  math(EXPR line "${line} + 3")
+  run(output nonzero ${bin}/raylab-reference render ${WORK}/toy-scenes-drawn/${name}.toml --out ${WORK}/toy-scenes-drawn/${name}.png)
+  expect("${output}" "${name}.toml:${line}: ${problem}" "a wrong table is named with its line")
 endfunction()
 
 # 3b. The copy's own lab tests pass with lab ${N} added: `ctest -L lab`, as docs/instructors.md asks of

@@ -1,5 +1,5 @@
 #include "raylab/integrator_registry.h"
-#include "raylab/shape_registry.h"
+#include "raylab/kind_registry.h"
 #include "support/scene_files.h"
 #include "grader/lab_catalog.h"
 #include "src/messages.h"
@@ -146,13 +146,14 @@ TEST_CASE("errors name the file, the line and the key") {
     CHECK(errorOf("[camera]\nlook_at = [0, 0, 1]\n") ==
           "scene.toml:1: [camera]: a lookAt camera needs both position and look_at (up defaults to [0, 1, 0])");
     CHECK(errorOf("[image\nwidth = 3\n").rfind("scene.toml:1:7: not valid TOML: ", 0) == 0);
-    // The known keys end with each registered kind of object's table (the course's labs may add theirs).
+    // The known keys end with each registered kind's table, of object or light (the course's labs may add theirs).
     std::string kinds;
-    for (const RegisteredShapeKind* kind : registeredShapeKinds()) kinds += ", " + kind->name;
+    for (const RegisteredKind* kind : registeredKinds()) kinds += ", " + kind->name;
     CHECK(kinds.find(", plane") != std::string::npos);
     CHECK(kinds.find(", sphere") != std::string::npos);
+    CHECK(kinds.find(", light") != std::string::npos);
     CHECK(errorOf("colour = 3\n") ==
-          "scene.toml:1: colour: unknown key (known keys: figure, image, camera, render, shading, background, light" + kinds + ")");
+          "scene.toml:1: colour: unknown key (known keys: figure, image, camera, render, shading, background" + kinds + ")");
     // In French, with its no-break space before the colon after the key as before the known keys.
     const raylab::Language before = raylab::language();
     raylab::setLanguage(raylab::Language::Fr);
@@ -263,9 +264,9 @@ intensity = 2.5
 }
 
 TEST_CASE("lights and planes: errors name the file, the line and the key") {
-    CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\n") == "scene.toml:1: [[light]]: a light needs a position and an intensity");
+    CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\n") == "scene.toml:1: [[light]]: intensity is required (its radiant intensity)");
     CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\nintensity = -1\n") ==
-          "scene.toml:3: [[light]] intensity: -1 must be at least 0 and at most 3.40282347e+38 (float's range)");
+          "scene.toml:3: [[light]] intensity: -1 is too small: at least 0 (an intensity is not negative, and fits a float)");
     CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\nintensity = nan\n") ==
           "scene.toml:3: [[light]] intensity: must be finite, got nan");
     CHECK(errorOf("[[light]]\nposition = [0, 0, 0]\nintensity = 1\ncolor = [1, -1, 0]\n") ==
@@ -369,15 +370,21 @@ TEST_CASE("the adaptive sampler's errors name the file, the line and the key") {
 
 }
 
-TEST_CASE("raylab scene-format lists each registered kind of object with its keys, read from the registry") {
-    const std::string reference = objectTablesReference();
-    for (const RegisteredShapeKind* kind : registeredShapeKinds()) {
+TEST_CASE("raylab scene-format lists each registered kind of object and light with its keys, read from the registry") {
+    const std::string reference = sceneTablesReference();
+    for (const RegisteredKind* kind : registeredKinds()) {
         CHECK(reference.find("\n[[" + kind->name + "]] # " + kind->meaning + "\n") != std::string::npos);
-        for (const ShapeParameter& p : kind->parameters) CHECK(reference.find("#   " + p.key + ": ") != std::string::npos);
+        for (const KindParameter& p : kind->parameters) CHECK(reference.find("#   " + p.key + ": ") != std::string::npos);
     }
     CHECK(reference.find("#   radius: number in [1.08420217e-19, 1.84467435e+19], required: its radius\n") != std::string::npos);
     CHECK(reference.find("#   color: colour [r, g, b], default white: ") != std::string::npos);
     CHECK(reference.find("#   normal: direction [x, y, z], not zero, required: ") != std::string::npos);
+    // Objects first, then lights: each kind under its role's heading.
+    const std::size_t lights = reference.find("\n# Lights\n");
+    REQUIRE(lights != std::string::npos);
+    CHECK(reference.find("\n# Objects\n") < lights);
+    CHECK(reference.find("\n[[sphere]] # ") < lights);
+    CHECK(reference.find("\n[[light]] # ") > lights);
 }
 
 TEST_CASE("a kind of object refuses a table its declaration accepts, at the table's or the key's line") {
@@ -385,11 +392,15 @@ TEST_CASE("a kind of object refuses a table its declaration accepts, at the tabl
     CHECK(errorOf("[[plane]]\nnormal = [0, 1, 0]\n") == "scene.toml:1: [[plane]]: a plane needs a normal, and either a point or an offset");
     CHECK(errorOf("[[sphere]]\ncenter = [0, 0, 3]\nradius = 1\ncolor = [1, 0]\n") ==
           "scene.toml:4: [[sphere]] color: expected an array of 3 numbers such as [0.0, 1.0, 0.0]");
-    // A kind registered twice is refused, naming both places.
-    const auto twice = [] {
-        registerShapeKind({"sphere", "again", {}, [](const ShapeValues&, Scene&) {}});
+    // A kind registered twice is refused, naming both places, a light under an object's name too
+    // (a scene file's table is one or the other).
+    const auto twice = [](const char* name, KindRole role) {
+        registerKind({name, "again", role, {}, [](const KindValues&, Scene&) {}});
     };
-    CHECK_THROWS_WITH_AS(twice(), doctest::Contains("the name 'sphere' (kind of object) is registered twice"), std::logic_error);
+    CHECK_THROWS_WITH_AS(twice("sphere", KindRole::Object), doctest::Contains("the name 'sphere' (kind of object or light) is registered twice"),
+                         std::logic_error);
+    CHECK_THROWS_WITH_AS(twice("sphere", KindRole::Light), doctest::Contains("the name 'sphere' (kind of object or light) is registered twice"),
+                         std::logic_error);
 }
 
 TEST_CASE("objects of every kind are kept in the order read, each kind in its array") {

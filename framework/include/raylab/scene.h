@@ -1,6 +1,7 @@
 #pragma once
 // The objects of a picture, its lights, and what the rays that miss every object see.
 
+#include "raylab/detail/light_groups.h"
 #include "raylab/detail/shape_groups.h"
 #include "raylab/light.h"
 #include "raylab/plane.h"
@@ -8,30 +9,47 @@
 
 #include <limits>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
-// The kinds of objects a scene may hold: the framework's, then those the course's labs bring (each
-// lab.toml's `shapes`, declared in its folder's shapes.h): CMake writes the list into
-// raylab/course_shapes.h. A closed list in each build, so that Scene tests every kind inline.
-#if __has_include("raylab/course_shapes.h")
-#include "raylab/course_shapes.h"
+// The kinds of objects and of lights a scene may hold: the framework's, then those the course's labs
+// bring (each lab.toml's `shapes` and `lights`, declared in its folder's shapes.h and lights.h): CMake
+// writes the lists into raylab/course_kinds.h. Closed lists in each build, so that Scene tests every
+// kind of object inline.
+#if __has_include("raylab/course_kinds.h")
+#include "raylab/course_kinds.h"
 #else
 #define RAYLAB_COURSE_SHAPES
+#define RAYLAB_COURSE_LIGHTS
 #endif
 
 namespace raylab {
 
-using SceneShapeKinds = ShapeKindList<SphereGeometry, Plane RAYLAB_COURSE_SHAPES>;
+using SceneShapeKinds = KindList<SphereGeometry, Plane RAYLAB_COURSE_SHAPES>;
 template <class Kind> concept SceneShapeKind = ShapeKind<Kind> && isOneOf<Kind>(SceneShapeKinds{});
 
+using SceneLightKinds = KindList<PointLight RAYLAB_COURSE_LIGHTS>;
+template <class Kind> concept SceneLightKind = LightKind<Kind> && isOneOf<Kind>(SceneLightKinds{});
+
 struct Scene {
-    std::vector<PointLight> lights; // none: nothing casts a shadow ray
+    std::vector<PointLight> lights; // the point lights; none: nothing casts a shadow ray
     Color background{0.5f, 0.5f, 0.5f};
 
     // Adds an object of any kind (shape.h): scene.add(SphereGeometry(centre, radius, colour)).
     template <SceneShapeKind Kind> void add(const Kind& object) {
         group<Kind>().objects.push_back(object);
         withKind(group<Kind>().objects.back());
+    }
+    // Adds a light of any kind (light.h); a PointLight goes to `lights`.
+    template <SceneLightKind Kind> void add(const Kind& light) { lightsOf<Kind>().push_back(light); }
+    // The lights of one kind, in the order added: lightsOf<PointLight>() is `lights`.
+    template <SceneLightKind Kind> const std::vector<Kind>& lightsOf() const {
+        return const_cast<Scene&>(*this).lightsOf<Kind>();
+    }
+    // Calls f(lights) for each kind's array of lights, in the order of SceneLightKinds.
+    template <class F> void forEachLightKind(F&& f) const {
+        f(lights);
+        std::apply([&](const auto&... group) { (f(group), ...); }, m_otherLights);
     }
     // The objects of one kind, in the order added.
     template <SceneShapeKind Kind> const std::vector<Kind>& all() const { return std::get<ShapesOf<Kind>>(m_groups).objects; }
@@ -75,8 +93,13 @@ private:
         static_cast<Shape&>(object).m_kind = kindIndex<Kind>(SceneShapeKinds{});
     }
     template <SceneShapeKind Kind> ShapesOf<Kind>& group() { return std::get<ShapesOf<Kind>>(m_groups); }
+    template <SceneLightKind Kind> std::vector<Kind>& lightsOf() {
+        if constexpr (std::is_same_v<Kind, PointLight>) return lights;
+        else return std::get<std::vector<Kind>>(m_otherLights);
+    }
 
     ShapeGroupsOf<SceneShapeKinds>::type m_groups;
+    OtherLightsOf<SceneLightKinds>::type m_otherLights;
 };
 
 inline glm::vec3 Shape::computeNormal(const glm::vec3& p) const { return normalOfKind(*this, m_kind, p, SceneShapeKinds{}); }

@@ -10,8 +10,9 @@
 // and, optionally, float distanceTo(const glm::vec3& p) const (how far p is from its surface: the
 // grader's rounding probe, src/shadow_rays.h). Scene keeps one array per kind and tests each array
 // with its kind's own code (raylab/scene.h); a scene file names the kind by the name it is registered
-// under (raylab/shape_registry.h).
+// under (raylab/kind_registry.h).
 
+#include "raylab/origin_shift.h"
 #include "raylab/texture.h"
 
 #include <glm/vec3.hpp>
@@ -35,13 +36,6 @@ private:
     static constexpr unsigned char kNoKind = 0xff;
     unsigned char m_kind = kNoKind; // its kind's place in SceneShapeKinds (scene.h)
     Color m_color;
-};
-
-// A change of origin: shift(p) is p - origin, computed in double (exact for two floats) and rounded
-// once to float. The renderer renders in a space whose origin is near the camera (src/render_space.h).
-struct OriginShift {
-    glm::vec3 origin{0.f};
-    glm::vec3 operator()(const glm::vec3& p) const { return glm::vec3(glm::dvec3(p) - glm::dvec3(origin)); }
 };
 
 } // namespace raylab

@@ -2,6 +2,7 @@
 // How Scene keeps its objects (scene.h): one array per kind, each tested by its kind's own code,
 // inline. Nothing here is a lab's to write.
 
+#include "raylab/detail/kind_list.h"
 #include "raylab/hit_record.h"
 #include "raylab/ray.h"
 #include "raylab/shape.h"
@@ -25,18 +26,6 @@ concept ShapeKind = std::derived_from<Kind, Shape> && std::copy_constructible<Ki
                         { s.shifted(shift) } -> std::same_as<Kind>;
                     };
 
-// A list of kinds; Scene's is SceneShapeKinds (scene.h).
-template <class... Kinds> struct ShapeKindList {};
-
-template <class Kind, class... Kinds> constexpr bool isOneOf(ShapeKindList<Kinds...>) { return (std::is_same_v<Kind, Kinds> || ...); }
-
-// Kind's place in the list (the list's length when it is not in it).
-template <class Kind, class... Kinds> constexpr unsigned char kindIndex(ShapeKindList<Kinds...>) {
-    unsigned char index = 0;
-    (void)((std::is_same_v<Kind, Kinds> || (++index, false)) || ...);
-    return index;
-}
-
 // The normal at p of `shape`, whose kind is number `kind` of Kind, Rest...: that kind's computeNormal,
 // called directly, as Scene::intersect calls each kind's intersect (the first kind's costs one
 // comparison); NaN for a kind not in the list.
@@ -45,7 +34,7 @@ template <class Kind, class... Rest> glm::vec3 normalOfKind(const Shape& shape, 
     if constexpr (sizeof...(Rest) == 0) return glm::vec3(std::numeric_limits<float>::quiet_NaN());
     else return normalOfKind<Rest...>(shape, kind - 1, p);
 }
-template <class... Kinds> glm::vec3 normalOfKind(const Shape& shape, unsigned kind, const glm::vec3& p, ShapeKindList<Kinds...>) {
+template <class... Kinds> glm::vec3 normalOfKind(const Shape& shape, unsigned kind, const glm::vec3& p, KindList<Kinds...>) {
     return normalOfKind<Kinds...>(shape, kind, p);
 }
 
@@ -84,7 +73,7 @@ template <ShapeKind Kind> struct ShapesOf {
 
 // One ShapesOf a kind, for each kind of the list.
 template <class List> struct ShapeGroupsOf;
-template <class... Kinds> struct ShapeGroupsOf<ShapeKindList<Kinds...>> {
+template <class... Kinds> struct ShapeGroupsOf<KindList<Kinds...>> {
     using type = std::tuple<ShapesOf<Kinds>...>;
 };
 
