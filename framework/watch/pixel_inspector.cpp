@@ -71,7 +71,7 @@ Answers askAgent(const fs::path& program, const fs::path& scenes, int lab, const
         const std::optional<std::uint64_t> item = parsed.message ? protocol::itemOf(*parsed.message) : std::nullopt;
         if (!item || *item < 1 || *item > calls.size()) continue;
         if (const auto* values = std::get_if<protocol::Values>(&*parsed.message); values && values->outputs.size() == 1 &&
-                                                                              protocol::outputsValid(*calls[*item - 1].probe, calls[*item - 1].inputs, values->outputs[0]))
+                                                                              calls[*item - 1].probe->fits(values->outputs[0]))
             answers.outputs[*item - 1] = values->outputs[0];
         if (const auto* todo = std::get_if<protocol::NotDone>(&*parsed.message))
             why(NotDoneYet(todo->lab, todo->function, todo->file, todo->line).what());

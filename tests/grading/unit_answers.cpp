@@ -138,7 +138,7 @@ TEST_SUITE("protocol session") {
         Session s;
         s.read({kHello, picture(1), protocol::Values{2, {{1., 0.}}}, value(3, 1.)});
         CHECK(violation(s.check("first"), "a function check was answered with something other than values"));
-        CHECK(violation(s.check("second"), "the output of computeNormal has the wrong size"));
+        CHECK(violation(s.check("second"), "the output of computeNormal is not of its probe's shape"));
         CHECK(s.reported.figures.at("fig").reason.find("protocol violation: a figure was answered") !=
               std::string::npos);
     }

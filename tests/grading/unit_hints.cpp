@@ -2,6 +2,10 @@
 // checks judged on made-up gradients (no agent runs). Lab 4's case is a suite of its own, skipped where
 // the course does not hand lab 4 out.
 #include "grader/judge/checks/checks.h"
+#include "grader/labs/lab1_first_image/probes.h"
+#include "grader/labs/lab2_primary_rays/probes.h"
+#include "grader/labs/lab3_sphere/probes.h"
+#include "grader/labs/lab4_lookat_camera/probes.h"
 #include "src/messages.h"
 #include "support/course.h"
 
@@ -23,6 +27,12 @@ namespace {
 using Fill = std::function<glm::dvec3(int i, int j, int width, int height)>;
 
 double ramp(int k, int n) { return n > 1 ? double(k) / (n - 1) : 0.; }
+
+// The camera the lookAt constructor builds on the frame u, v, w: the screen placed as updateViewport does.
+probes::BuiltCamera built(const probes::LookAtCamera& c, const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w) {
+    const double h = 2. * std::tan(glm::radians(c.fovy) / 2.), wide = h * c.width / c.height;
+    return {u, v, w, c.position, h, wide, c.position - w + v * (h / 2.) - u * (wide / 2.)};
+}
 
 using Answer = std::function<std::vector<double>(const protocol::Call&)>;
 // Every check of a lab (or the one named `only`) judged on what `answer` returns to its calls; its
@@ -47,14 +57,11 @@ std::vector<std::pair<std::string, std::string>> judge(int lab, const Answer& an
 // Lab 1's checks on the gradient `fill` draws.
 std::vector<std::pair<std::string, std::string>> judgeLab1(const Fill& fill) {
     return judge(1, [&fill](const protocol::Call& call) {
-        const int width = int(call.inputs[0]), height = int(call.inputs[1]);
-        std::vector<double> out;
+        const auto [width, height] = probes::fillGradient.inputs(call.inputs);
+        std::vector<glm::dvec3> pixels;
         for (int j = 0; j < height; ++j)
-            for (int i = 0; i < width; ++i) {
-                const glm::dvec3 p = fill(i, j, width, height);
-                out.insert(out.end(), {p.x, p.y, p.z});
-            }
-        return out;
+            for (int i = 0; i < width; ++i) pixels.push_back(fill(i, j, width, height));
+        return probes::fillGradient.answerNumbers(pixels);
     });
 }
 
@@ -109,11 +116,8 @@ TEST_CASE("lab 3: an inward normal is told to point outwards, a normal of length
         const auto messages = judge(
             3,
             [inward](const protocol::Call& call) {
-                const glm::dvec3 centre(call.inputs[0], call.inputs[1], call.inputs[2]),
-                    point(call.inputs[4], call.inputs[5], call.inputs[6]);
-                const double radius = call.inputs[3];
-                const glm::dvec3 n = inward ? (centre - point) / radius : point - centre;
-                return std::vector<double>{n.x, n.y, n.z};
+                const auto [sphere, point] = probes::computeNormal.inputs(call.inputs);
+                return probes::computeNormal.answerNumbers(inward ? (sphere.centre - point) / sphere.radius : point - sphere.centre);
             },
             name);
         REQUIRE(messages.size() == 1);
@@ -126,17 +130,17 @@ TEST_CASE("lab 3: an inward normal is told to point outwards, a normal of length
 
 TEST_CASE("lab 2: sx and sy swapped is not blamed on the position of a camera away from the origin") {
     // generateRay with sx and sy swapped, the viewport right (docs/conventions.md's default frame).
-    auto swapped = [](const protocol::Call& call) {
-        const double width = call.inputs[0], height = call.inputs[1];
-        const double h = 2. * std::tan(glm::radians(call.inputs[2]) / 2.), wide = h * width / height;
-        if (call.probe->name == "viewport") {
-            const glm::dvec3 topLeft(wide / 2., h / 2., 1.);
-            return std::vector<double>{h, wide, topLeft.x, topLeft.y, topLeft.z};
-        }
-        const glm::dvec3 position(call.inputs[3], call.inputs[4], call.inputs[5]);
-        const double sx = call.inputs[7], sy = call.inputs[6]; // the mistake
-        const glm::dvec3 d = glm::normalize(glm::dvec3(wide / 2. - sx * wide, h / 2. - sy * h, 1.));
-        return std::vector<double>{position.x, position.y, position.z, d.x, d.y, d.z};
+    const auto screen = [](int width, int height, double fovy) {
+        const double h = 2. * std::tan(glm::radians(fovy) / 2.);
+        return probes::Viewport{h, h * width / height, glm::dvec3(h * width / height / 2., h / 2., 1.)};
+    };
+    auto swapped = [&screen](const protocol::Call& call) {
+        if (call.probe == probes::viewport.spec())
+            return probes::viewport.answerNumbers(std::apply(screen, probes::viewport.inputs(call.inputs)));
+        const auto [camera, sx, sy] = probes::generateRay.inputs(call.inputs);
+        const probes::Viewport v = screen(camera.width, camera.height, camera.fovy);
+        const glm::dvec3 d = glm::normalize(glm::dvec3(v.width / 2. - sy * v.width, v.height / 2. - sx * v.height, 1.)); // the mistake
+        return probes::generateRay.answerNumbers({camera.position, d});
     };
     const auto messages = judge(2, swapped, "moved_camera");
     REQUIRE(messages.size() == 1);
@@ -154,17 +158,10 @@ TEST_CASE("lab 4: u and v made rightly from an unnormalized w are sent to w, and
     if (!raylab::test::labInCourse(std::filesystem::path(RAYLAB_SOURCE_DIR) / "labs", 4)) return;
     // The lookAt constructor with w = position - target, the rest as the handout says.
     auto unnormalizedW = [](const protocol::Call& call) {
-        if (call.probe->name != "lookAt") return std::vector<double>{1.};
-        const double width = call.inputs[0], height = call.inputs[1];
-        const glm::dvec3 position(call.inputs[2], call.inputs[3], call.inputs[4]),
-            target(call.inputs[5], call.inputs[6], call.inputs[7]), up(call.inputs[8], call.inputs[9], call.inputs[10]);
-        const glm::dvec3 w = position - target, u = glm::normalize(glm::cross(up, w)), v = glm::cross(w, u);
-        const double h = 2. * std::tan(glm::radians(call.inputs[11]) / 2.), wide = h * width / height;
-        const glm::dvec3 topLeft = position - w + v * (h / 2.) - u * (wide / 2.);
-        std::vector<double> out;
-        for (const glm::dvec3& x : {u, v, w, position}) out.insert(out.end(), {x.x, x.y, x.z});
-        out.insert(out.end(), {h, wide, topLeft.x, topLeft.y, topLeft.z});
-        return out;
+        if (call.probe != probes::lookAt.spec()) return probes::lookAtRefused.answerNumbers(true);
+        const auto [c] = probes::lookAt.inputs(call.inputs);
+        const glm::dvec3 w = c.position - c.target, u = glm::normalize(glm::cross(c.up, w)), v = glm::cross(w, u);
+        return probes::lookAt.answerNumbers(built(c, u, v, w));
     };
     for (const char* name : {"four_cameras", "viewport_follows"}) {
         const auto messages = judge(4, unnormalizedW, name);
@@ -240,19 +237,12 @@ TEST_SUITE("hints: lab 4") {
 // the screen placed in it as updateViewport does.
 Answer lookAtAnswer(std::function<void(const glm::dvec3& w, const glm::dvec3& up, glm::dvec3& u, glm::dvec3& v)> frame) {
     return [frame](const protocol::Call& call) {
-        if (call.probe->name != "lookAt") return std::vector<double>{1.};
-        const double width = call.inputs[0], height = call.inputs[1];
-        const glm::dvec3 position(call.inputs[2], call.inputs[3], call.inputs[4]),
-            target(call.inputs[5], call.inputs[6], call.inputs[7]), up(call.inputs[8], call.inputs[9], call.inputs[10]);
-        const glm::dvec3 w = glm::normalize(position - target);
+        if (call.probe != probes::lookAt.spec()) return probes::lookAtRefused.answerNumbers(true);
+        const auto [c] = probes::lookAt.inputs(call.inputs);
+        const glm::dvec3 w = glm::normalize(c.position - c.target);
         glm::dvec3 u, v;
-        frame(w, up, u, v);
-        const double h = 2. * std::tan(glm::radians(call.inputs[11]) / 2.), wide = h * width / height;
-        const glm::dvec3 topLeft = position - w + v * (h / 2.) - u * (wide / 2.);
-        std::vector<double> out;
-        for (const glm::dvec3& x : {u, v, w, position}) out.insert(out.end(), {x.x, x.y, x.z});
-        out.insert(out.end(), {h, wide, topLeft.x, topLeft.y, topLeft.z});
-        return out;
+        frame(w, c.up, u, v);
+        return probes::lookAt.answerNumbers(built(c, u, v, w));
     };
 }
 

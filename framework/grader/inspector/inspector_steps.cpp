@@ -34,25 +34,14 @@ bool hasInspector(const std::string& lab) {
     return !inspectorSteps(lab, InspectorStage::Ray).empty() || !inspectorSteps(lab, InspectorStage::Path).empty();
 }
 
-int Inspection::call(const protocol::ProbeSpec* probe, std::vector<double> inputs) {
-    if (probe == nullptr) throw std::logic_error("raylab watch: an inspector step asks a probe that is not registered");
-    m_calls.push_back({probe, std::move(inputs)});
+int Inspection::call(protocol::Call call) {
+    m_calls.push_back(std::move(call));
     return int(m_calls.size()) - 1;
 }
 
-StudentValue values(int call, std::size_t from, std::size_t count) {
-    return [=](const Outputs& outputs) -> Json {
-        if (call < 0 || std::size_t(call) >= outputs.size()) return {};
-        const std::vector<double>& out = outputs[std::size_t(call)];
-        if (count == 0) return out.size() > from ? Json(out[from] != 0.) : Json();
-        if (out.size() < from + count) return {};
-        Json list = Json::array();
-        for (std::size_t k = from; k < from + count; ++k) list.push_back(std::isfinite(out[k]) ? Json(out[k]) : Json());
-        return count == 1 ? list.at(0) : list;
-    };
-}
-
-Json vec(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
+Json shown(double value) { return std::isfinite(value) ? Json(value) : Json(); }
+Json shown(bool value) { return Json(value); }
+Json shown(const glm::dvec3& value) { return Json::array({shown(value.x), shown(value.y), shown(value.z)}); }
 
 Json PixelContext::picturePixel(const std::string& kind) const {
     std::filesystem::path file = images / (figure + "." + kind + ".png");

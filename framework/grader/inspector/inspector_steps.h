@@ -16,7 +16,7 @@
 //
 // The lab is the grading folder's (RAYLAB_LAB_ID, its folder's name, which CMake defines for it).
 
-#include "grader/protocol/protocol.h"
+#include "grader/protocol/probe.h"
 #include "src/name_registry.h"
 #include "src/scene_file.h"
 
@@ -25,6 +25,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <type_traits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -76,8 +77,8 @@ struct PixelContext {
 
 class Inspection {
 public:
-    // Asks `probe` of the student's code on `inputs`: the index of the call, for values().
-    int call(const protocol::ProbeSpec* probe, std::vector<double> inputs);
+    // Asks the student's code a probe's call (on the reference's inputs): the index of the call, for answerOf().
+    int call(protocol::Call call);
     void add(Row row) { m_rows.push_back(std::move(row)); }
 
     const std::vector<Row>& rows() const { return m_rows; }
@@ -88,10 +89,21 @@ private:
     std::vector<protocol::Call> m_calls;
 };
 
-// `count` outputs of call `call` from `from`: a number (count 1), a list (more), a yes or no (count 0:
-// outputs[from] != 0); a value that is not finite as null; null when the call gave no outputs.
-StudentValue values(int call, std::size_t from, std::size_t count);
-Json vec(const glm::dvec3& v);
+// A value as the page shows it: a number, a list of three, a yes or no; a number that is not finite as null.
+Json shown(double value);
+Json shown(bool value);
+Json shown(const glm::dvec3& value);
+inline Json shown(Json value) { return value; }
+
+// The student's value from call `call` of `probe`: what `get` (a member of its answer, or any
+// function of it, which may give Json, null for none) takes from the answer; null when the call gave none.
+template <class Answer, class... Inputs, class Get = std::identity>
+StudentValue answerOf(const protocol::Probe<Answer(Inputs...)>& probe, int call, Get get = {}) {
+    return [&probe, call, get](const Outputs& outputs) -> Json {
+        if (call < 0 || std::size_t(call) >= outputs.size() || outputs[std::size_t(call)].empty()) return {};
+        return shown(std::invoke(get, probe.answer(outputs[std::size_t(call)])));
+    };
+}
 
 // A lab's step: adds its rows for the pixel (none when the figure is not one it follows).
 using InspectorStep = void (*)(PixelContext& pixel, Inspection& inspection);

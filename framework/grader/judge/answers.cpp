@@ -49,8 +49,8 @@ bool accept(Ledger& ledger, Item& item, const protocol::Answer& answer, std::str
         return false;
     }
     for (std::size_t k = 0; k < calls.size(); ++k)
-        if (!protocol::outputsValid(*calls[k].probe, calls[k].inputs, values->outputs[k])) {
-            violation = "the output of " + calls[k].probe->name + " has the wrong size";
+        if (!calls[k].probe->fits(values->outputs[k])) {
+            violation = "the output of " + calls[k].probe->name + " is not of its probe's shape";
             return false;
         }
     // A check whose message is broken (a placeholder without a value: the course's mistake) costs

@@ -146,11 +146,6 @@ const ProbeSpec* probeNamed(std::string_view name) {
     return probe != nullptr ? &probe->value : nullptr;
 }
 
-bool outputsValid(const ProbeSpec& probe, std::span<const double> inputs, std::span<const double> outputs) {
-    if (probe.validOutputs != nullptr) return probe.validOutputs(inputs, outputs);
-    return outputs.size() == probe.outputs;
-}
-
 std::string serialize(const Request& request) {
     if (const auto* r = std::get_if<RenderRequest>(&request))
         return dump({{"type", "render"},

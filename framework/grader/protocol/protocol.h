@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <span>
 #include <string>
 #include <string_view>
@@ -26,12 +27,12 @@ namespace raylab::grader::protocol {
 inline constexpr int kVersion = 1;
 
 // What the child can be asked to call: each probe calls one student function in a fixed way. A
-// lab's grading folder declares its probes (framework/grader/labs/<lab>/probes.h), by name.
+// lab's grading folder declares its probes, typed (framework/grader/labs/<lab>/probes.h, probe.h),
+// by name; this is what the protocol keeps of one.
 struct ProbeSpec {
     std::string name;
-    std::size_t inputs;
-    std::size_t outputs; // 0: `validOutputs` decides from the inputs or the outputs
-    bool (*validOutputs)(std::span<const double> inputs, std::span<const double> outputs) = nullptr;
+    std::size_t inputs;                        // how many numbers a call sends
+    bool (*fits)(std::span<const double> answer); // whether the child's numbers are an answer
 };
 
 // Keeps `spec` for the life of the program (at static initialisation, from a lab's probes.h) and
@@ -41,12 +42,9 @@ struct ProbeSpec {
 const ProbeSpec* registerProbe(ProbeSpec spec, SourcePlace where = SourcePlace::here());
 // The registered probe of that name; nullptr when there is none.
 const ProbeSpec* probeNamed(std::string_view name);
-// Whether `outputs` has the size the probe gives for `inputs`.
-bool outputsValid(const ProbeSpec& probe, std::span<const double> inputs, std::span<const double> outputs);
 
-// The largest image or point list an honest answer holds; anything larger is refused unread.
+// The largest image an honest answer holds; anything larger is refused unread.
 inline constexpr double kMaxPixels = 4096. * 4096.;
-inline constexpr double kMaxRays = 1 << 16;
 
 struct Call {
     const ProbeSpec* probe;
@@ -56,15 +54,18 @@ struct Call {
 // A call's numbers (its inputs, or its outputs), read in order.
 class NumberReader {
 public:
-    explicit NumberReader(const std::vector<double>& values) : m_values(values) {}
-    double number() { return m_values.at(m_next++); }
+    explicit NumberReader(std::span<const double> values) : m_values(values) {}
+    double number() {
+        if (m_next >= m_values.size()) throw std::out_of_range("NumberReader: no number left");
+        return m_values[m_next++];
+    }
     glm::dvec3 vec3() {
         const double x = number(), y = number();
         return {x, y, number()};
     }
 
 private:
-    const std::vector<double>& m_values;
+    std::span<const double> m_values;
     std::size_t m_next = 0;
 };
 

@@ -147,10 +147,6 @@ glm::dvec3 CaseRandom::unitVector() {
     }
 }
 
-void appendInputs(std::vector<double>& inputs, const glm::dvec3& v) {
-    inputs.insert(inputs.end(), {v.x, v.y, v.z});
-}
-
 namespace {
 
 // Built on first use: the labs' checks register during static initialisation, in any order of files.

@@ -66,9 +66,6 @@ std::string relation(double got, double expected, double tolerance);
 std::string show(double v);
 std::string show(const glm::dvec3& v);
 
-// The outputs of one call, read in order.
-using Outputs = protocol::NumberReader;
-
 struct FunctionCheck {
     std::string id; // as its lab's lab.toml declares it
     std::vector<protocol::Call> calls;
@@ -132,9 +129,6 @@ std::vector<FunctionCheck> labChecks(const LabDescription& lab, CaseRandom& rand
 // Every lab's checks in the order of the labs, their drawn cases from `seed`. Throws as labChecks,
 // and when checks are registered for a lab that no lab.toml describes.
 std::vector<FunctionCheck> functionChecks(const LabCatalog& labs, std::uint64_t seed);
-
-// Inputs helpers: a call's inputs from numbers and vectors, in order.
-void appendInputs(std::vector<double>& inputs, const glm::dvec3& v);
 
 } // namespace raylab::grader
 

@@ -17,14 +17,22 @@ namespace {
 // no more, so the checks allow one level.
 constexpr double kLevel = 1.01 / 255.;
 
-// The texture a call returned, W x H.
+// The texture a call returned, W x H, row by row.
 struct Gradient {
     int width, height;
-    const std::vector<double>& values;
-    glm::dvec3 pixel(int i, int j) const {
-        const std::size_t k = 3 * (std::size_t(j) * std::size_t(width) + std::size_t(i));
-        return {values[k], values[k + 1], values[k + 2]};
+    std::vector<glm::dvec3> pixels;
+    // Whether it holds W x H pixels, as the judging that reads them needs: another count is the
+    // student's answer, wrong.
+    bool expectSize(Judge& judge) const {
+        const std::size_t count = std::size_t(width) * std::size_t(height);
+        // "5 x 3 image, W x H: expected 15, got 14": the count of pixels, in the lab's existing words.
+        const std::string what = tr("what.lab1.image_pixel", {{"width", std::to_string(width)},
+                                                              {"height", std::to_string(height)},
+                                                              {"pixel", "W x H"}});
+        return judge.expectTrue(what, pixels.size() == count, std::to_string(count), std::to_string(pixels.size()),
+                                tr("hint.lab1.every_pixel"));
     }
+    glm::dvec3 pixel(int i, int j) const { return pixels[std::size_t(j) * std::size_t(width) + std::size_t(i)]; }
     glm::dvec3 expected(int i, int j) const {
         return {width > 1 ? double(i) / (width - 1) : 0., height > 1 ? double(j) / (height - 1) : 0., 0.};
     }
@@ -54,15 +62,18 @@ struct Size {
 };
 
 // A fillGradient check: one call a size, the handout's then those drawn at grading time; `judge`
-// receives the textures in that order.
+// receives the textures in that order, once each holds its W x H pixels.
 FunctionCheck gradientCheck(std::string name, std::vector<Size> sizes,
                             std::function<void(const std::vector<Gradient>& textures, Judge& judge)> judge) {
     std::vector<protocol::Call> calls;
-    for (const Size& s : sizes) calls.push_back({probes::fillGradient, {double(s.width), double(s.height)}});
+    for (const Size& s : sizes) calls.push_back(probes::fillGradient(s.width, s.height));
     return {std::move(name), std::move(calls), [sizes, judge](const auto& out, Judge& j) {
                 std::vector<Gradient> textures;
-                for (std::size_t k = 0; k < sizes.size(); ++k) textures.push_back({sizes[k].width, sizes[k].height, out[k]});
-                judge(textures, j);
+                for (std::size_t k = 0; k < sizes.size(); ++k)
+                    textures.push_back({sizes[k].width, sizes[k].height, probes::fillGradient.answer(out[k])});
+                bool sized = true;
+                for (const Gradient& g : textures) sized = g.expectSize(j) && sized;
+                if (sized) judge(textures, j);
             }};
 }
 

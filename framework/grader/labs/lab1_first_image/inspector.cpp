@@ -5,18 +5,28 @@
 #include "grader/inspector/inspector_steps.h"
 #include "probes.h"
 
+#include <vector>
+
 namespace raylab::grader::inspector {
 
 namespace {
 
+// The colour the student's fillGradient wrote at pixel (x, y) of a W x H texture (call `call`); null
+// when it gave no texture or one of another size, whose pixels are not where the figure's are.
+StudentValue writtenColour(int call, int width, int height, int x, int y) {
+    return answerOf(probes::fillGradient, call, [=](const std::vector<glm::dvec3>& pixels) -> Json {
+        if (pixels.size() != std::size_t(width) * std::size_t(height)) return {};
+        return shown(pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]);
+    });
+}
+
 void gradient(PixelContext& pixel, Inspection& inspection) {
     const SceneDescription& d = pixel.scene;
     if (d.shading != "gradient" || pixel.coloured) return; // its name in this lab's shadings.cpp
-    const int call = inspection.call(probes::fillGradient, {double(d.width), double(d.height)});
-    const std::size_t first = 3 * (std::size_t(pixel.y) * std::size_t(d.width) + std::size_t(pixel.x));
+    const int call = inspection.call(probes::fillGradient(d.width, d.height));
     inspection.add({.key = "lab1_pixel", .lab = 1, .reference = Json::array({pixel.x, pixel.y, d.width, d.height})});
     inspection.add({.key = "lab1_colour", .function = "fillGradient", .lab = 1, .reference = pixel.picturePixel("reference"),
-                    .student = values(call, first, 3), .inBytes = true});
+                    .student = writtenColour(call, d.width, d.height, pixel.x, pixel.y), .inBytes = true});
     pixel.coloured = true;
 }
 

@@ -8,18 +8,17 @@ namespace raylab::agent {
 
 namespace {
 
-std::vector<double> fillGradientProbe(ProbeInputs in) {
-    const int width = in.integer(), height = in.integer();
+std::vector<glm::dvec3> fillGradientProbe(int width, int height) {
     Texture t(width, height);
     for (int j = 0; j < height; ++j) // a pixel never written stays visible
         for (int i = 0; i < width; ++i)
             t.setPixel(i, j, Color(-1.f));
     fillGradient(t);
-    std::vector<double> out;
+    std::vector<glm::dvec3> pixels;
     for (int j = 0; j < height; ++j)
         for (int i = 0; i < width; ++i)
-            appendOutputs(out, t.getPixel(i, j));
-    return out;
+            pixels.emplace_back(t.getPixel(i, j));
+    return pixels;
 }
 
 } // namespace

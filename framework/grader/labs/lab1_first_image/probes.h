@@ -1,16 +1,17 @@
 #pragma once
-// Lab 1's probes as both sides know them: the parent sends their names, the agent answers them
-// (probes.cpp) and the parent checks the size of the answer.
-#include "grader/protocol/protocol.h"
+// Lab 1's probes, typed once for both sides (grader/protocol/probe.h): the parent calls them and reads
+// their answers (checks.cpp, inspector.cpp), the agent answers them (probes.cpp).
+
+#include "grader/protocol/probe.h"
+
+#include <vector>
 
 namespace raylab::grader::probes {
+inline namespace lab1_first_image {
 
-// 3 W H values: the W x H texture a call gets.
-inline bool validGradient(std::span<const double> inputs, std::span<const double> outputs) {
-    return inputs[0] * inputs[1] <= protocol::kMaxPixels && double(outputs.size()) == 3. * inputs[0] * inputs[1];
-}
+// The W x H texture fillGradient wrote, row by row, its every pixel pre-filled with -1 (one never
+// written shows). A list: the parent judges whether it holds W x H pixels.
+inline const protocol::Probe<std::vector<glm::dvec3>(int width, int height)> fillGradient{"fillGradient"};
 
-// (W, H) -> the W x H texture fillGradient wrote (pre-filled with -1), 3 W H values
-inline const protocol::ProbeSpec* const fillGradient = protocol::registerProbe({"fillGradient", 2, 0, &validGradient});
-
+} // namespace lab1_first_image
 } // namespace raylab::grader::probes

@@ -15,10 +15,8 @@ namespace raylab::grader {
 
 namespace {
 
-struct Camera {
-    int width, height;
-    double fovy;
-    glm::dvec3 position{0.};
+// The probe's camera, with what the checks expect of it and the calls that ask the student's code.
+struct Camera : probes::DefaultFrameCamera {
     double viewportHeight() const { return lab2::viewport(fovy, width, height).height; }
     double viewportWidth() const { return lab2::viewport(fovy, width, height).width; }
     glm::dvec3 topLeft() const { return lab2::topLeft(lab2::defaultFrame(position), lab2::viewport(fovy, width, height)); }
@@ -27,10 +25,8 @@ struct Camera {
     static glm::dvec3 direction(double sx, double sy, double height, double width) {
         return lab2::direction(lab2::defaultFrame(glm::dvec3(0.)), {height, width}, sx, sy);
     }
-    protocol::Call viewport() const { return {probes::viewport, {double(width), double(height), fovy}}; }
-    protocol::Call ray(double sx, double sy) const {
-        return {probes::generateRay, {double(width), double(height), fovy, position.x, position.y, position.z, sx, sy}};
-    }
+    protocol::Call viewport() const { return probes::viewport(width, height, fovy); }
+    protocol::Call ray(double sx, double sy) const { return probes::generateRay(*this, sx, sy); }
     std::string name() const {
         return tr("what.lab2.camera", {{"width", std::to_string(width)}, {"height", std::to_string(height)}, {"fovy", show(fovy)}});
     }
@@ -49,9 +45,8 @@ std::vector<Suspect<double>> heightSuspects(const Camera& c) {
 }
 
 void expectViewport(Judge& judge, const Camera& c, const std::vector<double>& out, bool named) {
-    Outputs o(out);
     const std::string suffix = named ? " (" + c.name() + ")" : "";
-    const double height = o.number(), width = o.number();
+    const auto [height, width, topLeft] = probes::viewport.answer(out);
     const bool heightRight = judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}) + suffix, height,
                                               c.viewportHeight(), 1e-5, tr("hint.lab2.viewport_height"), heightSuspects(c));
     const double aspect = double(c.width) / c.height;
@@ -64,14 +59,7 @@ void expectViewport(Judge& judge, const Camera& c, const std::vector<double>& ou
         judge.expectNear(widthWhat, width, c.viewportWidth(), 1e-5, tr("hint.lab2.viewport_width", {{"aspect", show(aspect)}}),
                          {{c.viewportHeight() / aspect, tr("hint.lab2.aspect_inverted")},
                           {height / aspect, tr("hint.lab2.aspect_inverted")}});
-    judge.expectNear(tr("what.lab2.top_left") + suffix, o.vec3(), c.topLeft(), 1e-5, tr("hint.lab2.top_left"));
-}
-
-// What the GenerateRay probe returns: the origin, then the direction.
-glm::dvec3 rayDirection(const std::vector<double>& out) {
-    Outputs o(out);
-    o.vec3();
-    return o.vec3();
+    judge.expectNear(tr("what.lab2.top_left") + suffix, topLeft, c.topLeft(), 1e-5, tr("hint.lab2.top_left"));
 }
 
 struct Point {
@@ -87,9 +75,9 @@ struct SeenViewport {
     // through it say nothing of generateRay's code, so they are then expected through the right one.
     bool sized;
     SeenViewport(const Camera& c, const std::vector<double>& out) {
-        Outputs o(out);
-        height = o.number();
-        width = o.number();
+        const probes::Viewport seen = probes::viewport.answer(out);
+        height = seen.height;
+        width = seen.width;
         right = std::abs(height - c.viewportHeight()) <= 1e-5 && std::abs(width - c.viewportWidth()) <= 1e-5;
         sized = std::isfinite(height) && std::isfinite(width) && std::abs(height) > 1e-6 && std::abs(width) > 1e-6;
     }
@@ -104,12 +92,11 @@ void expectRays(Judge& judge, const Camera& c, const SeenViewport& viewport, con
     const std::string inherited =
         tr("hint.lab2.inherited_viewport", {{"height", show(viewport.height)}, {"width", show(viewport.width)}});
     for (std::size_t k = 0; k < points.size(); ++k) {
-        Outputs o(out[first + k]);
+        const auto [origin, direction] = probes::generateRay.answer(out[first + k]);
         const Point& p = points[k];
         const std::string what = tr("what.lab2.ray_direction_at", {{"point", p.name}});
-        judge.expectNear(tr("what.lab2.ray_origin_at", {{"point", p.name}}), o.vec3(), c.position, 1e-6,
+        judge.expectNear(tr("what.lab2.ray_origin_at", {{"point", p.name}}), origin, c.position, 1e-6,
                          tr("hint.lab2.ray_origin"));
-        const glm::dvec3 direction = o.vec3();
         // A viewport with no size (zero, not finite) is not inherited: the rays are judged against the right one.
         const bool ownViewport = viewport.right || !viewport.sized;
         const glm::dvec3 expected = ownViewport ? c.direction(p.sx, p.sy)
@@ -147,8 +134,8 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
          [square, wide](const auto& out, Judge& judge) {
       const std::string hint = tr("hint.lab2.fovy_degrees_halved");
       for (const auto& [c, o] : {std::pair{square, out[0]}, std::pair{wide, out[1]}})
-          judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}), o[0], c.viewportHeight(), 1e-5,
-                           hint, heightSuspects(c));
+          judge.expectNear(tr("what.lab2.viewport_height", {{"fovy", show(c.fovy)}}), probes::viewport.answer(o).height,
+                           c.viewportHeight(), 1e-5, hint, heightSuspects(c));
          }});
 
     std::vector<Point> corners{{0.5, 0.5, tr("what.lab2.centre", {{"sx", show(0.5)}, {"sy", show(0.5)}})},
@@ -191,19 +178,17 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     checks.add(
         {"unit_directions", calls, [screen](const auto& out, Judge& judge) {
       // A direction that ignores (sx, sy), such as Ray{}'s, is a unit vector without normalizing anything.
-      const glm::dvec3 first = rayDirection(out[0]);
+      const glm::dvec3 first = probes::generateRay.answer(out[0]).direction;
       bool follows = false;
       for (std::size_t k = 1; k < screen.size(); ++k)
-          follows = follows || !withinEach(rayDirection(out[k]), first, 1e-6);
+          follows = follows || !withinEach(probes::generateRay.answer(out[k]).direction, first, 1e-6);
       if (!judge.expectTrue(tr("what.lab2.directions_follow"), follows, tr("what.lab2.directions_differ"),
                             tr("what.lab2.one_direction", {{"direction", show(first)}}), tr("hint.lab2.one_direction")))
           return;
       for (std::size_t k = 0; k < screen.size(); ++k) {
-          Outputs o(out[k]);
-          o.vec3();
           if (!judge.expectNear(
                   tr("what.lab2.direction_length", {{"sx", show(screen[k].first)}, {"sy", show(screen[k].second)}}),
-                  glm::length(o.vec3()), 1., 1e-5, tr("hint.lab2.normalize")))
+                  glm::length(probes::generateRay.answer(out[k]).direction), 1., 1e-5, tr("hint.lab2.normalize")))
               return;
       }
          }});
@@ -223,10 +208,8 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
                    for (const auto& [c, o, viewport, atOrigin, x, y] :
                         {std::tuple{away, out[0], out[2], out[4], 0., 0.},
                          std::tuple{drawnAway, out[1], out[3], out[5], sx, sy}}) {
-                       Outputs here(o), there(atOrigin);
-                       here.vec3();
-                       there.vec3();
-                       const bool sameAsAtOrigin = withinEach(here.vec3(), there.vec3(), 1e-5);
+                       const bool sameAsAtOrigin = withinEach(probes::generateRay.answer(o).direction,
+                                                              probes::generateRay.answer(atOrigin).direction, 1e-5);
                        expectRays(judge, c, SeenViewport(c, viewport),
                                   {{x, y, tr("what.lab2.away_point", {{"sx", show(x)}, {"sy", show(y)},
                                                                       {"position", show(c.position)}})}},

@@ -15,13 +15,13 @@ void defaultCamera(PixelContext& pixel, Inspection& inspection) {
     const double sx = (pixel.x + 0.5) / d.width, sy = (pixel.y + 0.5) / d.height;
     const glm::dvec3 position(d.camera.position);
     const ReferenceRay ray{position, lab2::direction(lab2::defaultFrame(position), lab2::viewport(d.camera.fovy, d.width, d.height), sx, sy)};
-    std::vector<double> in{double(d.width), double(d.height), double(d.camera.fovy), position.x, position.y, position.z, sx, sy};
-    const int c = inspection.call(probes::generateRay, in);
+    const probes::DefaultFrameCamera camera{d.width, d.height, d.camera.fovy, position};
+    const int c = inspection.call(probes::generateRay(camera, sx, sy));
     inspection.add({.key = "lab2_screen", .lab = 2, .reference = Json::array({sx, sy})});
-    inspection.add({.key = "lab2_origin", .function = "PerspectiveCamera::generateRay", .lab = 2, .reference = vec(ray.origin),
-                    .student = values(c, 0, 3), .gives = "ray"});
-    inspection.add({.key = "lab2_direction", .function = "PerspectiveCamera::generateRay", .lab = 2, .reference = vec(ray.direction),
-                    .student = values(c, 3, 3), .gives = "ray"});
+    inspection.add({.key = "lab2_origin", .function = "PerspectiveCamera::generateRay", .lab = 2, .reference = shown(ray.origin),
+                    .student = answerOf(probes::generateRay, c, &probes::PrimaryRay::origin), .gives = "ray"});
+    inspection.add({.key = "lab2_direction", .function = "PerspectiveCamera::generateRay", .lab = 2, .reference = shown(ray.direction),
+                    .student = answerOf(probes::generateRay, c, &probes::PrimaryRay::direction), .gives = "ray"});
     pixel.ray = ray;
 }
 

@@ -9,24 +9,17 @@ namespace raylab::agent {
 
 namespace {
 
-std::vector<double> viewportProbe(ProbeInputs in) {
-    const int width = in.integer(), height = in.integer();
-    const PerspectiveCamera camera(width, height, in.real());
-    std::vector<double> out{camera.viewportHeight(), camera.viewportWidth()};
-    appendOutputs(out, camera.topLeft());
-    return out;
+namespace probes = grader::probes;
+
+probes::Viewport viewportProbe(int width, int height, double fovy) {
+    const PerspectiveCamera camera(width, height, float(fovy));
+    return {camera.viewportHeight(), camera.viewportWidth(), camera.topLeft()};
 }
 
-std::vector<double> generateRayProbe(ProbeInputs in) {
-    const int width = in.integer(), height = in.integer();
-    const float fovy = in.real();
-    const PerspectiveCamera camera(width, height, in.vec3(), fovy);
-    const float sx = in.real();
-    const Ray ray = camera.generateRay(sx, in.real());
-    std::vector<double> out;
-    appendOutputs(out, ray.origin);
-    appendOutputs(out, ray.direction);
-    return out;
+probes::PrimaryRay generateRayProbe(probes::DefaultFrameCamera c, double sx, double sy) {
+    const PerspectiveCamera camera(c.width, c.height, glm::vec3(c.position), float(c.fovy));
+    const Ray ray = camera.generateRay(float(sx), float(sy));
+    return {ray.origin, ray.direction};
 }
 
 } // namespace

@@ -21,14 +21,9 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-struct Sphere {
-    glm::dvec3 centre;
-    double radius;
-};
-struct Ray {
-    glm::dvec3 origin, direction;
-    glm::dvec3 at(double t) const { return origin + t * direction; }
-};
+using probes::Hit;
+using probes::Ray;
+using probes::Sphere;
 
 const Sphere kSphere{{0., 0., 3.}, 1.};
 const Ray kAlongZ{{0., 0., 0.}, {0., 0., 1.}}; // from the origin towards kSphere
@@ -47,25 +42,14 @@ struct Case {
     bool anyHit = false;
 };
 
-protocol::Call call(const Case& c) {
-    std::vector<double> in;
-    appendInputs(in, c.sphere.centre);
-    in.push_back(c.sphere.radius);
-    appendInputs(in, c.ray.origin);
-    appendInputs(in, c.ray.direction);
-    in.insert(in.end(), {c.tMin, c.tMax});
-    return {probes::intersect, in};
-}
+protocol::Call call(const Case& c) { return probes::intersect(c.sphere, c.ray, c.tMin, c.tMax); }
 
 std::optional<lab3::Roots> roots(const Sphere& s, const Ray& r) { return lab3::roots(s.centre, s.radius, r.origin, r.direction); }
 std::optional<double> nearestHit(const Sphere& s, const Ray& r) { return lab3::nearestHit(s.centre, s.radius, r.origin, r.direction); }
 
 
 bool judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
-    Outputs o(out);
-    const bool found = o.number() != 0.;
-    const double t = o.number();
-    const glm::dvec3 position = o.vec3();
+    const auto [found, t, position] = probes::intersect.answer(out);
     if (c.t >= 0.) {
         if (!found) {
             judge.fail(c.what, c.anyHit ? tr("what.lab3.a_hit") : tr("what.lab3.hit_at", {{"t", show(c.t)}}),
@@ -112,9 +96,7 @@ void addFarIntersect(LabChecks& checks, const std::string& name, std::vector<Cas
     for (const Case& c : cases)
         calls.push_back(call(c));
     checks.add({name, calls, [cases](const auto& out, Judge& judge) {
-                   Outputs near(out[0]);
-                   const bool found = near.number() != 0.;
-                   const double t = near.number();
+                   const auto [found, t, position] = probes::intersect.answer(out[0]);
                    const bool rootChoiceRight = found && std::abs(t - 2.) <= 1e-5;
                    for (std::size_t k = 0; k < cases.size(); ++k) {
                        Case c = cases[k];
@@ -142,19 +124,6 @@ Ray rayTowards(CaseRandom& random, const Sphere& s, double offset) {
     const glm::dvec3 origin = CaseRandom::asFloat(s.centre - axis * (s.radius * random.uniform(3., 8.)));
     const glm::dvec3 aim = s.centre + side * (offset * s.radius);
     return {origin, CaseRandom::asFloat(glm::normalize(aim - origin))};
-}
-
-// The Li call of a one-sphere scene.
-protocol::Call liCall(int shading, const Sphere& s, const glm::dvec3& colour, const glm::dvec3& background,
-                      const Ray& r) {
-    std::vector<double> in{double(shading)};
-    appendInputs(in, s.centre);
-    in.push_back(s.radius);
-    appendInputs(in, colour);
-    appendInputs(in, background);
-    appendInputs(in, r.origin);
-    appendInputs(in, r.direction);
-    return {probes::li, in};
 }
 
 using lab3::kCosine;
@@ -191,14 +160,6 @@ std::vector<Suspect<glm::dvec3>> shadingSuspects(const LiCase& c) {
             {c.colour * std::max(std::cos(-glm::dot(d, n)), 0.), tr("hint.lab3.cos_of_dot")}};
 }
 
-protocol::Call normalCall(const Sphere& s, const glm::dvec3& point) {
-    std::vector<double> in;
-    appendInputs(in, s.centre);
-    in.push_back(s.radius);
-    appendInputs(in, point);
-    return {probes::computeNormal, in};
-}
-
 // What Li returns for the hit (or miss) `intersect` gave: the background, or the shading at that hit
 // with the true normal there.
 glm::dvec3 liForHit(const LiCase& c, bool found, double t) {
@@ -213,24 +174,22 @@ void addLi(LabChecks& checks, const std::string& name, std::vector<LiCase> cases
            SourcePlace where = SourcePlace::here()) {
     std::vector<protocol::Call> calls;
     for (const LiCase& c : cases)
-        calls.push_back(liCall(c.shading, c.sphere, c.colour, c.background, c.ray));
+        calls.push_back(probes::li(c.shading, c.sphere, c.colour, c.background, c.ray));
     const std::size_t hitsAt = calls.size(); // intersect's answer for case k is at hitsAt + k
     for (const LiCase& c : cases) calls.push_back(call(Case{"", c.sphere, c.ray, 0., kInf, -1., 1e-5, ""}));
     std::vector<std::size_t> normalAt(cases.size(), 0); // the normal call of a cosine hit, else 0
     for (std::size_t k = 0; k < cases.size(); ++k)
         if (const std::optional<double> t = nearestHit(cases[k].sphere, cases[k].ray); t && cases[k].shading == kCosine) {
             normalAt[k] = calls.size();
-            calls.push_back(normalCall(cases[k].sphere, CaseRandom::asFloat(cases[k].ray.at(*t))));
+            calls.push_back(probes::computeNormal(cases[k].sphere, CaseRandom::asFloat(cases[k].ray.at(*t))));
         }
     checks.add({name, calls, [cases, normalAt, hitsAt](const auto& out, Judge& judge) {
                    for (std::size_t k = 0; k < cases.size(); ++k) {
                        const LiCase& c = cases[k];
-                       const glm::dvec3 got = Outputs(out[k]).vec3();
+                       const glm::dvec3 got = probes::li.answer(out[k]);
                        std::string hint = c.hint;
                        std::vector<Suspect<glm::dvec3>> suspects = shadingSuspects(c);
-                       Outputs hit(out[hitsAt + k]);
-                       const bool found = hit.number() != 0.;
-                       const double t = hit.number();
+                       const auto [found, t, position] = probes::intersect.answer(out[hitsAt + k]);
                        const std::optional<double> trueT = nearestHit(c.sphere, c.ray);
                        const bool hitWrong = found != trueT.has_value() ||
                                              (found && std::abs(t - *trueT) > 1e-4 * std::max(1., *trueT));
@@ -240,7 +199,7 @@ void addLi(LabChecks& checks, const std::string& name, std::vector<LiCase> cases
                                       {"expected", trueT ? "t = " + show(*trueT) : tr("what.lab3.no_hit")}});
                            suspects.clear();
                        } else if (normalAt[k] != 0) {
-                           const glm::dvec3 n = Outputs(out[normalAt[k]]).vec3(),
+                           const glm::dvec3 n = probes::computeNormal.answer(out[normalAt[k]]),
                                             d = glm::normalize(c.ray.direction);
                            const glm::dvec3 forTheirNormal = c.colour * std::max(-glm::dot(d, n), 0.);
                            if (withinEach(got, forTheirNormal, c.tolerance)) {
@@ -406,7 +365,7 @@ void addNormalCheck(LabChecks& checks, CaseRandom& random) {
     const std::vector<std::pair<Sphere, glm::dvec3>> cases{
         {kSphere, {0., 0., 2.}}, {big, {1., 2., 5.}}, {drawn, point}};
     std::vector<protocol::Call> calls;
-    for (const auto& [s, p] : cases) calls.push_back(normalCall(s, p));
+    for (const auto& [s, p] : cases) calls.push_back(probes::computeNormal(s, p));
     // The hint names what the answer shows: a length other than 1, or the inward direction.
     auto hint = [](const glm::dvec3& got, const glm::dvec3& expected) {
         if (!(std::abs(glm::length(got) - 1.) <= 1e-3)) return tr("hint.lab3.normal_unit");
@@ -420,7 +379,7 @@ void addNormalCheck(LabChecks& checks, CaseRandom& random) {
                                   tr("what.lab3.normal_of", {{"point", show(cases[2].second)}, {"sphere", describe(cases[2].first)}})};
       for (std::size_t k = 0; k < cases.size(); ++k) {
           const auto& [s, p] = cases[k];
-          const glm::dvec3 got = Outputs(out[k]).vec3(), expected = (p - s.centre) / s.radius;
+          const glm::dvec3 got = probes::computeNormal.answer(out[k]), expected = (p - s.centre) / s.radius;
           judge.expectNear(what[k], got, expected, k < 2 ? 1e-6 : 1e-5, hint(got, expected));
       }
          }});

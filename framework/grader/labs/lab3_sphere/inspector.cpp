@@ -20,8 +20,6 @@ int shadingIndex(const std::string& shading) {
     return -1;
 }
 
-void append(std::vector<double>& inputs, const glm::dvec3& v) { inputs.insert(inputs.end(), {v.x, v.y, v.z}); }
-
 void sphere(PixelContext& pixel, Inspection& inspection) {
     const SceneDescription& d = pixel.scene;
     const int shading = shadingIndex(d.shading);
@@ -33,35 +31,24 @@ void sphere(PixelContext& pixel, Inspection& inspection) {
     const glm::dvec3 position = t ? ray.origin + *t * ray.direction : glm::dvec3(0.);
     const glm::dvec3 normal = (position - centre) / double(s.radius());
     const glm::dvec3 seen = t ? lab3::shade(shading, colour, ray.direction, normal) : background;
-    std::vector<double> sphereInputs;
-    append(sphereInputs, centre);
-    sphereInputs.push_back(s.radius());
-    std::vector<double> intersectInputs = sphereInputs;
-    append(intersectInputs, ray.origin);
-    append(intersectInputs, ray.direction);
-    intersectInputs.insert(intersectInputs.end(), {0., std::numeric_limits<double>::infinity()});
-    const int hit = inspection.call(probes::intersect, intersectInputs); // hit, t, position
+    const probes::Sphere probeSphere{centre, s.radius()};
+    const probes::Ray probeRay{ray.origin, ray.direction};
+    const int hit = inspection.call(probes::intersect(probeSphere, probeRay, 0., std::numeric_limits<double>::infinity()));
     const std::string intersect = "SphereGeometry::intersect";
-    inspection.add({.key = "lab3_hit", .function = intersect, .lab = 3, .reference = t.has_value(), .student = values(hit, 0, 0),
-                    .gives = "hit", .takes = {"ray"}});
+    inspection.add({.key = "lab3_hit", .function = intersect, .lab = 3, .reference = t.has_value(),
+                    .student = answerOf(probes::intersect, hit, &probes::Hit::found), .gives = "hit", .takes = {"ray"}});
     if (t) {
-        inspection.add({.key = "lab3_t", .function = intersect, .lab = 3, .reference = *t, .student = values(hit, 1, 1), .gives = "hit",
-                        .takes = {"ray"}});
-        inspection.add({.key = "lab3_position", .function = intersect, .lab = 3, .reference = vec(position),
-                        .student = values(hit, 2, 3), .gives = "hit", .takes = {"ray"}});
-        std::vector<double> normalInputs = sphereInputs;
-        append(normalInputs, position);
-        inspection.add({.key = "lab3_normal", .function = "SphereGeometry::computeNormal", .lab = 3, .reference = vec(normal),
-                        .student = values(inspection.call(probes::computeNormal, normalInputs), 0, 3), .takes = {"ray", "hit"}});
+        inspection.add({.key = "lab3_t", .function = intersect, .lab = 3, .reference = *t,
+                        .student = answerOf(probes::intersect, hit, &probes::Hit::t), .gives = "hit", .takes = {"ray"}});
+        inspection.add({.key = "lab3_position", .function = intersect, .lab = 3, .reference = shown(position),
+                        .student = answerOf(probes::intersect, hit, &probes::Hit::position), .gives = "hit", .takes = {"ray"}});
+        const int normalCall = inspection.call(probes::computeNormal(probeSphere, position));
+        inspection.add({.key = "lab3_normal", .function = "SphereGeometry::computeNormal", .lab = 3, .reference = shown(normal),
+                        .student = answerOf(probes::computeNormal, normalCall), .takes = {"ray", "hit"}});
     }
-    std::vector<double> liInputs{double(shading)};
-    liInputs.insert(liInputs.end(), sphereInputs.begin(), sphereInputs.end());
-    append(liInputs, colour);
-    append(liInputs, background);
-    append(liInputs, ray.origin);
-    append(liInputs, ray.direction);
-    inspection.add({.key = "lab3_colour", .function = "RayCastIntegrator::Li", .lab = 3, .reference = vec(seen),
-                    .student = values(inspection.call(probes::li, liInputs), 0, 3), .takes = {"ray"}});
+    const int colourCall = inspection.call(probes::li(shading, probeSphere, colour, background, probeRay));
+    inspection.add({.key = "lab3_colour", .function = "RayCastIntegrator::Li", .lab = 3, .reference = shown(seen),
+                    .student = answerOf(probes::li, colourCall), .takes = {"ray"}});
     pixel.coloured = true;
 }
 

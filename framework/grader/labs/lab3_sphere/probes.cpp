@@ -12,48 +12,30 @@ namespace raylab::agent {
 
 namespace {
 
-SphereGeometry sphere(ProbeInputs& in, const Color& colour = Color(1.f)) {
-    const glm::vec3 centre = in.vec3();
-    return SphereGeometry(centre, in.real(), colour);
+namespace probes = grader::probes;
+
+SphereGeometry sphere(const probes::Sphere& s, const Color& colour = Color(1.f)) {
+    return SphereGeometry(glm::vec3(s.centre), float(s.radius), colour);
 }
 
-Ray ray(ProbeInputs& in) {
-    const glm::vec3 origin = in.vec3();
-    return Ray{origin, in.vec3()};
-}
+Ray ray(const probes::Ray& r) { return Ray{glm::vec3(r.origin), glm::vec3(r.direction)}; }
 
-std::vector<double> intersectProbe(ProbeInputs in) {
-    const SphereGeometry s = sphere(in);
-    const Ray r = ray(in);
-    const float tMin = in.real(), tMax = in.real();
+probes::Hit intersectProbe(probes::Sphere s, probes::Ray r, double tMin, double tMax) {
     HitRecord hit;
     hit.t = -7.f; // a miss must leave it alone
-    const bool found = s.intersect(r, tMin, tMax, hit);
-    std::vector<double> out{found ? 1. : 0., hit.t};
-    appendOutputs(out, hit.position);
-    return out;
+    const bool found = sphere(s).intersect(ray(r), float(tMin), float(tMax), hit);
+    return {found, hit.t, hit.position};
 }
 
-std::vector<double> normalProbe(ProbeInputs in) {
-    const SphereGeometry s = sphere(in);
-    std::vector<double> out;
-    appendOutputs(out, s.computeNormal(in.vec3()));
-    return out;
-}
+glm::dvec3 normalProbe(probes::Sphere s, glm::dvec3 point) { return sphere(s).computeNormal(glm::vec3(point)); }
 
-std::vector<double> liProbe(ProbeInputs in) {
-    const int shading = in.integer();
+glm::dvec3 liProbe(int shading, probes::Sphere s, glm::dvec3 colour, glm::dvec3 background, probes::Ray r) {
     if (shading < 0 || shading > 2) throw std::invalid_argument("probe Li: no shading " + std::to_string(shading));
-    const glm::vec3 centre = in.vec3();
-    const float radius = in.real();
-    const Color colour = in.vec3();
     Scene scene;
-    scene.add(SphereGeometry(centre, radius, colour));
-    scene.background = in.vec3();
+    scene.add(sphere(s, Color(colour)));
+    scene.background = background;
     const RayCastIntegrator integrator{Shading(shading)};
-    std::vector<double> out;
-    appendOutputs(out, integrator.Li(scene, ray(in)));
-    return out;
+    return integrator.Li(scene, ray(r));
 }
 
 } // namespace

@@ -11,16 +11,21 @@
 
 #include <cmath>
 #include <functional>
+#include <utility>
 
 namespace raylab::grader {
 
 namespace {
 
-struct LookAt {
+using probes::BuiltCamera;
+
+// The probe's camera, with what the messages call it and what the checks expect of it.
+struct LookAt : probes::LookAtCamera {
     std::string name;
-    glm::dvec3 position, target, up;
-    int width = 600, height = 400;
-    double fovy = 60.;
+
+    LookAt(std::string name, const glm::dvec3& position, const glm::dvec3& target, const glm::dvec3& up,
+           int width = 600, int height = 400, double fovy = 60.)
+        : probes::LookAtCamera{width, height, position, target, up, fovy}, name(std::move(name)) {}
 
     glm::dvec3 w() const { return lab4::lookAt(position, target, up).w; }
     glm::dvec3 u() const { return lab4::lookAt(position, target, up).u; }
@@ -28,30 +33,7 @@ struct LookAt {
     double viewportHeight() const { return lab4::viewport(fovy, width, height).height; }
     double viewportWidth() const { return lab4::viewport(fovy, width, height).width; }
     glm::dvec3 topLeft() const { return lab4::topLeft(lab4::lookAt(position, target, up), lab4::viewport(fovy, width, height)); }
-    protocol::Call call() const {
-        std::vector<double> in{double(width), double(height)};
-        for (const glm::dvec3& p : {position, target, up})
-            appendInputs(in, p);
-        in.push_back(fovy);
-        return {probes::lookAt, in};
-    }
-};
-
-// What the LookAt probe returns.
-struct Built {
-    glm::dvec3 u, v, w, position;
-    double viewportHeight, viewportWidth;
-    glm::dvec3 topLeft;
-    explicit Built(const std::vector<double>& out) {
-        Outputs o(out);
-        u = o.vec3();
-        v = o.vec3();
-        w = o.vec3();
-        position = o.vec3();
-        viewportHeight = o.number();
-        viewportWidth = o.number();
-        topLeft = o.vec3();
-    }
+    protocol::Call call() const { return probes::lookAt(*this); }
 };
 
 // The cameras of scenes/lab4_{a,b,c,d}.toml (named when the checks are made: in the reader's language).
@@ -80,20 +62,14 @@ LookAt drawnCamera(CaseRandom& random) {
     return c;
 }
 
-protocol::Call refusedCall(const glm::dvec3& position, const glm::dvec3& target, const glm::dvec3& up) {
-    std::vector<double> in;
-    for (const glm::dvec3& p : {position, target, up})
-        appendInputs(in, p);
-    return {probes::lookAtRefused, in};
-}
-
 // A lookAt check, one call a camera: `expect` judges what each camera was built as.
 FunctionCheck lookAtCheck(std::string name, std::vector<LookAt> cameras,
-                          std::function<void(const LookAt& camera, const Built& built, Judge& judge)> expect) {
+                          std::function<void(const LookAt& camera, const BuiltCamera& built, Judge& judge)> expect) {
     std::vector<protocol::Call> calls;
     for (const LookAt& c : cameras) calls.push_back(c.call());
     return {std::move(name), std::move(calls), [cameras, expect](const auto& out, Judge& judge) {
-                for (std::size_t k = 0; k < cameras.size(); ++k) expect(cameras[k], Built(out[k]), judge);
+                for (std::size_t k = 0; k < cameras.size(); ++k)
+                    expect(cameras[k], probes::lookAt.answer(out[k]), judge);
             }};
 }
 
@@ -104,7 +80,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     cameras.push_back(drawnCamera(random));
     cameras.push_back(drawnCamera(random));
     checks.add(lookAtCheck("four_cameras", cameras,
-                          [](const LookAt& c, const Built& b, Judge& judge) {
+                          [](const LookAt& c, const BuiltCamera& b, Judge& judge) {
                               auto what = [&c](const char* part) {
                                   return tr("what.lab4.part", {{"camera", c.name}, {"part", part}});
                               };
@@ -137,7 +113,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
 
     const std::vector<LookAt> moved{handoutCameras()[3], drawnCamera(random)};
     checks.add(lookAtCheck(
-        "viewport_follows", moved, [](const LookAt& c, const Built& b, Judge& judge) {
+        "viewport_follows", moved, [](const LookAt& c, const BuiltCamera& b, Judge& judge) {
             // A screen placed rightly in a wrong frame: updateViewport was called, the frame is at fault.
             const glm::dvec3 ownTopLeft =
          b.position - b.w + b.v * (b.viewportHeight / 2.) - b.u * (b.viewportWidth / 2.);
@@ -165,7 +141,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     const LookAt turned{"", {0., 0., 0.}, {0., 0., -1.}, {0., 1., 0.}};
     checks.add(
         {"default_as_lookat", {origin.call(), turned.call()}, [](const auto& out, Judge& judge) {
-      const Built b(out[0]), t(out[1]);
+      const BuiltCamera b = probes::lookAt.answer(out[0]), t = probes::lookAt.answer(out[1]);
       judge.expectNear("u", b.u, {-1., 0., 0.}, 1e-6, tr("hint.lab4.default_u"));
       judge.expectNear("v", b.v, {0., 1., 0.}, 1e-6, tr("hint.lab4.default_v"));
       const std::string turnedPart = tr("what.lab4.turned_camera");
@@ -183,19 +159,19 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     const glm::dvec3 along{0., double(random.integer(1, 9)) * (random.integer(0, 1) ? 1. : -1.), 0.};
     checks.add(
         {"degenerate_refused",
-         {valid.call(), refusedCall({0., 0., 0.}, {0., 2., 0.}, {0., 1., 0.}),
-          refusedCall({1., 2., 3.}, {1., 2., 3.}, {0., 1., 0.}), refusedCall(p, p, {0., 1., 0.}),
-          refusedCall(p, p + along, {0., 2., 0.})},
+         {valid.call(), probes::lookAtRefused({0., 0., 0.}, {0., 2., 0.}, {0., 1., 0.}),
+          probes::lookAtRefused({1., 2., 3.}, {1., 2., 3.}, {0., 1., 0.}), probes::lookAtRefused(p, p, {0., 1., 0.}),
+          probes::lookAtRefused(p, p + along, {0., 2., 0.})},
          [p](const auto& out, Judge& judge) {
-      const Built built(out[0]);
+      const BuiltCamera built = probes::lookAt.answer(out[0]);
       judge.expectNear(tr("what.lab4.valid_w"), built.w, {-2. / 3., 1. / 3., -2. / 3.}, 1e-6, tr("hint.lab4.valid_w"));
       judge.expectNear(tr("what.lab4.valid_position"), built.position, {1., 2., 3.}, 1e-6, tr("hint.lab4.position"));
       const std::string names[] = {tr("what.lab4.up_parallel"), tr("what.lab4.position_is_target"),
                                    tr("what.lab4.position_is_target_at", {{"position", show(p)}}),
                                    tr("what.lab4.up_parallel_from", {{"position", show(p)}})};
       for (std::size_t k = 1; k < out.size(); ++k)
-          judge.expectTrue(names[k - 1], out[k][0] == 1., tr("what.lab4.refused"), tr("what.lab4.built"),
-                           tr("hint.lab4.refuse"));
+          judge.expectTrue(names[k - 1], probes::lookAtRefused.answer(out[k]), tr("what.lab4.refused"),
+                           tr("what.lab4.built"), tr("hint.lab4.refuse"));
          }});
 }
 

@@ -17,16 +17,18 @@ void lookAtCamera(PixelContext& pixel, Inspection& inspection) {
     const glm::dvec3 position(d.camera.position), target(d.camera.target), up(d.camera.up);
     const lab4::Frame frame = lab4::lookAt(position, target, up);
     const lab4::Viewport screen = lab4::viewport(d.camera.fovy, d.width, d.height);
-    std::vector<double> in{double(d.width), double(d.height), position.x, position.y, position.z, target.x,
-                           target.y, target.z, up.x, up.y, up.z, double(d.camera.fovy)};
-    const int c = inspection.call(probes::lookAt, in); // u, v, w, position, height, width, topLeft
+    const probes::LookAtCamera camera{d.width, d.height, position, target, up, d.camera.fovy};
+    const int c = inspection.call(probes::lookAt(camera));
     const std::string constructor = "PerspectiveCamera::PerspectiveCamera";
     inspection.add({.key = "lab4_screen", .lab = 2, .reference = Json::array({sx, sy})});
-    inspection.add({.key = "lab4_u", .function = constructor, .lab = 4, .reference = vec(frame.u), .student = values(c, 0, 3), .gives = "ray"});
-    inspection.add({.key = "lab4_v", .function = constructor, .lab = 4, .reference = vec(frame.v), .student = values(c, 3, 3), .gives = "ray"});
-    inspection.add({.key = "lab4_w", .function = constructor, .lab = 4, .reference = vec(frame.w), .student = values(c, 6, 3), .gives = "ray"});
-    inspection.add({.key = "lab4_top_left", .function = constructor, .lab = 4, .reference = vec(lab4::topLeft(frame, screen)), .student = values(c, 14, 3),
-                    .gives = "ray"});
+    inspection.add({.key = "lab4_u", .function = constructor, .lab = 4, .reference = shown(frame.u),
+                    .student = answerOf(probes::lookAt, c, &probes::BuiltCamera::u), .gives = "ray"});
+    inspection.add({.key = "lab4_v", .function = constructor, .lab = 4, .reference = shown(frame.v),
+                    .student = answerOf(probes::lookAt, c, &probes::BuiltCamera::v), .gives = "ray"});
+    inspection.add({.key = "lab4_w", .function = constructor, .lab = 4, .reference = shown(frame.w),
+                    .student = answerOf(probes::lookAt, c, &probes::BuiltCamera::w), .gives = "ray"});
+    inspection.add({.key = "lab4_top_left", .function = constructor, .lab = 4, .reference = shown(lab4::topLeft(frame, screen)),
+                    .student = answerOf(probes::lookAt, c, &probes::BuiltCamera::topLeft), .gives = "ray"});
     pixel.ray = ReferenceRay{position, lab4::direction(frame, screen, sx, sy)};
 }
 

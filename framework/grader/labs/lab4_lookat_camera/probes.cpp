@@ -10,29 +10,25 @@ namespace raylab::agent {
 
 namespace {
 
-std::vector<double> lookAtProbe(ProbeInputs in) {
-    const int width = in.integer(), height = in.integer();
-    const glm::vec3 position = in.vec3(), target = in.vec3(), up = in.vec3();
-    const float fovy = in.real();
+namespace probes = grader::probes;
+
+probes::BuiltCamera lookAtProbe(probes::LookAtCamera c) {
+    const glm::vec3 position(c.position);
+    const float fovy = float(c.fovy);
     // Built first elsewhere, then rebuilt: nothing may survive from the first frame.
-    PerspectiveCamera camera(width, height, position + glm::vec3(3.f, -2.f, 1.f), position, glm::vec3(0.f, 1.f, 0.f),
-                             fovy);
-    camera = PerspectiveCamera(width, height, position, target, up, fovy);
-    std::vector<double> out;
-    for (const glm::vec3& v : {camera.u(), camera.v(), camera.w(), camera.position()})
-        appendOutputs(out, v);
-    out.insert(out.end(), {camera.viewportHeight(), camera.viewportWidth()});
-    appendOutputs(out, camera.topLeft());
-    return out;
+    PerspectiveCamera camera(c.width, c.height, position + glm::vec3(3.f, -2.f, 1.f), position,
+                             glm::vec3(0.f, 1.f, 0.f), fovy);
+    camera = PerspectiveCamera(c.width, c.height, position, glm::vec3(c.target), glm::vec3(c.up), fovy);
+    return {camera.u(), camera.v(), camera.w(), camera.position(),
+            camera.viewportHeight(), camera.viewportWidth(), camera.topLeft()};
 }
 
-std::vector<double> lookAtRefusedProbe(ProbeInputs in) {
-    const glm::vec3 position = in.vec3(), target = in.vec3(), up = in.vec3();
+bool lookAtRefusedProbe(glm::dvec3 position, glm::dvec3 target, glm::dvec3 up) {
     try {
-        const PerspectiveCamera camera(200, 100, position, target, up, 60.f);
-        return {0.};
+        const PerspectiveCamera camera(200, 100, glm::vec3(position), glm::vec3(target), glm::vec3(up), 60.f);
+        return false;
     } catch (const std::invalid_argument&) {
-        return {1.};
+        return true;
     }
 }
 

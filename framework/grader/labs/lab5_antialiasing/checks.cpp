@@ -17,29 +17,13 @@ namespace {
 struct Pixel {
     int width, height, i, j, samples;
     std::uint64_t seed;
-    protocol::Call call() const {
-        return {probes::renderPixel,
-                {double(width), double(height), double(i), double(j), double(samples), double(seed)}};
-    }
+    protocol::Call call() const { return probes::renderPixel(width, height, i, j, samples, double(seed)); }
     std::string name() const {
         return tr("what.lab5.pixel", {{"i", std::to_string(i)}, {"j", std::to_string(j)}, {"samples", std::to_string(samples)}});
     }
 };
 
-// What the RenderPixel probe returns: the colour and every screen point asked for.
-struct Rendered {
-    glm::dvec3 colour;
-    std::vector<std::pair<double, double>> points;
-    explicit Rendered(const std::vector<double>& out) {
-        Outputs o(out);
-        const auto count = std::size_t(o.number());
-        colour = o.vec3();
-        for (std::size_t k = 0; k < count; ++k) {
-            const double sx = o.number();
-            points.emplace_back(sx, o.number());
-        }
-    }
-};
+using probes::Rendered;
 
 void judgePixel(Judge& judge, const Pixel& p, const Rendered& r) {
     const std::string what = p.name();
@@ -62,19 +46,18 @@ void judgePixel(Judge& judge, const Pixel& p, const Rendered& r) {
 void addChecks(LabChecks& checks, CaseRandom& random) {
     const int drawnCount = random.integer(2, 64);
     checks.add({"sample_count",
-               {{probes::setSamples, {9.}},
-                {probes::setSamples, {double(drawnCount)}},
-                {probes::setSamples, {0.}},
-                {probes::setSamples, {-3.}}},
+               {probes::setSamples(9), probes::setSamples(drawnCount), probes::setSamples(0), probes::setSamples(-3)},
                [drawnCount](const auto& out, Judge& judge) {
-                   for (const auto& [k, n] : {std::pair{0, 9}, std::pair{1, drawnCount}})
+                   for (const auto& [k, n] : {std::pair{0, 9}, std::pair{1, drawnCount}}) {
+                       const probes::SampleCount count = probes::setSamples.answer(out[k]);
                        judge.expectTrue(tr("what.lab5.stored", {{"n", std::to_string(n)}}),
-                                        out[k][0] == 0. && out[k][1] == n, std::to_string(n),
-                                        out[k][0] != 0. ? "std::invalid_argument" : show(out[k][1]),
+                                        !count.refused && count.stored == n, std::to_string(n),
+                                        count.refused ? "std::invalid_argument" : show(count.stored),
                                         tr("hint.lab5.store"));
+                   }
                    for (const auto& [k, n] : {std::pair{2, 0}, std::pair{3, -3}})
-                       judge.expectTrue("setNbPixelSamples(" + std::to_string(n) + ")", out[k][0] == 1.,
-                                        "std::invalid_argument", tr("what.lab5.no_exception"),
+                       judge.expectTrue("setNbPixelSamples(" + std::to_string(n) + ")",
+                                        probes::setSamples.answer(out[k]).refused, "std::invalid_argument", tr("what.lab5.no_exception"),
                                         tr("hint.lab5.refuse"));
                }});
 
@@ -87,7 +70,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
         calls.push_back(p.call());
     checks.add({"average", calls, [pixels](const auto& out, Judge& judge) {
                    for (std::size_t k = 0; k < pixels.size(); ++k)
-                       judgePixel(judge, pixels[k], Rendered(out[k]));
+                       judgePixel(judge, pixels[k], probes::renderPixel.answer(out[k]));
                }});
 
     const std::vector<Pixel> distinct{{8, 8, 1, 1, 8, 3},
@@ -99,8 +82,9 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
     checks.add({"own_offsets", calls,
                [distinct](const auto& out, Judge& judge) {
                    for (std::size_t k = 0; k < distinct.size(); ++k) {
-                       const Rendered r(out[k]);
-                       const std::set<std::pair<double, double>> points(r.points.begin(), r.points.end());
+                       const Rendered rendered = probes::renderPixel.answer(out[k]);
+                       std::set<std::pair<double, double>> points;
+                       for (const auto& [sx, sy] : rendered.points) points.emplace(sx, sy);
                        judge.expectTrue(tr("what.lab5.distinct", {{"samples", std::to_string(distinct[k].samples)},
                                                                   {"pixel", distinct[k].name()}}),
                                         points.size() == std::size_t(distinct[k].samples),
@@ -123,7 +107,7 @@ void addChecks(LabChecks& checks, CaseRandom& random) {
                    for (std::size_t k = 0; k < twoPixels.size(); ++k) {
                        const Pixel& p = twoPixels[k];
                        offsets.emplace_back();
-                       const Rendered rendered(out[k]);
+                       const Rendered rendered = probes::renderPixel.answer(out[k]);
                        for (const auto& [sx, sy] : rendered.points)
                            offsets.back().emplace_back(sx * p.width - p.i, sy * p.height - p.j);
                    }

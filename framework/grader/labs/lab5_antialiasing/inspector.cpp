@@ -8,6 +8,7 @@
 #include "raylab/sampler.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace raylab::grader::inspector {
 
@@ -15,6 +16,15 @@ namespace {
 
 // The most samples a pixel's inspection lists one by one.
 constexpr int kListedSamples = 8;
+
+// Screen point k the student's renderPixel asked for (call `call`), (sx, sy); null when it gave no
+// answer or asked for fewer points.
+StudentValue screenPoint(int call, std::size_t k) {
+    return answerOf(probes::renderPixel, call, [k](const probes::Rendered& r) -> Json {
+        if (k >= r.points.size()) return {};
+        return Json::array({shown(r.points[k].x), shown(r.points[k].y)});
+    });
+}
 
 void samples(PixelContext& pixel, Inspection& inspection) {
     const SceneDescription& d = pixel.scene;
@@ -28,15 +38,17 @@ void samples(PixelContext& pixel, Inspection& inspection) {
         points.emplace_back((float(x) + offset.x) / float(d.width), (float(y) + offset.y) / float(d.height));
         mean += glm::dvec3(points.back(), 1.) / double(d.samples);
     }
-    const int c = inspection.call(probes::renderPixel, {double(d.width), double(d.height), double(x), double(y), double(d.samples),
-                                                        double(d.seed)});
+    const int c = inspection.call(probes::renderPixel(d.width, d.height, x, y, d.samples, double(d.seed)));
     const std::string function = "Renderer::renderPixel";
-    inspection.add({.key = "lab5_samples", .function = function, .lab = 5, .reference = d.samples, .student = values(c, 0, 1)});
+    inspection.add({.key = "lab5_samples", .function = function, .lab = 5, .reference = d.samples,
+                    .student = answerOf(probes::renderPixel, c,
+                                        [](const probes::Rendered& r) { return double(r.points.size()); })});
     for (int k = 0; k < std::min(d.samples, kListedSamples); ++k)
         inspection.add({.key = "lab5_sample", .function = function, .lab = 5,
                         .reference = Json::array({points[std::size_t(k)].x, points[std::size_t(k)].y}),
-                        .student = values(c, 4 + 2 * std::size_t(k), 2), .index = k + 1});
-    inspection.add({.key = "lab5_average", .function = function, .lab = 5, .reference = vec(mean), .student = values(c, 1, 3)});
+                        .student = screenPoint(c, std::size_t(k)), .index = k + 1});
+    inspection.add({.key = "lab5_average", .function = function, .lab = 5, .reference = shown(mean),
+                    .student = answerOf(probes::renderPixel, c, &probes::Rendered::colour)});
     const Json yours = pixel.picturePixel("student");
     inspection.add({.key = "lab5_picture", .function = function, .lab = 5, .reference = pixel.picturePixel("reference"),
                     .student = [yours](const Outputs&) { return yours; }});

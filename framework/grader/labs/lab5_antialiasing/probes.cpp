@@ -13,6 +13,8 @@ namespace raylab::agent {
 
 namespace {
 
+namespace probes = grader::probes;
+
 // Records every screen point it is asked for; its rays carry (sx, sy) in the direction.
 class RecordingCamera final : public BaseCamera {
 public:
@@ -34,35 +36,31 @@ public:
     Color Li(const Scene&, const Ray& ray) const override { return Color(ray.direction.x, ray.direction.y, 1.f); }
 };
 
-std::vector<double> setSamplesProbe(ProbeInputs in) {
+probes::SampleCount setSamplesProbe(int samples) {
     const Scene scene;
     const RecordingCamera camera(4, 4);
     const PointIntegrator integrator;
     Renderer renderer(scene, camera, integrator);
     bool refused = false;
     try {
-        renderer.setNbPixelSamples(in.integer());
+        renderer.setNbPixelSamples(samples);
     } catch (const std::invalid_argument&) {
         refused = true;
     }
-    return {refused ? 1. : 0., double(renderer.nbPixelSamples())};
+    return {refused, renderer.nbPixelSamples()};
 }
 
-std::vector<double> renderPixelProbe(ProbeInputs in) {
-    const int width = in.integer(), height = in.integer(), i = in.integer(), j = in.integer(), n = in.integer();
-    const auto seed = std::uint64_t(in.number());
+probes::Rendered renderPixelProbe(int width, int height, int i, int j, int samples, double seed) {
     const Scene scene;
     const RecordingCamera camera(width, height);
     const PointIntegrator integrator;
     Renderer renderer(scene, camera, integrator);
-    renderer.setNbPixelSamples(n);
-    PixelSampler sampler(SamplerKind::Random, n, seed, i, j, width);
-    const Color colour = renderer.renderPixel(i, j, sampler);
-    std::vector<double> out{double(camera.points.size())};
-    appendOutputs(out, colour);
+    renderer.setNbPixelSamples(samples);
+    PixelSampler sampler(SamplerKind::Random, samples, std::uint64_t(seed), i, j, width);
+    probes::Rendered rendered{renderer.renderPixel(i, j, sampler), {}};
     for (const auto& [sx, sy] : camera.points)
-        out.insert(out.end(), {sx, sy});
-    return out;
+        rendered.points.push_back({sx, sy});
+    return rendered;
 }
 
 } // namespace

@@ -1,21 +1,37 @@
 #pragma once
-// Lab 5's probes as both sides know them: the parent sends their names, the agent answers them
-// (probes.cpp) and the parent checks the size of the answer.
-#include "grader/protocol/protocol.h"
+// Lab 5's probes, typed once for both sides (grader/protocol/probe.h): the parent calls them and reads
+// their answers (checks.cpp, inspector.cpp), the agent answers them (probes.cpp).
 
-#include <cmath>
+#include "grader/protocol/probe.h"
+
+#include <vector>
 
 namespace raylab::grader::probes {
+inline namespace lab5_antialiasing {
 
-// k rays traced, the colour, then k screen points.
-inline bool validRenderPixel(std::span<const double>, std::span<const double> outputs) {
-    return !outputs.empty() && outputs[0] >= 0. && outputs[0] <= protocol::kMaxRays &&
-           outputs[0] == std::floor(outputs[0]) && double(outputs.size()) == 4. + 2. * outputs[0];
-}
+// What setNbPixelSamples(n) did: whether it threw std::invalid_argument, and nbPixelSamples() after.
+struct SampleCount {
+    bool refused = false;
+    int stored = 0;
+    static constexpr auto fields = std::tuple{&SampleCount::refused, &SampleCount::stored};
+};
+// A point of the screen the camera was asked for, (sx, sy).
+struct ScreenPoint {
+    double x = 0., y = 0.;
+    static constexpr auto fields = std::tuple{&ScreenPoint::x, &ScreenPoint::y};
+};
+// What renderPixel gives, with a camera that records its screen points and an integrator whose colour
+// is the point (sx, sy, 1): the colour, and every point asked for, in order (one a ray traced).
+struct Rendered {
+    glm::dvec3 colour{0.};
+    std::vector<ScreenPoint> points;
+    static constexpr auto fields = std::tuple{&Rendered::colour, &Rendered::points};
+};
 
-// setNbPixelSamples(n) -> refused (0 or 1), nbPixelSamples()
-inline const protocol::ProbeSpec* const setSamples = protocol::registerProbe({"setNbPixelSamples", 1, 2});
-// (W, H, i, j, n, seed) -> rays traced k, colour, k screen points (sx, sy)
-inline const protocol::ProbeSpec* const renderPixel = protocol::registerProbe({"renderPixel", 6, 0, &validRenderPixel});
+inline const protocol::Probe<SampleCount(int samples)> setSamples{"setNbPixelSamples"};
+// Pixel (i, j) of a W x H image, with n samples from a Random sampler of that seed.
+inline const protocol::Probe<Rendered(int width, int height, int i, int j, int samples, double seed)> renderPixel{
+    "renderPixel"};
 
+} // namespace lab5_antialiasing
 } // namespace raylab::grader::probes

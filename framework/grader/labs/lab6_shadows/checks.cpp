@@ -18,18 +18,10 @@ namespace raylab::grader {
 
 namespace {
 
-struct Sphere {
-    glm::dvec3 centre{0.};
-    double radius = 0.; // 0: no sphere
-};
-struct Plane {
-    glm::dvec3 point{0.};
-    glm::dvec3 normal{0.}; // unit, or 0: no plane
-};
-struct Ray {
-    glm::dvec3 origin, direction;
-    glm::dvec3 at(double t) const { return origin + t * direction; }
-};
+using probes::Light;
+using probes::Plane;
+using probes::Ray;
+using probes::Sphere;
 
 // The t of the ray's nearest crossing of each object with t > tMin, in double.
 // (A radius of 0 is no sphere, a normal of 0 no plane.)
@@ -40,11 +32,6 @@ std::optional<double> crossing(const Sphere& s, const Ray& r, double tMin) {
 std::optional<double> crossing(const Plane& p, const Ray& r, double tMin) {
     return lab6::planeCrossing(p.point, p.normal, r.origin, r.direction, tMin);
 }
-
-struct Light {
-    glm::dvec3 position;
-    glm::dvec3 intensity{1.};
-};
 
 // A probe's scene: one sphere and one plane, either left out, and its light.
 struct ShadowScene {
@@ -63,13 +50,6 @@ bool occluded(const ShadowScene& s, const glm::dvec3& point) {
     return before(crossing(s.sphere, shadowRay, kLeaves)) || before(crossing(s.plane, shadowRay, kLeaves));
 }
 
-void appendScene(std::vector<double>& in, const Sphere& sphere, const Plane& plane) {
-    appendInputs(in, sphere.centre);
-    in.push_back(sphere.radius);
-    appendInputs(in, plane.point);
-    appendInputs(in, plane.normal);
-}
-
 std::string describe(const Sphere& s) {
     return tr("what.lab6.sphere", {{"centre", show(s.centre)}, {"radius", show(s.radius)}});
 }
@@ -85,11 +65,7 @@ struct ShadowCase {
 };
 
 protocol::Call shadowCall(const ShadowScene& s, const glm::dvec3& point) {
-    std::vector<double> in;
-    appendScene(in, s.sphere, s.plane);
-    appendInputs(in, point);
-    appendInputs(in, s.light.position);
-    return {probes::inShadow, in};
+    return probes::inShadow({s.sphere, s.plane}, point, s.light.position);
 }
 
 void addShadowCheck(LabChecks& checks, const std::string& name, std::vector<ShadowCase> cases,
@@ -99,7 +75,7 @@ void addShadowCheck(LabChecks& checks, const std::string& name, std::vector<Shad
     checks.add({name, calls, [cases](const auto& out, Judge& judge) {
                     const auto answer = [](bool shadow) { return tr(shadow ? "what.lab6.shadow" : "what.lab6.lit"); };
                     for (std::size_t k = 0; k < cases.size(); ++k) {
-                        const bool got = Outputs(out[k]).number() != 0.;
+                        const bool got = probes::inShadow.answer(out[k]);
                         judge.expectTrue(cases[k].what, got == cases[k].inShadow, answer(cases[k].inShadow),
                                          answer(got), cases[k].hint);
                     }
@@ -299,19 +275,8 @@ std::vector<Suspect<glm::dvec3>> lambertSuspects(const Shading& shading, const L
 }
 
 protocol::Call liCall(const Shading& shading, const LiCase& c) {
-    std::vector<double> in{shading.ambient, shading.shadows ? 1. : 0.};
-    appendInputs(in, c.scene.sphere.centre);
-    in.push_back(c.scene.sphere.radius);
-    appendInputs(in, c.sphereColour);
-    appendInputs(in, c.scene.plane.point);
-    appendInputs(in, c.scene.plane.normal);
-    appendInputs(in, c.planeColour);
-    appendInputs(in, c.scene.light.position);
-    appendInputs(in, c.scene.light.intensity);
-    appendInputs(in, c.background);
-    appendInputs(in, c.ray.origin);
-    appendInputs(in, c.ray.direction);
-    return {probes::pointLightLi, in};
+    const probes::ColouredObjects objects{c.scene.sphere, c.sphereColour, c.scene.plane, c.planeColour};
+    return probes::pointLightLi(shading.ambient, shading.shadows, objects, c.scene.light, c.background, c.ray);
 }
 
 // Li calls the student's inShadow: with shadows on, the check also asks inShadow at each hit, so that
@@ -330,7 +295,7 @@ void addLi(LabChecks& checks, const std::string& name, Shading shading, std::vec
     checks.add({name, calls, [shading, cases, shadowAt](const auto& out, Judge& judge) {
                     for (std::size_t k = 0; k < cases.size(); ++k) {
                         const LiCase& c = cases[k];
-                        const glm::dvec3 got = Outputs(out[k]).vec3();
+                        const glm::dvec3 got = probes::pointLightLi.answer(out[k]);
                         const std::optional<Hit> hit = nearestHit(c);
                         if (!hit) {
                             judge.expectNear(c.what, got, c.background, 1e-6, tr("hint.lab6.background"));
@@ -341,7 +306,7 @@ void addLi(LabChecks& checks, const std::string& name, Shading shading, std::vec
                         std::string hint = c.hint;
                         std::vector<Suspect<glm::dvec3>> suspects = lambertSuspects(shading, c.scene.light, *hit, lit);
                         if (shadowAt[k] != 0) {
-                            const bool theirShadow = Outputs(out[shadowAt[k]]).number() != 0.;
+                            const bool theirShadow = probes::inShadow.answer(out[shadowAt[k]]);
                             const bool shadowedInstead = withinEach(got, shade(shading, c.scene.light, *hit, !lit), 1e-4);
                             if (theirShadow == lit && shadowedInstead) {
                                 hint = tr("hint.lab6.li_through_in_shadow",

@@ -42,15 +42,15 @@ struct Object {
                                                : lab6::planeCrossing(centre, normal, r.origin, r.direction, tMin);
         return t && *t < tMax ? t : std::nullopt;
     }
-    // The probes' scene of this object alone: sphere (c, r[, colour]), plane (point, normal[, colour]).
-    void append(std::vector<double>& in, bool coloured) const {
-        const auto put = [&](const glm::dvec3& v) { in.insert(in.end(), {v.x, v.y, v.z}); };
-        put(sphere ? centre : glm::dvec3(0.));
-        in.push_back(sphere ? radius : 0.);
-        if (coloured) put(sphere ? colour : glm::dvec3(0.));
-        put(sphere ? glm::dvec3(0.) : centre);
-        put(sphere ? glm::dvec3(0.) : normal);
-        if (coloured) put(sphere ? glm::dvec3(0.) : colour);
+    // The probes' scene of this object alone: the other kind left out (radius 0, normal 0).
+    probes::Objects alone() const {
+        if (sphere) return {{centre, radius}, {}};
+        return {{}, {centre, normal}};
+    }
+    // The same with its colour (Li's).
+    probes::ColouredObjects aloneColoured() const {
+        const probes::Objects objects = alone();
+        return {objects.sphere, sphere ? colour : glm::dvec3(0.), objects.plane, sphere ? glm::dvec3(0.) : colour};
     }
 };
 
@@ -73,17 +73,15 @@ std::string named(const std::vector<std::string>& names) {
     return text;
 }
 
-void put(std::vector<double>& in, const glm::dvec3& v) { in.insert(in.end(), {v.x, v.y, v.z}); }
-
 // The rows of light `k`'s shadow ray from `position` (to `lightPosition`, `distance` away, along `l`):
 // its origin and direction, what it meets (the reference's, and the objects the student's inShadow
 // finds, each asked alone), the nearest occluder's t, and whether the point is in shadow.
 void shadowRayRows(Inspection& inspection, const std::vector<Object>& scene, int k, const glm::dvec3& position,
                    const glm::dvec3& lightPosition, const glm::dvec3& l, double distance) {
     const ReferenceRay shadowRay{position, l};
-    inspection.add({.key = "shadow_origin", .lab = 6, .reference = vec(position), .index = k, .referenceOnly = true,
+    inspection.add({.key = "shadow_origin", .lab = 6, .reference = shown(position), .index = k, .referenceOnly = true,
                     .takes = {"ray"}});
-    inspection.add({.key = "shadow_direction", .lab = 6, .reference = vec(l), .index = k, .referenceOnly = true,
+    inspection.add({.key = "shadow_direction", .lab = 6, .reference = shown(l), .index = k, .referenceOnly = true,
                     .takes = {"ray"}});
     std::vector<std::string> hiding, names;
     std::optional<double> nearestOccluder;
@@ -94,17 +92,13 @@ void shadowRayRows(Inspection& inspection, const std::vector<Object>& scene, int
             hiding.push_back(o.name());
             if (!nearestOccluder || *at < *nearestOccluder) nearestOccluder = *at;
         }
-        std::vector<double> in;
-        o.append(in, false);
-        put(in, position);
-        put(in, lightPosition);
-        calls.push_back(inspection.call(probes::inShadow, in));
+        calls.push_back(inspection.call(probes::inShadow(o.alone(), position, lightPosition)));
     }
     // The objects the student's inShadow finds between the point and the light, each alone.
     const auto theirs = [calls, names](const Outputs& outputs) -> Json {
         std::vector<std::string> found;
         for (std::size_t c = 0; c < calls.size(); ++c) {
-            const Json answer = values(calls[c], 0, 0)(outputs);
+            const Json answer = answerOf(probes::inShadow, calls[c])(outputs);
             if (answer.is_null()) return {};
             if (answer == true) found.push_back(names[c]);
         }
@@ -148,9 +142,10 @@ void shadows(PixelContext& pixel, Inspection& inspection) {
     glm::dvec3 n = nearest->sphere ? (position - nearest->centre) / nearest->radius : nearest->normal;
     if (glm::dot(n, ray.direction) > 0.) n = -n; // the side the ray sees
     inspection.add({.key = "lab6_t", .lab = 3, .reference = t, .referenceOnly = true, .takes = {"ray"}});
-    inspection.add({.key = "lab6_position", .lab = 3, .reference = vec(position), .referenceOnly = true, .takes = {"ray"}});
-    inspection.add({.key = "lab6_normal", .lab = 6, .reference = vec(n), .referenceOnly = true, .takes = {"ray"}});
+    inspection.add({.key = "lab6_position", .lab = 3, .reference = shown(position), .referenceOnly = true, .takes = {"ray"}});
+    inspection.add({.key = "lab6_normal", .lab = 6, .reference = shown(n), .referenceOnly = true, .takes = {"ray"}});
     const std::string liFunction = "PointLightIntegrator::Li";
+    const probes::Ray probeRay{ray.origin, ray.direction};
     int k = 0;
     for (const PointLight& light : d.scene.lights) {
         ++k;
@@ -158,19 +153,15 @@ void shadows(PixelContext& pixel, Inspection& inspection) {
         const glm::dvec3 toLight = lightPosition - position;
         const double distance = glm::length(toLight);
         const glm::dvec3 l = toLight / distance;
-        inspection.add({.key = "lab6_light", .lab = 6, .reference = vec(lightPosition), .index = k});
+        inspection.add({.key = "lab6_light", .lab = 6, .reference = shown(lightPosition), .index = k});
         if (withShadows) shadowRayRows(inspection, scene, k, position, lightPosition, l, distance);
         // Lambert's term of this light alone: colour / pi * I * max(n . l, 0) / r^2.
         const glm::dvec3 lambert = nearest->colour * std::numbers::inv_pi * intensity * (std::max(glm::dot(n, l), 0.) / (distance * distance));
-        std::vector<double> in{0., 0.}; // no ambient, no shadow test
-        nearest->append(in, true);
-        put(in, lightPosition);
-        put(in, intensity);
-        put(in, glm::dvec3(d.scene.background));
-        put(in, ray.origin);
-        put(in, ray.direction);
-        inspection.add({.key = "lambert", .function = liFunction, .lab = 6, .reference = vec(lambert),
-                        .student = values(inspection.call(probes::pointLightLi, in), 0, 3), .index = k, .takes = {"ray"}});
+        // Li with no ambient term and no shadow test gives it.
+        const int lambertCall = inspection.call(probes::pointLightLi(0., false, nearest->aloneColoured(), {lightPosition, intensity},
+                                                                     glm::dvec3(d.scene.background), probeRay));
+        inspection.add({.key = "lambert", .function = liFunction, .lab = 6, .reference = shown(lambert),
+                        .student = answerOf(probes::pointLightLi, lambertCall), .index = k, .takes = {"ray"}});
     }
     const Json yours = pixel.picturePixel("student");
     inspection.add({.key = "lab6_picture", .function = liFunction, .lab = 6, .reference = pixel.picturePixel("reference"),

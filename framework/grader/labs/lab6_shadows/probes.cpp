@@ -9,39 +9,30 @@ namespace raylab::agent {
 
 namespace {
 
-// The sphere (c, r, and its colour when `coloured`), then the plane (point, normal, colour when
-// `coloured`), each left out when its radius or its normal is zero.
-Scene scene(ProbeInputs& in, bool coloured) {
+namespace probes = grader::probes;
+
+// The sphere, then the plane, each left out when its radius or its normal is zero (as floats).
+Scene scene(const probes::ColouredObjects& objects) {
     Scene s;
-    const glm::vec3 centre = in.vec3();
-    const float radius = in.real();
-    const Color sphereColour = coloured ? Color(in.vec3()) : Color(1.f);
-    if (radius != 0.f) s.add(SphereGeometry(centre, radius, sphereColour));
-    const glm::vec3 point = in.vec3(), normal = in.vec3();
-    const Color planeColour = coloured ? Color(in.vec3()) : Color(1.f);
-    if (normal != glm::vec3(0.f)) s.add(Plane(point, normal, planeColour));
+    const float radius = float(objects.sphere.radius);
+    if (radius != 0.f) s.add(SphereGeometry(glm::vec3(objects.sphere.centre), radius, Color(objects.sphereColour)));
+    const glm::vec3 normal(objects.plane.normal);
+    if (normal != glm::vec3(0.f)) s.add(Plane(glm::vec3(objects.plane.point), normal, Color(objects.planeColour)));
     return s;
 }
 
-std::vector<double> inShadowProbe(ProbeInputs in) {
-    const Scene s = scene(in, false);
-    const glm::vec3 point = in.vec3();
-    const PointLight light{in.vec3()};
-    return {inShadow(s, point, light) ? 1. : 0.};
+bool inShadowProbe(probes::Objects objects, glm::dvec3 point, glm::dvec3 lightPosition) {
+    const Scene s = scene({objects.sphere, glm::dvec3(1.), objects.plane, glm::dvec3(1.)}); // white: inShadow reads no colour
+    return inShadow(s, glm::vec3(point), PointLight{glm::vec3(lightPosition)});
 }
 
-std::vector<double> liProbe(ProbeInputs in) {
-    const float ambient = in.real();
-    const bool shadows = in.number() != 0.;
-    Scene s = scene(in, true);
-    const glm::vec3 position = in.vec3();
-    s.lights.push_back({position, in.vec3()});
-    s.background = in.vec3();
-    const glm::vec3 origin = in.vec3();
-    const PointLightIntegrator integrator(ambient, shadows);
-    std::vector<double> out;
-    appendOutputs(out, integrator.Li(s, Ray{origin, in.vec3()}));
-    return out;
+glm::dvec3 liProbe(double ambient, bool shadows, probes::ColouredObjects objects, probes::Light light, glm::dvec3 background,
+                   probes::Ray r) {
+    Scene s = scene(objects);
+    s.lights.push_back({glm::vec3(light.position), Color(light.intensity)});
+    s.background = background;
+    const PointLightIntegrator integrator(float(ambient), shadows);
+    return integrator.Li(s, Ray{glm::vec3(r.origin), glm::vec3(r.direction)});
 }
 
 } // namespace

@@ -1,16 +1,44 @@
 #pragma once
-// Lab 6's probes as both sides know them: the parent sends their names, the agent answers them
-// (probes.cpp) and the parent checks the size of the answer. A scene is one sphere (c, r; none when
-// r = 0) and one plane (point, normal; none when the normal is 0).
+// Lab 6's probes, typed once for both sides (grader/protocol/probe.h): the parent calls them and reads
+// their answers (checks.cpp, inspector.cpp), the agent answers them (probes.cpp). A scene is one
+// sphere (none when its radius is 0) and one plane (none when its normal is 0).
 
-#include "grader/protocol/protocol.h"
+#include "grader/protocol/probe_types.h"
 
 namespace raylab::grader::probes {
+inline namespace lab6_shadows {
 
-// sphere (c, r), plane (point, normal), point, light position -> in shadow (1) or not (0)
-inline const protocol::ProbeSpec* const inShadow = protocol::registerProbe({"inShadow", 16, 1});
-// ambient, shadows (1 or 0), sphere (c, r, colour), plane (point, normal, colour),
-// light (position, intensity), background, ray (o, d) -> colour
-inline const protocol::ProbeSpec* const pointLightLi = protocol::registerProbe({"PointLightIntegrator::Li", 33, 3});
+struct Plane {
+    glm::dvec3 point{0.};
+    glm::dvec3 normal{0.}; // unit, or 0: no plane
+    static constexpr auto fields = std::tuple{&Plane::point, &Plane::normal};
+};
+struct Light {
+    glm::dvec3 position{0.};
+    glm::dvec3 intensity{1.};
+    static constexpr auto fields = std::tuple{&Light::position, &Light::intensity};
+};
+// What inShadow's scene holds besides its light.
+struct Objects {
+    Sphere sphere;
+    Plane plane;
+    static constexpr auto fields = std::tuple{&Objects::sphere, &Objects::plane};
+};
+// Li's, each object with its colour.
+struct ColouredObjects {
+    Sphere sphere;
+    glm::dvec3 sphereColour{0.};
+    Plane plane;
+    glm::dvec3 planeColour{0.};
+    static constexpr auto fields = std::tuple{&ColouredObjects::sphere, &ColouredObjects::sphereColour,
+                                              &ColouredObjects::plane, &ColouredObjects::planeColour};
+};
 
+inline const protocol::Probe<bool(Objects, glm::dvec3 point, glm::dvec3 lightPosition)> inShadow{"inShadow"};
+// The colour PointLightIntegrator::Li gives with that ambient term, its shadow test on or off, in a
+// scene of those objects and that one light.
+inline const protocol::Probe<glm::dvec3(double ambient, bool shadows, ColouredObjects, Light, glm::dvec3 background, Ray)>
+    pointLightLi{"PointLightIntegrator::Li"};
+
+} // namespace lab6_shadows
 } // namespace raylab::grader::probes

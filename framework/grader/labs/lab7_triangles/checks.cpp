@@ -20,14 +20,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-struct Triangle {
-    glm::dvec3 a, b, c;
-    glm::dvec3 at(double u, double v) const { return a + u * (b - a) + v * (c - a); }
-};
-struct Ray {
-    glm::dvec3 origin, direction;
-    glm::dvec3 at(double t) const { return origin + t * direction; }
-};
+using probes::Ray;
+using probes::Triangle;
 
 // The square of the quad figure, lower half: its normal is (0, 0, -1), towards the default camera.
 const Triangle kTriangle{{-1., -1., 3.}, {-1., 1., 3.}, {1., -1., 3.}};
@@ -50,14 +44,7 @@ struct Case {
     double toleranceFactor = 1.; // times tolerance(t), for a grazing ray (drawnCase)
 };
 
-protocol::Call call(const Case& c) {
-    std::vector<double> in;
-    for (const glm::dvec3& p : {c.triangle.a, c.triangle.b, c.triangle.c}) appendInputs(in, p);
-    appendInputs(in, c.ray.origin);
-    appendInputs(in, c.ray.direction);
-    in.insert(in.end(), {c.tMin, c.tMax});
-    return {probes::triangleIntersect, in};
-}
+protocol::Call call(const Case& c) { return probes::triangleIntersect(c.triangle, c.ray, c.tMin, c.tMax); }
 
 using lab7::Crossing;
 std::optional<Crossing> crossing(const Triangle& tri, const Ray& r) { return lab7::crossing(tri.a, tri.b, tri.c, r.origin, r.direction); }
@@ -66,10 +53,7 @@ std::optional<Crossing> crossing(const Triangle& tri, const Ray& r) { return lab
 double tolerance(double t) { return std::max(1e-5, 1e-4 * std::abs(t)); }
 
 void judgeCase(Judge& judge, const Case& c, const std::vector<double>& out) {
-    Outputs o(out);
-    const bool found = o.number() != 0.;
-    const double t = o.number();
-    const glm::dvec3 position = o.vec3();
+    const auto [found, t, position] = probes::triangleIntersect.answer(out);
     if (c.t >= 0.) {
         if (!found) {
             judge.fail(c.what, c.anyHit ? tr("what.lab7.a_hit") : tr("what.lab7.hit_at", {{"t", show(c.t)}}),
@@ -205,24 +189,18 @@ void addIntersectChecks(LabChecks& checks, CaseRandom& random) {
     }
 }
 
-protocol::Call normalCall(const Triangle& t, const glm::dvec3& point) {
-    std::vector<double> in;
-    for (const glm::dvec3& p : {t.a, t.b, t.c, point}) appendInputs(in, p);
-    return {probes::triangleNormal, in};
-}
-
 void addNormalCheck(LabChecks& checks, CaseRandom& random) {
     const Triangle drawn = drawnTriangle(random);
     const std::vector<Triangle> triangles{kTriangle, drawn};
     const std::vector<glm::dvec3> points{kTriangle.at(0.25, 0.25), CaseRandom::asFloat(drawn.at(0.3, 0.3))};
     std::vector<protocol::Call> calls;
-    for (std::size_t k = 0; k < triangles.size(); ++k) calls.push_back(normalCall(triangles[k], points[k]));
+    for (std::size_t k = 0; k < triangles.size(); ++k) calls.push_back(probes::triangleNormal(triangles[k], points[k]));
     checks.add({"triangle_normal", calls, [triangles, points](const auto& out, Judge& judge) {
                     for (std::size_t k = 0; k < triangles.size(); ++k) {
                         const Triangle& t = triangles[k];
                         const glm::dvec3 area = glm::cross(t.b - t.a, t.c - t.a), n = lab7::normal(t.a, t.b, t.c);
-                        judge.expectNear(tr("what.lab7.normal_of", {{"triangle", describe(t)}}), Outputs(out[k]).vec3(), n, 1e-5,
-                                         tr("hint.lab7.normal"),
+                        judge.expectNear(tr("what.lab7.normal_of", {{"triangle", describe(t)}}),
+                                         probes::triangleNormal.answer(out[k]), n, 1e-5, tr("hint.lab7.normal"),
                                          {{-n, tr("hint.lab7.normal_flipped")}, {area, tr("hint.lab7.normal_unit")}});
                     }
                 }});

@@ -15,13 +15,8 @@ namespace raylab::grader::inspector {
 
 namespace {
 
-void append(std::vector<double>& inputs, const glm::dvec3& v) { inputs.insert(inputs.end(), {v.x, v.y, v.z}); }
-
-// The intersect probe's inputs for `triangle` and the reference's ray; its normal probe's, without the point.
-std::vector<double> triangleInputs(const Triangle& triangle) {
-    std::vector<double> in;
-    for (const glm::vec3& corner : {triangle.a(), triangle.b(), triangle.c()}) append(in, glm::dvec3(corner));
-    return in;
+probes::Triangle probeTriangle(const Triangle& triangle) {
+    return {glm::dvec3(triangle.a()), glm::dvec3(triangle.b()), glm::dvec3(triangle.c())};
 }
 
 // Scenes of at most this many triangles show whether the ray crosses each; larger ones, the nearest only.
@@ -41,12 +36,10 @@ void triangles(PixelContext& pixel, Inspection& inspection) {
         if (crossedAt.back() && (nearest == all.size() || *crossedAt.back() < *crossedAt[nearest])) nearest = crossedAt.size() - 1;
     }
     const std::string intersect = "Triangle::intersect";
+    const probes::Ray probeRay{ray.origin, ray.direction};
     const auto askIntersect = [&](const Triangle& triangle) {
-        std::vector<double> in = triangleInputs(triangle);
-        append(in, ray.origin);
-        append(in, ray.direction);
-        in.insert(in.end(), {0., std::numeric_limits<double>::infinity()});
-        return inspection.call(probes::triangleIntersect, in); // hit, t, position
+        return inspection.call(
+            probes::triangleIntersect(probeTriangle(triangle), probeRay, 0., std::numeric_limits<double>::infinity()));
     };
     // Whether it crosses each triangle: a triangle that is not crossed but hit differs here.
     std::vector<int> calls(all.size(), -1);
@@ -54,24 +47,24 @@ void triangles(PixelContext& pixel, Inspection& inspection) {
         for (std::size_t k = 0; k < all.size(); ++k) {
             calls[k] = askIntersect(all[k]);
             inspection.add({.key = "lab7_crossed", .function = intersect, .lab = 7, .reference = crossedAt[k].has_value(),
-                            .student = values(calls[k], 0, 0), .index = int(k) + 1, .takes = {"ray"}});
+                            .student = answerOf(probes::triangleIntersect, calls[k], &probes::Hit::found), .index = int(k) + 1,
+                            .takes = {"ray"}});
         }
     if (nearest == all.size()) return;
     const int hit = calls[nearest] >= 0 ? calls[nearest] : askIntersect(all[nearest]);
     const double t = *crossedAt[nearest];
     const glm::dvec3 position = ray.origin + t * ray.direction;
     inspection.add({.key = "lab7_nearest", .lab = 7, .reference = int(nearest) + 1, .student = {}, .referenceOnly = true});
-    inspection.add({.key = "lab7_t", .function = intersect, .lab = 7, .reference = t, .student = values(hit, 1, 1), .gives = "hit",
+    inspection.add({.key = "lab7_t", .function = intersect, .lab = 7, .reference = t,
+                    .student = answerOf(probes::triangleIntersect, hit, &probes::Hit::t), .gives = "hit", .takes = {"ray"}});
+    inspection.add({.key = "lab7_position", .function = intersect, .lab = 7, .reference = shown(position),
+                    .student = answerOf(probes::triangleIntersect, hit, &probes::Hit::position), .gives = "hit",
                     .takes = {"ray"}});
-    inspection.add({.key = "lab7_position", .function = intersect, .lab = 7, .reference = vec(position),
-                    .student = values(hit, 2, 3), .gives = "hit", .takes = {"ray"}});
-    const Triangle& triangle = all[nearest];
-    const glm::dvec3 a(triangle.a()), b(triangle.b()), c(triangle.c());
-    std::vector<double> normalInputs = triangleInputs(triangle);
-    append(normalInputs, position);
+    const probes::Triangle triangle = probeTriangle(all[nearest]);
+    const int normalCall = inspection.call(probes::triangleNormal(triangle, position));
     inspection.add({.key = "lab7_normal", .function = "Triangle::computeNormal", .lab = 7,
-                    .reference = vec(lab7::normal(a, b, c)),
-                    .student = values(inspection.call(probes::triangleNormal, normalInputs), 0, 3), .takes = {"ray", "hit"}});
+                    .reference = shown(lab7::normal(triangle.a, triangle.b, triangle.c)),
+                    .student = answerOf(probes::triangleNormal, normalCall), .takes = {"ray", "hit"}});
 }
 
 } // namespace

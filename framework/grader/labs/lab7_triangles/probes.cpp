@@ -8,30 +8,20 @@ namespace raylab::agent {
 
 namespace {
 
-Triangle triangle(ProbeInputs& in) {
-    const glm::vec3 a = in.vec3(), b = in.vec3();
-    return Triangle(a, b, in.vec3(), Color(1.f));
+namespace probes = grader::probes;
+
+Triangle triangle(const probes::Triangle& t) {
+    return Triangle(glm::vec3(t.a), glm::vec3(t.b), glm::vec3(t.c), Color(1.f));
 }
 
-std::vector<double> intersectProbe(ProbeInputs in) {
-    const Triangle triangleHit = triangle(in);
-    const glm::vec3 origin = in.vec3();
-    const Ray ray{origin, in.vec3()};
-    const float tMin = in.real(), tMax = in.real();
+probes::Hit intersectProbe(probes::Triangle t, probes::Ray r, double tMin, double tMax) {
     HitRecord hit;
     hit.t = -7.f; // a miss must leave it alone
-    const bool found = triangleHit.intersect(ray, tMin, tMax, hit);
-    std::vector<double> out{found ? 1. : 0., hit.t};
-    appendOutputs(out, hit.position);
-    return out;
+    const bool found = triangle(t).intersect(Ray{glm::vec3(r.origin), glm::vec3(r.direction)}, float(tMin), float(tMax), hit);
+    return {found, hit.t, hit.position};
 }
 
-std::vector<double> normalProbe(ProbeInputs in) {
-    const Triangle t = triangle(in);
-    std::vector<double> out;
-    appendOutputs(out, t.computeNormal(in.vec3()));
-    return out;
-}
+glm::dvec3 normalProbe(probes::Triangle t, glm::dvec3 point) { return triangle(t).computeNormal(glm::vec3(point)); }
 
 } // namespace
 

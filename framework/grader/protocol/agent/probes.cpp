@@ -16,10 +16,6 @@ NameRegistry<ProbeFunction>& functions() {
 
 } // namespace
 
-void appendOutputs(std::vector<double>& out, const glm::vec3& v) {
-    out.insert(out.end(), {v.x, v.y, v.z});
-}
-
 void registerProbeFunction(const grader::protocol::ProbeSpec* probe, ProbeFunction function, SourcePlace where) {
     functions().add(probe->name, function, where);
 }
@@ -27,7 +23,7 @@ void registerProbeFunction(const grader::protocol::ProbeSpec* probe, ProbeFuncti
 std::vector<double> callProbe(const grader::protocol::Call& call) {
     const auto* function = functions().find(call.probe->name);
     if (function == nullptr) throw std::invalid_argument("no function answers the probe " + call.probe->name);
-    return function->value(ProbeInputs(call.inputs));
+    return function->value(call.inputs);
 }
 
 } // namespace raylab::agent

@@ -1,36 +1,22 @@
 #pragma once
 // The child's half of the function checks: each probe calls one student function with the inputs
-// the parent drew and returns what came out, unjudged. A lab's grading folder registers its probes
-// (framework/grader/labs/<lab>/probes.cpp), by the name its probes.h declares:
+// the parent drew and returns what came out, unjudged. A lab's grading folder answers its probes
+// (framework/grader/labs/<lab>/probes.cpp) with functions of the types its probes.h declares
+// (grader/protocol/probe.h):
 //
-//   RAYLAB_REGISTER_PROBE(fillGradient, fillGradientProbe);  // at namespace scope
+//   RAYLAB_REGISTER_PROBE(grader::probes::intersect, intersectProbe);  // at namespace scope
 
-#include "grader/protocol/protocol.h"
+#include "grader/protocol/probe.h"
 #include "src/name_registry.h"
 
-#include <glm/vec3.hpp>
-
+#include <functional>
+#include <span>
 #include <vector>
 
 namespace raylab::agent {
 
-// A call's inputs in order, as the student's functions take them (float, int).
-class ProbeInputs {
-public:
-    explicit ProbeInputs(const std::vector<double>& values) : m_numbers(values) {}
-    double number() { return m_numbers.number(); }
-    float real() { return float(number()); }
-    int integer() { return int(number()); }
-    glm::vec3 vec3() { return glm::vec3(m_numbers.vec3()); }
-
-private:
-    grader::protocol::NumberReader m_numbers;
-};
-
-// Appends a vector's three components to a probe's outputs.
-void appendOutputs(std::vector<double>& out, const glm::vec3& v);
-
-using ProbeFunction = std::vector<double> (*)(ProbeInputs inputs);
+// A call's inputs -> its answer's numbers.
+using ProbeFunction = std::function<std::vector<double>(std::span<const double> inputs)>;
 
 // Adds the function that answers `probe`; a probe answered twice is a std::logic_error naming both places.
 void registerProbeFunction(const grader::protocol::ProbeSpec* probe, ProbeFunction function, SourcePlace where);
@@ -40,9 +26,13 @@ void registerProbeFunction(const grader::protocol::ProbeSpec* probe, ProbeFuncti
 std::vector<double> callProbe(const grader::protocol::Call& call);
 
 struct ProbeRegistrar {
-    ProbeRegistrar(const grader::protocol::ProbeSpec* probe, ProbeFunction function,
+    template <class Answer, class... Inputs>
+    ProbeRegistrar(const grader::protocol::Probe<Answer(Inputs...)>& probe, Answer (*function)(Inputs...),
                    SourcePlace where = SourcePlace::here()) {
-        registerProbeFunction(probe, function, where);
+        registerProbeFunction(
+            probe.spec(),
+            [function](std::span<const double> inputs) { return grader::protocol::Probe<Answer(Inputs...)>::answerWith(function, inputs); },
+            where);
     }
 };
 

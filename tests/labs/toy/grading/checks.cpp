@@ -14,10 +14,8 @@ namespace {
 // The check `name`: toyColour(d) is 1 - (d + 1) / 2.
 void addColourCheck(LabChecks& checks, const std::string& name, const glm::dvec3& d,
                     SourcePlace where = SourcePlace::here()) {
-    std::vector<double> inputs;
-    appendInputs(inputs, d);
-    checks.add({name, {{probes::toyColour, inputs}}, [d](const auto& out, Judge& judge) {
-                    judge.expectNear(tr("what.toy.colour", {{"direction", show(d)}}), Outputs(out[0]).vec3(),
+    checks.add({name, {probes::toyColour(d)}, [d](const auto& out, Judge& judge) {
+                    judge.expectNear(tr("what.toy.colour", {{"direction", show(d)}}), probes::toyColour.answer(out[0]),
                                      glm::dvec3(1.) - (d + 1.) / 2., 1e-6, tr("hint.toy.colour"));
                 }},
                where);

@@ -8,11 +8,7 @@ namespace raylab::agent {
 
 namespace {
 
-std::vector<double> toyColourProbe(ProbeInputs in) {
-    std::vector<double> out;
-    appendOutputs(out, toyColour(Ray{glm::vec3(0.f), in.vec3()}));
-    return out;
-}
+glm::dvec3 toyColourProbe(glm::dvec3 direction) { return toyColour(Ray{glm::vec3(0.f), glm::vec3(direction)}); }
 
 } // namespace
 

@@ -1,11 +1,14 @@
 #pragma once
-// The toy lab's probe as both sides know it: the parent sends its name, the agent answers it
-// (probes.cpp) and the parent checks the size of the answer.
-#include "grader/protocol/protocol.h"
+// The toy lab's probe, typed once for both sides (grader/protocol/probe.h): the parent calls it and
+// reads its answer (checks.cpp), the agent answers it (probes.cpp).
+
+#include "grader/protocol/probe.h"
 
 namespace raylab::grader::probes {
+inline namespace toy_lab {
 
-// direction d -> toyColour of a ray from the origin along d
-inline const protocol::ProbeSpec* const toyColour = protocol::registerProbe({"toyColour", 3, 3});
+// toyColour of a ray from the origin along `direction`.
+inline const protocol::Probe<glm::dvec3(glm::dvec3 direction)> toyColour{"toyColour"};
 
+} // namespace toy_lab
 } // namespace raylab::grader::probes
