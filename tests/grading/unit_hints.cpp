@@ -90,6 +90,19 @@ TEST_CASE("lab 1: a flipped green ramp is told the ramp, not a missed pixel nor 
     }
 }
 
+TEST_CASE("lab 1: a texture of another size is told its count of pixels, and no pixel past its end is read") {
+    const auto messages = judge(1, [](const protocol::Call& call) {
+        const auto [width, height] = probes::fillGradient.inputs(call.inputs);
+        return probes::fillGradient.answerNumbers(std::vector<glm::dvec3>(std::size_t(width) * std::size_t(height) - 1, glm::dvec3(0.)));
+    });
+    REQUIRE_FALSE(messages.empty());
+    for (const auto& [name, message] : messages) {
+        CAPTURE(name);
+        CHECK_MESSAGE(says(message, "its number of pixels"), message);
+        CHECK_MESSAGE(says(message, "without resizing it"), message);
+    }
+}
+
 TEST_CASE("lab 1: a pixel never written, a division by zero and an integer division are each named") {
     const auto lastColumnMissed = judgeLab1([](int i, int j, int w, int h) {
         return i == w - 1 ? glm::dvec3(-1.) : glm::dvec3(ramp(i, w), ramp(j, h), 0.);

@@ -25,12 +25,9 @@ struct Gradient {
     // student's answer, wrong.
     bool expectSize(Judge& judge) const {
         const std::size_t count = std::size_t(width) * std::size_t(height);
-        // "5 x 3 image, W x H: expected 15, got 14": the count of pixels, in the lab's existing words.
-        const std::string what = tr("what.lab1.image_pixel", {{"width", std::to_string(width)},
-                                                              {"height", std::to_string(height)},
-                                                              {"pixel", "W x H"}});
+        const std::string what = tr("what.lab1.pixel_count", {{"width", std::to_string(width)}, {"height", std::to_string(height)}});
         return judge.expectTrue(what, pixels.size() == count, std::to_string(count), std::to_string(pixels.size()),
-                                tr("hint.lab1.every_pixel"));
+                                tr("hint.lab1.pixel_count"));
     }
     glm::dvec3 pixel(int i, int j) const { return pixels[std::size_t(j) * std::size_t(width) + std::size_t(i)]; }
     glm::dvec3 expected(int i, int j) const {
