@@ -167,19 +167,39 @@ if(given_folders)
   message(STATUS "raylab labs given (their reference, part of the framework): ${given_folders}")
 endif()
 
-# The kinds of objects the course's labs bring, after the framework's sphere and plane, and the kinds
-# of lights, after the point light: Scene (raylab/scene.h) keeps one array per kind and tests each
-# kind of object inline, so it knows the lists when it is compiled. Written into raylab/course_kinds.h
-# only when it changes: a configure recompiles nothing.
+# raylab_lab_header_folder(OUT N): the folder of lab N's own header, labs/<lab>/<name>.h (it declares the
+# functions a student writes that no framework class declares: the stub, the solution and the lab's
+# grading folder include it); a given lab's in a students' tree is framework/given/<lab>/.
+function(raylab_lab_header_folder out n)
+  set(folder ${RAYLAB_LAB_FOLDER_${n}})
+  if(n IN_LIST RAYLAB_GIVEN_LAB_NUMBERS AND NOT EXISTS ${CMAKE_SOURCE_DIR}/labs/${folder})
+    set(${out} ${CMAKE_SOURCE_DIR}/framework/given/${folder} PARENT_SCOPE)
+  else()
+    set(${out} ${CMAKE_SOURCE_DIR}/labs/${folder} PARENT_SCOPE)
+  endif()
+endfunction()
+
+# The kinds of objects the course's labs and the given labs bring, after the framework's sphere and
+# plane, and the kinds of lights, after the point light: Scene (raylab/scene.h) keeps one array per
+# kind and tests each kind of object inline, so it knows the lists when it is compiled. A given lab's
+# kinds are the framework's like the rest of it: a later lab's scenes use them (a BVH lab over an
+# earlier lab's triangles). Written into raylab/course_kinds.h only when it changes: a configure
+# recompiles nothing.
 set(raylab_kind_includes "")
 foreach(role shapes lights)
   set(raylab_course_${role} "")
-  foreach(n IN LISTS RAYLAB_LAB_NUMBERS)
+  foreach(n IN LISTS RAYLAB_LAB_NUMBERS RAYLAB_GIVEN_LAB_NUMBERS)
     set(folder ${RAYLAB_LAB_FOLDER_${n}})
-    raylab_lab_kinds(classes ${CMAKE_SOURCE_DIR}/labs/${folder}/lab.toml ${role})
+    raylab_lab_header_folder(header_folder ${n})
+    # A given lab's lab.toml is beside its header in a students' tree (raylab distribute).
+    set(description ${CMAKE_SOURCE_DIR}/labs/${folder}/lab.toml)
+    if(NOT EXISTS ${description})
+      set(description ${header_folder}/lab.toml)
+    endif()
+    raylab_lab_kinds(classes ${description} ${role})
     if(classes)
-      if(NOT EXISTS ${CMAKE_SOURCE_DIR}/labs/${folder}/${role}.h)
-        message(FATAL_ERROR "${CMAKE_SOURCE_DIR}/labs/${folder}/lab.toml: ${role} = ${classes}, but labs/${folder}/${role}.h, which declares them, is not there")
+      if(NOT EXISTS ${header_folder}/${role}.h)
+        message(FATAL_ERROR "${description}: ${role} = ${classes}, but ${header_folder}/${role}.h, which declares them, is not there")
       endif()
       string(APPEND raylab_kind_includes "#include \"${folder}/${role}.h\"\n")
       foreach(class IN LISTS classes)
@@ -197,18 +217,6 @@ ${raylab_kind_includes}
 #define RAYLAB_COURSE_SHAPES ${raylab_course_shapes}
 #define RAYLAB_COURSE_LIGHTS ${raylab_course_lights}
 ")
-
-# raylab_lab_header_folder(OUT N): the folder of lab N's own header, labs/<lab>/<name>.h (it declares the
-# functions a student writes that no framework class declares: the stub, the solution and the lab's
-# grading folder include it); a given lab's in a students' tree is framework/given/<lab>/.
-function(raylab_lab_header_folder out n)
-  set(folder ${RAYLAB_LAB_FOLDER_${n}})
-  if(n IN_LIST RAYLAB_GIVEN_LAB_NUMBERS AND NOT EXISTS ${CMAKE_SOURCE_DIR}/labs/${folder})
-    set(${out} ${CMAKE_SOURCE_DIR}/framework/given/${folder} PARENT_SCOPE)
-  else()
-    set(${out} ${CMAKE_SOURCE_DIR}/labs/${folder} PARENT_SCOPE)
-  endif()
-endfunction()
 
 # raylab_lab_shadings(TARGET N): TARGET (lab N's code, from wherever) also brings what lab N registers
 # by name outside the student's files, from framework/grader/labs/<lab>/: shadings.cpp, the pictures

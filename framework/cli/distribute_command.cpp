@@ -73,10 +73,15 @@ void handoutPictures(const fs::path& source, const std::string& lab, std::set<st
     }
 }
 
+bool registersByName(const std::string& gradingFile) {
+    static const std::set<std::string> parts = {"shadings.cpp", "shapes.cpp", "lights.cpp", "figure_steps.cpp"};
+    return parts.count(gradingFile) != 0;
+}
+
 // Of the labs the course's list (course.toml) leaves out, their folders in labs/ (their figures with
 // them) and their grading folders, and the pictures of docs/ that only their handouts show: absent,
-// not a zero. A given lab keeps, of its grading folder, what registers it by name (its shadings and
-// figure steps, cmake/RaylabLabs.cmake).
+// not a zero. A given lab keeps, of its grading folder, what registers it by name (its shadings, kinds
+// of objects and lights, and figure steps: cmake/RaylabLabs.cmake's raylab_lab_shadings).
 std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::LabCatalog& course) {
     std::set<std::string> folders, absentPictures, coursePictures;
     for (const auto& entry : fs::directory_iterator(source / "labs")) {
@@ -98,7 +103,7 @@ std::set<std::string> labFoldersWithheld(const fs::path& source, const grader::L
         std::error_code error;
         for (const auto& part : fs::directory_iterator(source / grading, error)) {
             const std::string name = part.path().filename().string();
-            if (name != "shadings.cpp" && name != "figure_steps.cpp") folders.insert(grading + "/" + name);
+            if (!registersByName(name)) folders.insert(grading + "/" + name);
         }
     }
     for (const std::string& picture : absentPictures) // a picture a handed-out lab shows too stays
@@ -110,8 +115,9 @@ bool withheld(const fs::path& relative, const std::set<std::string>& labFolders)
     return answerFolder(relative) || workspaceProduct(relative) || labFolders.count(relative.generic_string()) != 0;
 }
 
-// framework/given/<lab>/ of each given lab: its reference (solutions/<lab>/) and its own header
-// (labs/<lab>/*.h), which CMake compiles where the students' tree has no solutions/.
+// framework/given/<lab>/ of each given lab: its reference (solutions/<lab>/), its own headers
+// (labs/<lab>/*.h) and its lab.toml (the kinds of objects and lights it brings), which CMake compiles
+// and reads where the students' tree has no solutions/.
 void addGivenLabs(const fs::path& source, const grader::LabCatalog& course, std::vector<TreeFile>& files) {
     for (const grader::LabDescription& lab : course.given) {
         std::error_code error;
@@ -130,6 +136,7 @@ void addGivenLabs(const fs::path& source, const grader::LabCatalog& course, std:
             throw std::runtime_error(tr("distribute.no_given_reference", {{"lab", std::to_string(lab.number)},
                                                                           {"folder", (source / "solutions" / lab.id).string()}}));
         add(source / "labs" / lab.id, ".h");
+        files.push_back({fs::path("framework/given") / lab.id / "lab.toml", source / "labs" / lab.id / "lab.toml"});
     }
 }
 

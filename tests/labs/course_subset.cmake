@@ -1,7 +1,10 @@
 # A course that hands out its first three labs only: in a copy of the tree whose course.toml lists
 # them, CMake builds those labs; of the labs left out, one whose functions the framework itself calls
 # (lab.toml's `framework_calls = true`: a member of the camera, the sphere or the renderer) is given,
-# its reference linked into every program, and any other is simply absent. The figures and the grade
+# its reference linked into every program, and any other is simply absent. A left-out lab that brings
+# kinds of objects or lights (lab.toml's `shapes` or `lights`) is made given in the copy, as a course
+# whose later lab builds on it would (a BVH over lab 7's triangles): its kinds are then the
+# framework's, in the copy and in the students' tree, whose scenes of that lab render alike. The figures and the grade
 # are the course's labs' alone (every point of theirs to the reference, the totals of their lab.toml);
 # `raylab distribute` writes a students' tree without the left-out labs' folders, the given labs'
 # reference in framework/given/ and no other solution; that tree builds, its stubs get no point, and
@@ -26,7 +29,8 @@ set(STEP_PREFIX "course subset")
 include(${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake)
 
 # The labs of the source tree by number; the course keeps the first three, and of the others gives
-# those whose functions the framework calls (the line CMake reads too, cmake/RaylabLabs.cmake).
+# those whose functions the framework calls (the line CMake reads too, cmake/RaylabLabs.cmake) and
+# those that bring kinds (made_given: the copy says `framework_calls = true` of them).
 file(GLOB lab_files RELATIVE ${SOURCE}/labs ${SOURCE}/labs/lab*/lab.toml)
 set(numbers "")
 foreach(file IN LISTS lab_files)
@@ -43,11 +47,16 @@ endif()
 list(SUBLIST numbers 0 3 kept)
 list(SUBLIST numbers 3 -1 left_out)
 set(given "")
+set(made_given "")
 set(absent "")
 foreach(n IN LISTS left_out)
   file(STRINGS ${SOURCE}/labs/${folder_${n}}/lab.toml calls REGEX "^[ \t]*framework_calls[ \t]*=[ \t]*true")
+  file(STRINGS ${SOURCE}/labs/${folder_${n}}/lab.toml kinds REGEX "^[ \t]*(shapes|lights)[ \t]*=")
   if(calls)
     list(APPEND given ${n})
+  elseif(kinds)
+    list(APPEND given ${n})
+    list(APPEND made_given ${n})
   else()
     list(APPEND absent ${n})
   endif()
@@ -152,6 +161,10 @@ function(step_copy)
   endforeach()
   file(COPY ${SOURCE}/CMakeLists.txt ${SOURCE}/CMakePresets.json DESTINATION ${tree})
   file(WRITE ${tree}/course.toml "# A course of the first three labs (tests/labs/course_subset.cmake).\nlabs = [${kept_list}]\n")
+  foreach(n IN LISTS made_given) # a key of the heading: before the file's first line, its comments
+    file(READ ${tree}/labs/${folder_${n}}/lab.toml description)
+    file(WRITE ${tree}/labs/${folder_${n}}/lab.toml "framework_calls = true\n${description}")
+  endforeach()
   configure_tree(output -DBUILD_TESTING=OFF)
   folders_of(folders ${kept})
   expect("${output}" "raylab labs: ${folders}\n" "CMake builds the course's labs only")
@@ -160,7 +173,7 @@ function(step_copy)
     expect("${output}" "raylab labs given (their reference, part of the framework): ${folders}\n"
            "CMake gives the labs left out whose functions the framework calls")
   endif()
-  message(STATUS "course subset: labs ${kept_list} handed out; given: ${given}; absent: ${absent}")
+  message(STATUS "course subset: labs ${kept_list} handed out; given: ${given} (made given: ${made_given}); absent: ${absent}")
 endfunction()
 
 function(step_build)
@@ -205,8 +218,9 @@ function(expect_files folder expected what)
   endif()
 endfunction()
 
-# 4. The students' tree: the course's labs and list; a given lab's reference (its solutions' files and
-# its own header) in framework/given/, of its grading folder only what registers it by name; nothing
+# 4. The students' tree: the course's labs and list; a given lab's reference (its solutions' files, its
+# own headers and its lab.toml) in framework/given/, of its grading folder only what registers it by
+# name (its shadings, kinds and figure steps); nothing
 # of an absent lab; no solutions/. GitHub Classroom's tree the same.
 function(step_distribute)
   run(output 0 ${bin}/raylab --lang en distribute ${students})
@@ -220,7 +234,7 @@ function(step_distribute)
     set(folder ${folder_${n}})
     file(GLOB reference RELATIVE ${SOURCE}/solutions/${folder} ${SOURCE}/solutions/${folder}/*.cpp)
     file(GLOB header RELATIVE ${SOURCE}/labs/${folder} ${SOURCE}/labs/${folder}/*.h)
-    expect_files(${students}/framework/given/${folder} "${reference};${header}" "lab ${n} is given")
+    expect_files(${students}/framework/given/${folder} "${reference};${header};lab.toml" "lab ${n} is given")
     foreach(file IN LISTS reference)
       file(READ ${SOURCE}/solutions/${folder}/${file} expected)
       file(READ ${students}/framework/given/${folder}/${file} written)
@@ -228,8 +242,9 @@ function(step_distribute)
         message(FATAL_ERROR "course subset: framework/given/${folder}/${file} is not solutions/${folder}/${file}")
       endif()
     endforeach()
-    file(GLOB registrations RELATIVE ${SOURCE}/framework/grader/labs/${folder}
-         ${SOURCE}/framework/grader/labs/${folder}/shadings.cpp ${SOURCE}/framework/grader/labs/${folder}/figure_steps.cpp)
+    set(grading ${SOURCE}/framework/grader/labs/${folder})
+    file(GLOB registrations RELATIVE ${grading} ${grading}/shadings.cpp ${grading}/shapes.cpp ${grading}/lights.cpp
+         ${grading}/figure_steps.cpp)
     expect_files(${students}/framework/grader/labs/${folder} "${registrations}" "lab ${n}'s grading folder")
   endforeach()
   foreach(n IN LISTS absent)
@@ -325,6 +340,26 @@ function(step_students_written)
   endforeach()
   run(output 0 ${students}/build/bin/raylab --lang en grade --report ${WORK}/students-written)
   expect_grade("${output}" all)
+  # The scene format is the copy's, the given labs' kinds in it; their scenes render as in the copy.
+  run(format 0 ${students}/build/bin/raylab --lang en scene-format)
+  run(copy_format 0 ${bin}/raylab --lang en scene-format)
+  if(NOT format STREQUAL copy_format)
+    message(FATAL_ERROR "course subset: the students' tree's scene format is not the copy's:\n${format}\nthe copy's:\n${copy_format}")
+  endif()
+  foreach(n IN LISTS made_given)
+    expect("${format}" "(lab ${n})" "the scene format has the kinds of lab ${n}, given")
+    file(GLOB scenes ${SOURCE}/labs/${folder_${n}}/scenes/*.toml)
+    foreach(scene IN LISTS scenes)
+      get_filename_component(id ${scene} NAME_WE)
+      run(output 0 ${students}/build/bin/raylab render ${scene} --out ${WORK}/students-${id}.png)
+      run(output 0 ${bin}/raylab-reference render ${scene} --out ${WORK}/copy-${id}.png)
+      file(SHA256 ${WORK}/students-${id}.png drawn)
+      file(SHA256 ${WORK}/copy-${id}.png expected)
+      if(NOT drawn STREQUAL expected)
+        message(FATAL_ERROR "course subset: ${id}, a scene of lab ${n} (given), renders otherwise in the students' tree")
+      endif()
+    endforeach()
+  endforeach()
   message(STATUS "course subset: labs ${kept_list} built, drawn, graded and handed out; given ${given}; absent ${absent}")
 endfunction()
 
