@@ -133,14 +133,15 @@ int runWatch(const WatchOptions& o, const Context& context) {
         }
     } stopServing{server, serving};
     watch::FileWatcher files({labsFolder() / watched->id});
+    // Ctrl-C stops it cleanly from the moment the address is printed (the browser may open at once).
+    std::signal(SIGINT, onWatchStop);
+    std::signal(SIGTERM, onWatchStop);
     std::printf("%s\n", tr("watch.serving", {{"lab", std::to_string(lab)}, {"address", server.address()},
                                              {"folder", "labs/" + watched->id + "/"}, {"how", files.how()}})
                             .c_str());
     std::fflush(stdout);
     if (!o.noOpen) openInBrowser(settings.out, server.address());
 
-    std::signal(SIGINT, onWatchStop);
-    std::signal(SIGTERM, onWatchStop);
     std::vector<fs::path> changed;
     bool first = true;
     while (g_stop == 0) {
