@@ -8,11 +8,13 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <exception>
 #include <memory>
 #include <regex>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace {
 
@@ -67,9 +69,48 @@ class LanguageFormatter : public CLI::Formatter {
     }
 };
 
+// The command the words of the command line reached (`raylab grade`, `raylab study intersection`).
+const CLI::App& commandReached(const CLI::App& app) {
+    for (const CLI::App* command : app.get_subcommands())
+        if (command->parsed()) return commandReached(*command);
+    return app;
+}
+
+std::string commandPath(const CLI::App& command) {
+    const CLI::App* parent = command.get_parent();
+    return parent == nullptr ? "raylab" : commandPath(*parent) + " " + command.get_name();
+}
+
+// CLI11 lists the words it did not expect last first ("b a" for `a b`): in the command line's order.
+std::vector<std::string> wordsInOrder(const std::string& listed) {
+    std::vector<std::string> words;
+    std::size_t from = 0;
+    while (from <= listed.size()) {
+        const std::size_t space = std::min(listed.find(' ', from), listed.size());
+        words.insert(words.begin(), listed.substr(from, space - from));
+        from = space + 1;
+    }
+    return words;
+}
+
+// Words the command did not expect: an option it does not have is named, with the ones it has.
+std::string sayNotExpected(const CLI::App& app, const std::string& listed) {
+    using raylab::tr;
+    const std::vector<std::string> words = wordsInOrder(listed);
+    std::string shown;
+    for (const std::string& word : words) shown += (shown.empty() ? "" : " ") + word;
+    const auto option = std::find_if(words.begin(), words.end(), [](const std::string& w) { return w.size() > 1 && w[0] == '-'; });
+    if (option == words.end()) return tr("cli.not_expected", {{"args", shown}});
+    const CLI::App& command = commandReached(app);
+    std::string options;
+    for (const CLI::Option* o : command.get_options())
+        if (o != command.get_help_ptr() && o->get_name().rfind('-', 0) == 0) options += (options.empty() ? "" : ", ") + o->get_name();
+    return tr("cli.not_an_option", {{"option", option->substr(0, option->find('='))}, {"command", commandPath(command)}, {"options", options}});
+}
+
 // CLI11's errors are English sentences around an option's name and a value; the common ones are said
 // again in the reader's language with that name and value. Any other keeps CLI11's text.
-std::string sayParseError(const CLI::Error& error) {
+std::string sayParseError(const CLI::App& app, const CLI::Error& error) {
     using raylab::tr;
     const std::string what = error.what();
     std::smatch m;
@@ -84,7 +125,7 @@ std::string sayParseError(const CLI::Error& error) {
     static const std::regex notAllowed(R"(The value (.*) is not an allowed value for (\S+))");
     static const std::regex notConverted(R"(Could not convert: (\S+) = (.*))");
     static const std::regex atMost(R"((\S+): At Most (\d+) required but received (\d+))");
-    if (std::regex_match(what, m, notExpected)) return tr("cli.not_expected", {{"args", m[1]}});
+    if (std::regex_match(what, m, notExpected)) return sayNotExpected(app, m[1]);
     if (std::regex_match(what, m, missingValue))
         return tr("cli.missing_value", {{"option", m[1]}, {"type", typeNameInLanguage(m[2])}});
     if (std::regex_match(what, m, atMost)) return tr("cli.at_most", {{"option", m[1]}, {"max", m[2]}, {"count", m[3]}});
@@ -119,8 +160,8 @@ void sayHelpInLanguage(CLI::App& app) {
     app.option_defaults()->group(tr("cli.label_options"));
     app.group(tr("cli.label_subcommands"));
     app.set_help_flag("-h,--help", tr("cli.help"));
-    app.failure_message([](const CLI::App*, const CLI::Error& error) {
-        return tr("cli.error", {{"what", sayParseError(error)}}) + "\n" + tr("cli.run_help") + "\n";
+    app.failure_message([](const CLI::App* failed, const CLI::Error& error) {
+        return tr("cli.error", {{"what", sayParseError(*failed, error)}}) + "\n" + tr("cli.run_help") + "\n";
     });
 }
 

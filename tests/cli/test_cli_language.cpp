@@ -263,7 +263,8 @@ TEST_CASE("argument errors in French keep the option's name and the value") {
     const std::string none = std::to_string(*std::max_element(numbers.begin(), numbers.end()) + 1);
     // --lang last (it may stand anywhere), but before an option left without its value.
     const std::vector<Case> cases{
-        {{"grade", "--bogus", "--lang", "fr"}, "inattendu ici" + nbsp + ": --bogus"},
+        {{"grade", "--bogus", "--lang", "fr"}, "--bogus n'est pas une option de raylab grade" + nbsp + "; ses options" + nbsp + ": "},
+        {{"grade", "extra", "words", "--lang", "fr"}, "inattendu ici" + nbsp + ": extra words"},
         {{"--lang", "fr", "grade", "--lab"}, "--lab attend une valeur"},
         {{"grade", "--lab", "two", "--lang", "fr"}, "--lab" + nbsp + ": two n'est pas un nombre positif"},
         {{"report", "--pdf=maybe", "--lang", "fr"}, "--pdf" + nbsp + ": «" + nbsp + "maybe" + nbsp + "» n'est pas une valeur valide"},
@@ -297,9 +298,19 @@ TEST_CASE("raylab render says what it renders in French") {
     CHECK_MESSAGE(!has(output, "samples per pixel"), output);
 }
 
+TEST_CASE("an option the command does not have is named, beside the ones it has, in the command line's order") {
+    // As `raylab render` has it: `raylab grade` writes its report with --report.
+    const std::string output = run({"grade", "--out", "build/grade", "--lang", "en"}, true);
+    CHECK_MESSAGE(has(output, "raylab: error: --out is not an option of raylab grade; its options: "), output);
+    CHECK_MESSAGE(has(output, "--report"), output);
+    CHECK_MESSAGE(!has(output, "--help,"), output);
+    const std::string nested = run({"study", "antialiasing", "--frobnicate=3", "--lang", "en"}, true);
+    CHECK_MESSAGE(has(nested, "--frobnicate is not an option of raylab study antialiasing; "), nested);
+}
+
 TEST_CASE("in English, the same errors are English") {
     const std::string output = run({"grade", "--bogus", "--lang", "en"}, true);
-    CHECK_MESSAGE(has(output, "raylab: error: not expected here: --bogus"), output);
+    CHECK_MESSAGE(has(output, "raylab: error: --bogus is not an option of raylab grade; its options: "), output);
     CHECK_MESSAGE(has(output, "Run with --help for more information."), output);
 }
 
