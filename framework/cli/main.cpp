@@ -3,12 +3,13 @@
 #include "commands.h"
 
 #include "src/messages.h"
+#include "src/text.h"
 #include "src/windows_api.h"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <algorithm>
 #include <exception>
 #include <memory>
 #include <regex>
@@ -161,7 +162,8 @@ void sayHelpInLanguage(CLI::App& app) {
     app.group(tr("cli.label_subcommands"));
     app.set_help_flag("-h,--help", tr("cli.help"));
     app.failure_message([](const CLI::App* failed, const CLI::Error& error) {
-        return tr("cli.error", {{"what", sayParseError(*failed, error)}}) + "\n" + tr("cli.run_help") + "\n";
+        // The words quoted are the command line's, of any bytes: an escape sequence shows as \x1B.
+        return tr("cli.error", {{"what", raylab::printableText(sayParseError(*failed, error))}}) + "\n" + tr("cli.run_help") + "\n";
     });
 }
 
@@ -238,7 +240,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     if (const std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
-        std::fprintf(stderr, "%s\n", raylab::tr("cli.error", {{"what", unknown}}).c_str());
+        std::fprintf(stderr, "%s\n", raylab::tr("cli.error", {{"what", raylab::printableText(unknown)}}).c_str());
         return 1;
     }
     try {

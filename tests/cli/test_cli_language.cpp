@@ -306,6 +306,13 @@ TEST_CASE("an option the command does not have is named, beside the ones it has,
     CHECK_MESSAGE(!has(output, "--help,"), output);
     const std::string nested = run({"study", "antialiasing", "--frobnicate=3", "--lang", "en"}, true);
     CHECK_MESSAGE(has(nested, "--frobnicate is not an option of raylab study antialiasing; "), nested);
+    // Words of any bytes are quoted as text: an escape sequence never reaches the terminal.
+    const std::string odd = run({"grade", "--\x1b[31mred", "--lang", "en"}, true);
+    CHECK_MESSAGE(has(odd, "raylab: error: --\\x1B[31mred is not an option of raylab grade"), odd);
+    const std::string command = run({"gr\x1b[2Jade", "--lang", "en"}, true);
+    CHECK_MESSAGE(has(command, "gr\\x1B[2Jade"), command);
+    const std::string both = odd + command;
+    CHECK_MESSAGE(!has(both, "\x1b"), both);
 }
 
 TEST_CASE("in English, the same errors are English") {
